@@ -1,0 +1,68 @@
+// image.cpp — PNG I/O through Debian's stb (libstb), and image differences.
+#include "marchbox/image.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+namespace mb {
+
+Image makeImage(int width, int height) {
+    Image img;
+    img.width = width;
+    img.height = height;
+    img.rgba.assign(size_t(width) * height * 4, 0);
+    return img;
+}
+
+bool savePng(const std::string& path, const Image& img, std::string* error) {
+    if (!stbi_write_png(path.c_str(), img.width, img.height, 4, img.rgba.data(), img.width * 4)) {
+        *error = "cannot write PNG '" + path + "'";
+        return false;
+    }
+    return true;
+}
+
+bool loadPng(const std::string& path, Image* out, std::string* error) {
+    int w = 0, h = 0, n = 0;
+    unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, 4);
+    if (!data) {
+        *error = "cannot read PNG '" + path + "': " + stbi_failure_reason();
+        return false;
+    }
+    out->width = w;
+    out->height = h;
+    out->rgba.assign(data, data + size_t(w) * h * 4);
+    stbi_image_free(data);
+    return true;
+}
+
+ImageDiff diffImages(const Image& a, const Image& b) {
+    ImageDiff d;
+    d.visual = makeImage(a.width, a.height);
+    std::vector<int> perPixel(size_t(a.width) * a.height);
+    double sum = 0;
+    for (size_t i = 0; i < perPixel.size(); ++i) {
+        int m = 0;
+        for (int c = 0; c < 3; ++c) {
+            int e = std::abs(int(a.rgba[i * 4 + c]) - int(b.rgba[i * 4 + c]));
+            sum += e;
+            m = std::max(m, e);
+        }
+        perPixel[i] = m;
+        uint8_t v = uint8_t(std::min(255, m * 8));
+        d.visual.rgba[i * 4 + 0] = d.visual.rgba[i * 4 + 1] = d.visual.rgba[i * 4 + 2] = v;
+        d.visual.rgba[i * 4 + 3] = 255;
+    }
+    if (perPixel.empty()) return d;
+    d.meanAbs = sum / (perPixel.size() * 3.0);
+    std::vector<int> sorted = perPixel;
+    size_t k = std::min(sorted.size() - 1, size_t(sorted.size() * 0.99));
+    std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
+    d.p99 = sorted[k];
+    d.maxAbs = *std::max_element(perPixel.begin(), perPixel.end());
+    return d;
+}
+
+}  // namespace mb
