@@ -1,1 +1,46 @@
-int main() { return 0; }
+// main.cpp — marchbox: the editor, or one of the subcommands of ../shared/CLI.md.
+#include "args.h"
+#include "commands.h"
+
+#include <cstring>
+#include <iostream>
+
+static const char* kUsage =
+    "usage: marchbox [SCENE]                      open the editor (default scenes/default.txt)\n"
+    "       marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M]\n"
+    "       marchbox simulate SCENE --seconds T [-o OUT.txt]\n"
+    "       marchbox check SCENE...\n"
+    "       marchbox shader SCENE [--uber]\n"
+    "       marchbox bench SCENE [--uber] [--size WxH] [--frames N]\n"
+    "       marchbox report physics|render\n"
+    "       marchbox --help | --version\n"
+    "modes: shaded normals depth steps ao shadow id\n";
+
+int main(int argc, char** argv) {
+    using namespace mb;
+    if (argc > 1 && (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h"))) {
+        std::cout << kUsage;
+        return kExitOk;
+    }
+    if (argc > 1 && !std::strcmp(argv[1], "--version")) {
+        std::cout << "marchbox " << MARCHBOX_VERSION << '\n';
+        return kExitOk;
+    }
+    struct Command {
+        const char* name;
+        int (*run)(const Args&);
+    };
+    static const Command commands[] = {{"render", runRender}, {"simulate", runSimulate},
+                                       {"check", runCheck},   {"shader", runShader},
+                                       {"bench", runBench},   {"report", runReport}};
+    const Command* command = nullptr;
+    for (const Command& c : commands)
+        if (argc > 1 && !std::strcmp(argv[1], c.name)) command = &c;
+    Args args;
+    std::string error;
+    if (!parseArgs(argc, argv, command ? 2 : 1, &args, &error)) {
+        std::cerr << "marchbox: " << error << " (see marchbox --help)\n";
+        return kExitUsage;
+    }
+    return command ? command->run(args) : runEditor(args);
+}

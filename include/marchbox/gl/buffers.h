@@ -1,0 +1,80 @@
+// marchbox/gl/buffers.h — RAII, move-only owners of one buffer or vertex array object each.
+#pragma once
+
+#include "marchbox/gl/gl.h"
+
+#include <cstddef>
+#include <utility>
+
+namespace mb {
+
+// One GL buffer object bound to `Target`. Uploads replace the whole contents.
+template <GLenum Target>
+class Buffer {
+public:
+    Buffer() = default;
+    ~Buffer() {
+        if (id_) glDeleteBuffers(1, &id_);
+    }
+    Buffer(Buffer&& o) noexcept : id_(std::exchange(o.id_, 0)), size_(o.size_) {}
+    Buffer& operator=(Buffer&& o) noexcept {
+        std::swap(id_, o.id_);
+        std::swap(size_, o.size_);
+        return *this;
+    }
+    Buffer(const Buffer&) = delete;
+    Buffer& operator=(const Buffer&) = delete;
+
+    void upload(const void* data, size_t bytes, GLenum usage = GL_STATIC_DRAW) {
+        if (!id_) glGenBuffers(1, &id_);
+        glBindBuffer(Target, id_);
+        glBufferData(Target, GLsizeiptr(bytes), data, usage);
+        size_ = bytes;
+    }
+    void bind() const { glBindBuffer(Target, id_); }
+    GLuint id() const { return id_; }
+    size_t size() const { return size_; }
+
+private:
+    GLuint id_ = 0;
+    size_t size_ = 0;
+};
+
+using VertexBuffer = Buffer<GL_ARRAY_BUFFER>;
+using IndexBuffer = Buffer<GL_ELEMENT_ARRAY_BUFFER>;
+
+// A uniform buffer is also bound to an indexed binding point that programs' blocks name.
+class UniformBuffer : public Buffer<GL_UNIFORM_BUFFER> {
+public:
+    void bindBase(GLuint point) const { glBindBufferBase(GL_UNIFORM_BUFFER, point, id()); }
+};
+
+class StorageBuffer : public Buffer<GL_SHADER_STORAGE_BUFFER> {
+public:
+    void bindBase(GLuint point) const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, point, id()); }
+};
+
+class VertexArray {
+public:
+    VertexArray() = default;
+    ~VertexArray() {
+        if (id_) glDeleteVertexArrays(1, &id_);
+    }
+    VertexArray(VertexArray&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
+    VertexArray& operator=(VertexArray&& o) noexcept {
+        std::swap(id_, o.id_);
+        return *this;
+    }
+    VertexArray(const VertexArray&) = delete;
+    VertexArray& operator=(const VertexArray&) = delete;
+
+    void bind() {
+        if (!id_) glGenVertexArrays(1, &id_);
+        glBindVertexArray(id_);
+    }
+
+private:
+    GLuint id_ = 0;
+};
+
+}  // namespace mb

@@ -1,0 +1,48 @@
+// marchbox/gl/gpu_scene.h — the scene as the shader reads it: std140 blocks, packed on the CPU.
+//
+// Each struct mirrors one in shaders/scene_data.glsl field for field. std140 puts vec4s at
+// 16-byte offsets and a mat3 as three vec4 columns, so plain float[4] rows reproduce it;
+// tests/gl/test_std140.cpp checks every offset against what the driver reports.
+#pragma once
+
+#include "marchbox/scene.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace mb {
+
+struct GpuObject {
+    float posBound[4];    // centre xyz, bounding-sphere radius
+    float sizeMinor[4];   // box half-extents xyz, torus tube radius
+    float shape[4];       // radius, height, blend, unused
+    int32_t info[4];      // type, op, material, unused
+    float toLocal[3][4];  // mat3 world→local, column-major, each column padded to a vec4
+};
+static_assert(sizeof(GpuObject) == 112, "std140 Object is 112 bytes");
+
+struct GpuMaterial {
+    float color[4];       // r g b, Kr
+    float coeffs[4];      // Ka Kd Ks C
+};
+static_assert(sizeof(GpuMaterial) == 32, "std140 Material is 32 bytes");
+
+struct GpuLight {
+    float vec[4];         // point: position; directional: unit vector towards the light
+    float color[4];       // rgb × intensity, unused
+};
+static_assert(sizeof(GpuLight) == 32, "std140 Light is 32 bytes");
+
+struct GpuScene {
+    std::vector<GpuObject> objects;
+    std::vector<GpuMaterial> materials;
+    std::vector<GpuLight> lights;   // point lights first, then directional ones
+    int pointLights = 0, dirLights = 0;
+};
+
+GpuScene packScene(const Scene& scene);
+
+// Far end of every ray: past the farthest object from the camera, and never under 100 m.
+float maxRayDistance(const Scene& scene);
+
+}  // namespace mb

@@ -1,0 +1,61 @@
+// marchbox/gl/shader.h — RAII, move-only owners of one shader or program object each.
+#pragma once
+
+#include "marchbox/gl/gl.h"
+
+#include <string>
+#include <unordered_map>
+
+namespace mb {
+
+// Reads a GLSL file and replaces each `#include "name"` line with the file shaders/name,
+// recursively (each file once). Errors say which file could not be read.
+bool readShaderSource(const std::string& path, std::string* out, std::string* error);
+
+// Where shaders/ is: $MARCHBOX_SHADERS if set, else the source tree's shaders/.
+std::string shaderDir();
+
+class Shader {
+public:
+    Shader() = default;
+    ~Shader();
+    Shader(Shader&& o) noexcept;
+    Shader& operator=(Shader&& o) noexcept;
+    Shader(const Shader&) = delete;
+    Shader& operator=(const Shader&) = delete;
+
+    bool compile(GLenum type, const std::string& source);  // keeps the info log either way
+    bool compileFile(GLenum type, const std::string& path, const std::string& prefix = "");
+
+    GLuint id() const { return id_; }
+    const std::string& log() const { return log_; }
+
+private:
+    GLuint id_ = 0;
+    std::string log_;
+};
+
+class Program {
+public:
+    Program() = default;
+    ~Program();
+    Program(Program&& o) noexcept;
+    Program& operator=(Program&& o) noexcept;
+    Program(const Program&) = delete;
+    Program& operator=(const Program&) = delete;
+
+    // Links, keeps the log, and caches every active uniform's location.
+    bool link(const Shader& vertex, const Shader& fragment);
+
+    GLuint id() const { return id_; }
+    const std::string& log() const { return log_; }
+    GLint uniform(const char* name) const;  // -1 if inactive; no GL call
+    void bindBlock(const char* blockName, GLuint bindingPoint) const;
+
+private:
+    GLuint id_ = 0;
+    std::string log_;
+    std::unordered_map<std::string, GLint> uniforms_;
+};
+
+}  // namespace mb

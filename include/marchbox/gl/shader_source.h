@@ -1,0 +1,47 @@
+// marchbox/gl/shader_source.h — the fragment shader a scene needs, as GLSL text.
+//
+// The shader is shaders/march.frag behind a block of #defines made from the scene's feature
+// set: the object types and operators in use, the exact light counts, the shadow kind, the
+// reflection depth. Code a scene does not use is not in its shader. The uber shader sets
+// every feature and reads the counts and switches from uniforms instead.
+#pragma once
+
+#include "marchbox/scene.h"
+
+#include <string>
+
+namespace mb {
+
+enum class RenderMode : int { Shaded = 0, Normals, Depth, Steps, Ao, Shadow, ObjectId };
+constexpr int kRenderModeCount = 7;
+const char* renderModeName(RenderMode m);               // "shaded", "normals", ... "id"
+bool parseRenderMode(const std::string& s, RenderMode* out);
+
+struct ShaderFeatures {
+    bool uber = false;
+    RenderMode mode = RenderMode::Shaded;
+    unsigned shapes = 0;        // bit i set: ShapeType i is present
+    bool subtract = false, intersect = false, blend = false;
+    int objects = 0, materials = 0, pointLights = 0, dirLights = 0;
+    bool ground = true;
+    int steps = 256;            // march steps, a compile-time loop bound
+    int shadows = 0;            // 0 none, 1 hard, 2 soft
+    int reflections = 0;        // bounces actually possible: 0 when nothing reflects
+    bool fog = false, ao = false;
+    int aa = 1;
+    bool objectsInStorage = false;  // past the uniform-block limit objects go in an SSBO
+
+    bool operator==(const ShaderFeatures& o) const;
+};
+
+// maxUniformBlockBytes is GL_MAX_UNIFORM_BLOCK_SIZE; 0 means "assume the GL minimum, 16 KiB".
+ShaderFeatures shaderFeatures(const Scene& scene, RenderMode mode, bool uber,
+                              int maxUniformBlockBytes);
+
+// The #version line and the #define block for a feature set.
+std::string shaderPrefix(const ShaderFeatures& f);
+
+// The complete fragment source: prefix plus shaders/march.frag with its includes expanded.
+bool fragmentSource(const ShaderFeatures& f, std::string* out, std::string* error);
+
+}  // namespace mb

@@ -1,0 +1,90 @@
+// march.frag — one full-screen pass: map -> castRay -> calcNormal -> shadow/AO -> shade -> main.
+// The #version line and the feature #defines come first; see src/gl/shader_source.cpp.
+#include "scene_data.glsl"
+#include "sdf.glsl"
+#include "scene_map.glsl"
+#include "raymarch.glsl"
+#include "lighting.glsl"
+
+out vec4 fragColor;
+
+#if MODE == 0
+// Mirror bounces: each surface keeps (1 - Kr) of its own colour and passes Kr on.
+vec3 render(vec3 ro, vec3 rd) {
+    vec3 acc = vec3(0.0), weight = vec3(1.0);
+    for (int bounce = 0; bounce <= REFLECTIONS; ++bounce) {
+        vec3 hit = castRay(ro, rd);
+        if (hit.y < -1.5) return acc + weight * sky(rd);
+        vec3 p = ro + rd * hit.x;
+        vec3 n = calcNormal(p);
+        Surface s = surfaceAt(p, int(hit.y));
+        vec3 col = applyFog(shade(s, p, n, rd), hit.x);
+        bool last = bounce == REFLECTIONS || s.kr <= 0.0;
+#if UBER
+        last = last || bounce >= uReflections;
+#endif
+        if (last) return acc + weight * col;
+        acc += weight * (1.0 - s.kr) * col;
+        weight *= s.kr;
+        ro = p + n * 4.0 * normalStep(p);
+        rd = reflect(rd, n);
+    }
+    return acc;
+}
+#else
+// Debug views of the primary hit.
+vec3 render(vec3 ro, vec3 rd) {
+    vec3 hit = castRay(ro, rd);
+#if MODE == 3
+    float heat = hit.z / float(MAX_STEPS);
+    return clamp(vec3(3.0 * heat, 3.0 * heat - 1.0, 3.0 * heat - 2.0), 0.0, 1.0);
+#elif MODE == 6
+    float id = hit.y + 2.0;  // 0 miss, 1 ground, 2+ objects
+    return vec3(mod(id, 256.0), floor(id / 256.0), 0.0) / 255.0;
+#else
+    if (hit.y < -1.5) return vec3(0.0);
+    vec3 p = ro + rd * hit.x;
+    vec3 n = calcNormal(p);
+#if MODE == 1
+    return n * 0.5 + 0.5;
+#elif MODE == 2
+    return vec3(1.0 - clamp(hit.x / uMaxDist, 0.0, 1.0));
+#elif MODE == 4 && HAS_AO
+    return vec3(calcAO(p, n));
+#elif MODE == 5
+    float sum = 0.0;
+    for (int i = 0; i < POINT_LIGHTS; ++i) {
+        vec3 toLight = uLights[i].vec.xyz - p;
+        sum += shadow(p + n * 4.0 * normalStep(p), normalize(toLight), length(toLight));
+    }
+    for (int i = 0; i < DIR_LIGHTS; ++i)
+        sum += shadow(p + n * 4.0 * normalStep(p), uLights[POINT_LIGHTS + i].vec.xyz, uMaxDist);
+    return vec3(POINT_LIGHTS + DIR_LIGHTS > 0 ? sum / float(POINT_LIGHTS + DIR_LIGHTS) : 1.0);
+#else
+    return vec3(1.0);
+#endif
+#endif
+}
+#endif
+
+vec3 cameraRay(vec2 pixel) {
+    vec2 uv = (2.0 * pixel - uViewport.zw) / uViewport.w;  // y in [-1, 1], x by aspect
+    return normalize(uCamForward + uv.x * uCamRight + uv.y * uCamUp);
+}
+
+void main() {
+    vec2 pixel = gl_FragCoord.xy + uViewport.xy;
+#if UBER
+    int aa = uAA;
+#else
+    const int aa = AA;
+#endif
+    vec3 col = vec3(0.0);
+    for (int j = 0; j < AA; ++j)
+        for (int i = 0; i < AA; ++i) {
+            if (i >= aa || j >= aa) continue;
+            vec2 offset = (vec2(i, j) + 0.5) / float(aa) - 0.5;
+            col += render(uCamPos, cameraRay(pixel + offset));
+        }
+    fragColor = vec4(clamp(col / float(aa * aa), 0.0, 1.0), 1.0);
+}

@@ -1,0 +1,49 @@
+// scene_data.glsl — the scene as std140 blocks, twin of include/marchbox/gl/gpu_scene.h.
+
+struct Object {
+    vec4 posBound;   // centre xyz, bounding-sphere radius
+    vec4 sizeMinor;  // box half-extents xyz, torus tube radius
+    vec4 shape;      // radius, height, blend, unused
+    ivec4 info;      // type, op, material, unused
+    mat3 toLocal;    // world -> local rotation
+};
+struct Material {
+    vec4 color;      // rgb, Kr
+    vec4 coeffs;     // Ka, Kd, Ks, C
+};
+struct Light {
+    vec4 vec;        // point: position; directional: unit vector towards the light
+    vec4 color;      // rgb * intensity
+};
+
+#if OBJECTS_IN_STORAGE
+layout(std430) readonly buffer ObjectStore { Object uObjects[]; };
+#else
+layout(std140) uniform Objects { Object uObjects[NUM_OBJECTS > 0 ? NUM_OBJECTS : 1]; };
+#endif
+layout(std140) uniform Materials { Material uMaterials[NUM_MATERIALS > 0 ? NUM_MATERIALS : 1]; };
+layout(std140) uniform Lights { Light uLights[NUM_POINT_LIGHTS + NUM_DIR_LIGHTS > 0 ? NUM_POINT_LIGHTS + NUM_DIR_LIGHTS : 1]; };
+
+uniform vec3 uCamPos;
+uniform vec3 uCamRight;     // scaled by tan(fov/2)
+uniform vec3 uCamUp;        // scaled by tan(fov/2)
+uniform vec3 uCamForward;
+uniform vec4 uViewport;     // this draw's pixel offset xy in the whole image, image size zw
+uniform float uEpsilon;
+uniform float uMaxDist;
+uniform float uFloor;
+uniform float uFog;
+
+#if UBER
+uniform int uObjectCount, uPointLights, uDirLights, uSteps, uShadows, uReflections, uAA;
+uniform bool uGround, uAo;
+#define OBJECT_COUNT uObjectCount
+#define POINT_LIGHTS uPointLights
+#define DIR_LIGHTS uDirLights
+#define GROUND_ON uGround
+#else
+#define OBJECT_COUNT NUM_OBJECTS
+#define POINT_LIGHTS NUM_POINT_LIGHTS
+#define DIR_LIGHTS NUM_DIR_LIGHTS
+#define GROUND_ON bool(HAS_GROUND)
+#endif

@@ -1,0 +1,73 @@
+// args.cpp — strict parsing of the options in ../shared/CLI.md.
+#include "args.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+
+namespace mb {
+
+static bool parseInt(const std::string& s, int lo, int hi, int* out) {
+    int v = 0;
+    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || end != s.data() + s.size() || v < lo || v > hi) return false;
+    *out = v;
+    return true;
+}
+
+static bool parseSize(const std::string& s, int* w, int* h) {
+    size_t x = s.find('x');
+    return x != std::string::npos && parseInt(s.substr(0, x), 1, kMaxImageSide, w) &&
+           parseInt(s.substr(x + 1), 1, kMaxImageSide, h);
+}
+
+static bool parseSeconds(const std::string& s, double* out) {
+    char* end = nullptr;
+    double v = std::strtod(s.c_str(), &end);
+    if (s.empty() || *end != '\0' || !std::isfinite(v) || v < 0 || v > kMaxSeconds) return false;
+    *out = v;
+    return true;
+}
+
+// Applies one option that takes a value; false with *error when the value is bad.
+static bool applyValue(const std::string& opt, const std::string& v, Args* a, std::string* error) {
+    bool ok = true;
+    if (opt == "-o") a->output = v, ok = !v.empty();
+    else if (opt == "--size") ok = parseSize(v, &a->width, &a->height);
+    else if (opt == "--seconds") ok = parseSeconds(v, &a->seconds);
+    else if (opt == "--frames") ok = parseInt(v, 1, 100000, &a->frames);
+    else if (opt == "--mode") a->mode = v;
+    if (!ok) {
+        static const char* expected[][2] = {
+            {"-o", "a file path"},
+            {"--size", "WxH with each side 1 to 16384"},
+            {"--seconds", "a number of seconds from 0 to 3600"},
+            {"--frames", "a whole number from 1 to 100000"}};
+        for (auto& e : expected)
+            if (opt == e[0]) *error = "bad value '" + v + "' for " + opt + ": expected " + e[1];
+    }
+    return ok;
+}
+
+bool parseArgs(int argc, char** argv, int first, Args* out, std::string* error) {
+    for (int i = first; i < argc; ++i) {
+        std::string arg = argv[i];
+        if (arg == "--uber") {
+            out->uber = true;
+        } else if (arg == "-o" || arg == "--size" || arg == "--seconds" || arg == "--frames" || arg == "--mode") {
+            if (i + 1 >= argc) {
+                *error = "missing value after " + arg;
+                return false;
+            }
+            if (!applyValue(arg, argv[++i], out, error)) return false;
+        } else if (arg.size() > 1 && arg[0] == '-') {
+            *error = "unknown option '" + arg + "'";
+            return false;
+        } else {
+            out->positional.push_back(arg);
+        }
+    }
+    return true;
+}
+
+}  // namespace mb

@@ -1,0 +1,28 @@
+// args.h — command-line options: parsed strictly, each error one line for standard error.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace mb {
+
+enum ExitCode : int { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2, kExitNoGl = 3 };
+
+struct Args {
+    std::vector<std::string> positional;
+    std::string output;               // -o
+    int width = 640, height = 360;    // --size WxH
+    double seconds = 0;               // --seconds
+    int frames = 20;                  // --frames
+    bool uber = false;                // --uber
+    std::string mode = "shaded";      // --mode
+};
+
+// Parses argv[first..argc). Returns false with *error set on an unknown option, a missing or
+// malformed value, or a value out of range.
+bool parseArgs(int argc, char** argv, int first, Args* out, std::string* error);
+
+constexpr int kMaxImageSide = 16384;
+constexpr double kMaxSeconds = 3600;
+
+}  // namespace mb

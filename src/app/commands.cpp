@@ -1,0 +1,136 @@
+// commands.cpp — render, simulate, check, shader and bench: load, act, report in one line.
+#include "commands.h"
+
+#include "marchbox/gl/offscreen_context.h"
+#include "marchbox/gl/renderer.h"
+#include "marchbox/physics.h"
+#include "marchbox/scene_io.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+namespace mb {
+
+static bool loadOrReport(const std::string& path, Scene* scene) {
+    std::vector<std::string> errors;
+    if (loadScene(path, scene, &errors)) return true;
+    for (const std::string& e : errors) std::cerr << e << '\n';
+    return false;
+}
+
+static bool needOne(const Args& a, const char* usage) {
+    if (a.positional.size() == 1) return true;
+    std::cerr << "usage: " << usage << '\n';
+    return false;
+}
+
+static bool renderOptions(const Args& a, RenderOptions* o) {
+    o->uber = a.uber;
+    if (parseRenderMode(a.mode, &o->mode)) return true;
+    std::cerr << "unknown mode '" << a.mode << "': expected shaded, normals, depth, steps, ao, shadow or id\n";
+    return false;
+}
+
+int runRender(const Args& a) {
+    RenderOptions options;
+    if (!needOne(a, "marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M]") ||
+        a.output.empty() || !renderOptions(a, &options))
+        return a.output.empty() ? (std::cerr << "render needs -o OUT.png\n", kExitUsage) : kExitUsage;
+    Scene scene;
+    if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
+    simulate(scene, a.seconds);
+    Image img;
+    std::string error;
+    if (!renderOffscreen(scene, options, a.width, a.height, &img, &error)) {
+        std::cerr << "cannot render: " << error << '\n';
+        return kExitNoGl;
+    }
+    if (!savePng(a.output, img, &error)) {
+        std::cerr << error << '\n';
+        return kExitBadInput;
+    }
+    return kExitOk;
+}
+
+int runSimulate(const Args& a) {
+    if (!needOne(a, "marchbox simulate SCENE --seconds T [-o OUT.txt]")) return kExitUsage;
+    Scene scene;
+    if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
+    simulate(scene, a.seconds);
+    if (a.output.empty()) {
+        std::cout << formatScene(scene);
+        return std::cout.flush() ? kExitOk : kExitBadInput;
+    }
+    std::string error;
+    if (saveScene(a.output, scene, &error)) return kExitOk;
+    std::cerr << error << '\n';
+    return kExitBadInput;
+}
+
+int runCheck(const Args& a) {
+    if (a.positional.empty()) {
+        std::cerr << "usage: marchbox check SCENE...\n";
+        return kExitUsage;
+    }
+    int status = kExitOk;
+    for (const std::string& path : a.positional) {
+        Scene scene;
+        if (!loadOrReport(path, &scene)) status = kExitBadInput;
+    }
+    return status;
+}
+
+// The uniform-block limit decides where objects live, so ask the driver that render uses.
+static int driverUniformBlockBytes() {
+    OffscreenContext context;
+    std::string error;
+    Renderer renderer;
+    if (!context.create(1, 1, &error) || !renderer.init(&error)) return 0;
+    return renderer.maxUniformBlockBytes();
+}
+
+int runShader(const Args& a) {
+    RenderOptions options;
+    if (!needOne(a, "marchbox shader SCENE [--uber]") || !renderOptions(a, &options)) return kExitUsage;
+    Scene scene;
+    if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
+    ShaderFeatures f = shaderFeatures(scene, options.mode, options.uber, driverUniformBlockBytes());
+    std::string source, error;
+    if (!fragmentSource(f, &source, &error)) {
+        std::cerr << error << '\n';
+        return kExitNoGl;
+    }
+    std::cout << source;
+    return kExitOk;
+}
+
+int runBench(const Args& a) {
+    RenderOptions options;
+    if (!needOne(a, "marchbox bench SCENE [--uber] [--size WxH] [--frames N]") || !renderOptions(a, &options))
+        return kExitUsage;
+    Scene scene;
+    if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
+    OffscreenContext context;
+    Renderer renderer;
+    std::string error;
+    if (!context.create(a.width, a.height, &error) || !renderer.init(&error) ||
+        !renderer.setScene(scene, options, &error)) {
+        std::cerr << "cannot render: " << error << '\n';
+        return kExitNoGl;
+    }
+    std::vector<double> ms;
+    for (int i = 0; i <= a.frames; ++i) {  // frame 0 warms up: shader JIT, caches
+        auto t0 = std::chrono::steady_clock::now();
+        renderer.draw(a.width, a.height);
+        glFinish();
+        double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        if (i > 0) std::printf("frame %d: %.3f ms\n", i, elapsed), ms.push_back(elapsed);
+    }
+    std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
+    std::printf("median_ms: %.3f\n", ms[ms.size() / 2]);
+    return kExitOk;
+}
+
+}  // namespace mb

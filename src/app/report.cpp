@@ -1,0 +1,15 @@
+// report.cpp — `marchbox report physics|render`: benchmarks that write docs/*.md.
+#include "commands.h"
+#include "physics_report.h"
+
+#include <iostream>
+
+namespace mb {
+
+int runReport(const Args& a) {
+    if (a.positional.size() == 1 && a.positional[0] == "physics") return runPhysicsReport(MARCHBOX_SOURCE_DIR);
+    std::cerr << "usage: marchbox report physics\n";
+    return kExitUsage;
+}
+
+}  // namespace mb

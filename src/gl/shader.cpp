@@ -1,0 +1,128 @@
+// shader.cpp — compiling, linking and the #include preprocessor for shaders/.
+#include "marchbox/gl/shader.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace mb {
+
+std::string shaderDir() {
+    const char* env = std::getenv("MARCHBOX_SHADERS");
+    return env && *env ? env : MARCHBOX_SHADER_DIR;
+}
+
+static bool expandIncludes(const std::string& path, std::set<std::string>* seen, std::string* out,
+                           std::string* error) {
+    std::ifstream in(path);
+    if (!in) {
+        *error = "cannot read shader '" + path + "'";
+        return false;
+    }
+    seen->insert(path);
+    std::string line;
+    const std::string directive = "#include \"";
+    while (std::getline(in, line)) {
+        if (line.compare(0, directive.size(), directive) != 0) {
+            *out += line + "\n";
+            continue;
+        }
+        std::string name = line.substr(directive.size(), line.find('"', directive.size()) - directive.size());
+        std::string inc = shaderDir() + "/" + name;
+        if (!seen->count(inc) && !expandIncludes(inc, seen, out, error)) return false;
+    }
+    return true;
+}
+
+bool readShaderSource(const std::string& path, std::string* out, std::string* error) {
+    std::set<std::string> seen;
+    out->clear();
+    return expandIncludes(path, &seen, out, error);
+}
+
+Shader::~Shader() {
+    if (id_) glDeleteShader(id_);
+}
+Shader::Shader(Shader&& o) noexcept : id_(std::exchange(o.id_, 0)), log_(std::move(o.log_)) {}
+Shader& Shader::operator=(Shader&& o) noexcept {
+    std::swap(id_, o.id_);
+    std::swap(log_, o.log_);
+    return *this;
+}
+
+static std::string infoLog(GLuint id, bool program) {
+    GLint len = 0;
+    program ? glGetProgramiv(id, GL_INFO_LOG_LENGTH, &len) : glGetShaderiv(id, GL_INFO_LOG_LENGTH, &len);
+    std::vector<char> buf(size_t(len > 0 ? len : 1), '\0');
+    program ? glGetProgramInfoLog(id, len, nullptr, buf.data()) : glGetShaderInfoLog(id, len, nullptr, buf.data());
+    return buf.data();
+}
+
+bool Shader::compile(GLenum type, const std::string& source) {
+    if (!id_) id_ = glCreateShader(type);
+    const char* src = source.c_str();
+    glShaderSource(id_, 1, &src, nullptr);
+    glCompileShader(id_);
+    GLint ok = 0;
+    glGetShaderiv(id_, GL_COMPILE_STATUS, &ok);
+    log_ = infoLog(id_, false);
+    return ok == GL_TRUE;
+}
+
+bool Shader::compileFile(GLenum type, const std::string& path, const std::string& prefix) {
+    std::string body;
+    if (!readShaderSource(path, &body, &log_)) return false;
+    return compile(type, prefix + body);
+}
+
+Program::~Program() {
+    if (id_) glDeleteProgram(id_);
+}
+Program::Program(Program&& o) noexcept
+    : id_(std::exchange(o.id_, 0)), log_(std::move(o.log_)), uniforms_(std::move(o.uniforms_)) {}
+Program& Program::operator=(Program&& o) noexcept {
+    std::swap(id_, o.id_);
+    std::swap(log_, o.log_);
+    std::swap(uniforms_, o.uniforms_);
+    return *this;
+}
+
+bool Program::link(const Shader& vertex, const Shader& fragment) {
+    if (!id_) id_ = glCreateProgram();
+    glAttachShader(id_, vertex.id());
+    glAttachShader(id_, fragment.id());
+    glLinkProgram(id_);
+    glDetachShader(id_, vertex.id());
+    glDetachShader(id_, fragment.id());
+    GLint ok = 0;
+    glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+    log_ = infoLog(id_, true);
+    uniforms_.clear();
+    if (ok != GL_TRUE) return false;
+    GLint count = 0;
+    glGetProgramiv(id_, GL_ACTIVE_UNIFORMS, &count);
+    for (GLint i = 0; i < count; ++i) {
+        char name[256];
+        GLint size = 0;
+        GLenum type = 0;
+        glGetActiveUniform(id_, GLuint(i), sizeof name, nullptr, &size, &type, name);
+        GLint loc = glGetUniformLocation(id_, name);
+        if (loc >= 0) uniforms_[name] = loc;
+    }
+    return true;
+}
+
+GLint Program::uniform(const char* name) const {
+    auto it = uniforms_.find(name);
+    return it == uniforms_.end() ? -1 : it->second;
+}
+
+void Program::bindBlock(const char* blockName, GLuint bindingPoint) const {
+    GLuint index = glGetUniformBlockIndex(id_, blockName);
+    if (index != GL_INVALID_INDEX) glUniformBlockBinding(id_, index, bindingPoint);
+}
+
+}  // namespace mb

@@ -1,0 +1,117 @@
+// shader_source.cpp — from a scene's feature set to the #defines of its fragment shader.
+#include "marchbox/gl/shader_source.h"
+
+#include "marchbox/gl/gpu_scene.h"
+#include "marchbox/gl/shader.h"
+
+#include <algorithm>
+#include <cstring>
+#include <sstream>
+
+namespace mb {
+
+static const char* kModeNames[kRenderModeCount] = {"shaded", "normals", "depth", "steps",
+                                                   "ao", "shadow", "id"};
+
+const char* renderModeName(RenderMode m) { return kModeNames[int(m)]; }
+
+bool parseRenderMode(const std::string& s, RenderMode* out) {
+    for (int i = 0; i < kRenderModeCount; ++i)
+        if (s == kModeNames[i]) {
+            *out = RenderMode(i);
+            return true;
+        }
+    return false;
+}
+
+bool ShaderFeatures::operator==(const ShaderFeatures& o) const {
+    return uber == o.uber && mode == o.mode && shapes == o.shapes && subtract == o.subtract &&
+           intersect == o.intersect && blend == o.blend && objects == o.objects &&
+           materials == o.materials && pointLights == o.pointLights && dirLights == o.dirLights &&
+           ground == o.ground && steps == o.steps && shadows == o.shadows &&
+           reflections == o.reflections && fog == o.fog && ao == o.ao && aa == o.aa &&
+           objectsInStorage == o.objectsInStorage;
+}
+
+static bool anyMirror(const Scene& s) {
+    return std::any_of(s.materials.begin(), s.materials.end(), [](const Material& m) { return m.Kr > 0; });
+}
+
+static ShaderFeatures uberFeatures(RenderMode mode, int uniformObjects) {
+    ShaderFeatures f;
+    f.uber = true;
+    f.mode = mode;
+    f.shapes = (1u << kShapeTypeCount) - 1;
+    f.subtract = f.intersect = f.blend = true;
+    f.objects = std::min(kMaxObjects, uniformObjects);
+    f.materials = kMaxMaterials;
+    f.pointLights = f.dirLights = kMaxLights;
+    f.steps = 4096;
+    f.shadows = 2;
+    f.reflections = 8;
+    f.fog = f.ao = true;
+    f.aa = 4;
+    return f;
+}
+
+ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int maxUniformBlockBytes) {
+    int blockBytes = maxUniformBlockBytes > 0 ? maxUniformBlockBytes : 16384;
+    int uniformObjects = blockBytes / int(sizeof(GpuObject));
+    if (uber) return uberFeatures(mode, uniformObjects);
+    ShaderFeatures f;
+    f.mode = mode;
+    for (const Object& o : s.objects) {
+        f.shapes |= 1u << int(o.type);
+        f.subtract |= o.op == CsgOp::Subtract;
+        f.intersect |= o.op == CsgOp::Intersect;
+        f.blend |= o.blend > 0;
+    }
+    f.objects = int(s.objects.size());
+    f.objectsInStorage = f.objects > uniformObjects;
+    f.materials = int(s.materials.size());
+    for (const Light& l : s.lights) (l.directional ? f.dirLights : f.pointLights)++;
+    f.ground = s.world.ground;
+    f.steps = s.render.steps;
+    f.shadows = s.lights.empty() ? 0 : s.render.shadows;
+    f.reflections = anyMirror(s) ? s.render.reflections : 0;
+    f.fog = s.render.fog > 0;
+    f.ao = s.render.ao;
+    f.aa = mode == RenderMode::ObjectId ? 1 : s.render.aa;
+    return f;
+}
+
+std::string shaderPrefix(const ShaderFeatures& f) {
+    std::ostringstream o;
+    o << (f.objectsInStorage ? "#version 430 core\n" : "#version 330 core\n");
+    auto def = [&](const char* name, int value) { o << "#define " << name << ' ' << value << '\n'; };
+    def("UBER", f.uber);
+    def("MODE", int(f.mode));
+    static const char* shapeDefs[kShapeTypeCount] = {"HAS_SPHERE", "HAS_BOX", "HAS_TORUS",
+                                                     "HAS_CAPSULE", "HAS_CYLINDER"};
+    for (int i = 0; i < kShapeTypeCount; ++i) def(shapeDefs[i], (f.shapes >> i) & 1);
+    def("HAS_SUBTRACT", f.subtract);
+    def("HAS_INTERSECT", f.intersect);
+    def("HAS_BLEND", f.blend);
+    def("NUM_OBJECTS", f.objects);
+    def("NUM_MATERIALS", f.materials);
+    def("NUM_POINT_LIGHTS", f.pointLights);
+    def("NUM_DIR_LIGHTS", f.dirLights);
+    def("OBJECTS_IN_STORAGE", f.objectsInStorage);
+    def("HAS_GROUND", f.ground);
+    def("MAX_STEPS", f.steps);
+    def("SHADOWS", f.shadows);
+    def("REFLECTIONS", f.reflections);
+    def("HAS_FOG", f.fog);
+    def("HAS_AO", f.ao);
+    def("AA", f.aa);
+    return o.str();
+}
+
+bool fragmentSource(const ShaderFeatures& f, std::string* out, std::string* error) {
+    std::string body;
+    if (!readShaderSource(shaderDir() + "/march.frag", &body, error)) return false;
+    *out = shaderPrefix(f) + body;
+    return true;
+}
+
+}  // namespace mb

@@ -1,0 +1,63 @@
+// golden.cpp — golden-image helpers shared by the GL tests.
+#include "golden.h"
+
+#include "marchbox/scene_io.h"
+
+#include <gtest/gtest.h>
+#include <cstdlib>
+#include <filesystem>
+
+namespace mb::test {
+
+// Tolerance: llvmpipe is deterministic, so the slack only absorbs Mesa version drift in
+// transcendental functions at silhouettes and shadow edges.
+constexpr double kMaxMeanDiff = 1.0;   // mean |a-b| per channel, in 0..255
+constexpr double kMaxP99Diff = 24.0;   // 99th percentile of the per-pixel max channel difference
+
+std::string sourcePath(const std::string& relative) {
+    return std::string(MARCHBOX_SOURCE_DIR) + "/" + relative;
+}
+
+std::string outputPath(const std::string& name) {
+    std::filesystem::path dir = std::filesystem::path(MARCHBOX_BINARY_DIR) / "test-output";
+    std::filesystem::create_directories(dir);
+    return (dir / name).string();
+}
+
+Scene loadSceneOrDie(const std::string& relative) {
+    Scene scene;
+    std::vector<std::string> errors;
+    bool ok = loadScene(sourcePath(relative), &scene, &errors);
+    EXPECT_TRUE(ok) << (errors.empty() ? "" : errors[0]);
+    return scene;
+}
+
+Image renderOrDie(const Scene& scene, const RenderOptions& options, int width, int height) {
+    Image img;
+    std::string error;
+    bool ok = renderOffscreen(scene, options, width, height, &img, &error);
+    EXPECT_TRUE(ok) << error;
+    return img;
+}
+
+void expectMatchesGolden(const Image& actual, const std::string& name) {
+    std::string goldenPath = sourcePath("tests/golden/" + name + ".png"), error;
+    const char* update = std::getenv("MARCHBOX_UPDATE_GOLDEN");
+    if (update && std::string(update) == "1") {
+        ASSERT_TRUE(savePng(goldenPath, actual, &error)) << error;
+        return;
+    }
+    Image golden;
+    ASSERT_TRUE(loadPng(goldenPath, &golden, &error)) << error << " (MARCHBOX_UPDATE_GOLDEN=1 writes it)";
+    ASSERT_EQ(golden.width, actual.width);
+    ASSERT_EQ(golden.height, actual.height);
+    ImageDiff d = diffImages(actual, golden);
+    if (d.meanAbs <= kMaxMeanDiff && d.p99 <= kMaxP99Diff) return;
+    savePng(outputPath(name + ".actual.png"), actual, &error);
+    savePng(outputPath(name + ".diff.png"), d.visual, &error);
+    ADD_FAILURE() << name << ": mean diff " << d.meanAbs << " (max " << kMaxMeanDiff << "), p99 "
+                  << d.p99 << " (max " << kMaxP99Diff << "); wrote " << outputPath(name + ".actual.png")
+                  << " and .diff.png";
+}
+
+}  // namespace mb::test

@@ -1,0 +1,25 @@
+// golden.h — rendering a scene file and comparing it with its committed PNG.
+#pragma once
+
+#include "marchbox/gl/renderer.h"
+#include "marchbox/image.h"
+#include "marchbox/scene.h"
+
+#include <string>
+
+namespace mb::test {
+
+constexpr int kGoldenWidth = 320, kGoldenHeight = 180;
+
+std::string sourcePath(const std::string& relative);   // inside the source tree
+std::string outputPath(const std::string& name);       // under build/test-output/
+
+Scene loadSceneOrDie(const std::string& relative);     // fails the test on a load error
+Image renderOrDie(const Scene& scene, const RenderOptions& options = {},
+                  int width = kGoldenWidth, int height = kGoldenHeight);
+
+// Compares with tests/golden/NAME.png. On a mismatch writes NAME.actual.png and NAME.diff.png
+// under build/test-output/. With MARCHBOX_UPDATE_GOLDEN=1 it rewrites the golden instead.
+void expectMatchesGolden(const Image& actual, const std::string& name);
+
+}  // namespace mb::test

@@ -1,0 +1,20 @@
+// test_golden.cpp — every scene in scenes/ rendered off-screen and compared with its PNG.
+#include "golden.h"
+
+#include <gtest/gtest.h>
+
+using namespace mb;
+
+class Golden : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(Golden, MatchesCommittedImage) {
+    std::string name = GetParam();
+    Scene scene = test::loadSceneOrDie("scenes/" + name + ".txt");
+    test::expectMatchesGolden(test::renderOrDie(scene), name);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
+                         ::testing::Values("default", "primitives", "csg", "shadows_hard",
+                                           "shadows_soft", "reflections", "lights", "legacy",
+                                           "extremes", "inside"),
+                         [](const auto& info) { return std::string(info.param); });
