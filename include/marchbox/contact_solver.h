@@ -1,0 +1,61 @@
+// marchbox/contact_solver.h — sequential impulses on sphere contacts, Box2D v3 style soft step.
+//
+// A contact joins body a and body b along a unit normal from a to b. A static surface is the
+// world's static body (zero inverse mass and velocity) as a. Both contact arms lie along the
+// normal, so the normal row has no angular part and the tangent row is isotropic:
+//   K_n = 1/m_a + 1/m_b,   K_t = K_n + r_a²/I_a + r_b²/I_b,   K_roll = 1/I_a + 1/I_b.
+// Within a step the normal is fixed and the separation follows the bodies' displacements:
+//   s = s0 + n·(Δx_b − Δx_a).
+#pragma once
+
+#include "marchbox/physics.h"
+
+#include <glm/vec3.hpp>
+#include <vector>
+
+namespace mb {
+
+struct Contact {
+    int a = 0, b = 0;                    // bodies; a is the static body for a static surface
+    int feature = -1;                    // StaticHit::feature, or -1 between two spheres
+    glm::dvec3 normal{0, 1, 0};          // from a to b
+    double separation = 0.0;             // at the start of the step; < 0 overlaps
+    double armA = 0.0, armB = 0.0;       // centre to contact point, along ±normal
+    double slop = 0.0;                   // overlap left alone, m
+    double normalMass = 0.0, tangentMass = 0.0, rollMass = 0.0;
+    double rollRadius = 0.0;             // lever of rolling resistance
+    double relativeVelocity = 0.0;       // normal velocity at the start of the step, for bounce
+    double normalImpulse = 0.0;          // accumulated per substep, warm started across steps
+    double maxNormalImpulse = 0.0;       // largest this step: did it touch?
+    glm::dvec3 tangentImpulse{0.0};
+    glm::dvec3 rollImpulse{0.0};
+};
+
+// Soft constraint coefficients for one substep h (Box2D v3 b2MakeSoft): a spring of angular
+// frequency ω = 2πf and damping ratio ζ, integrated implicitly:
+//   biasRate = ω / (2ζ + hω),  massScale = hω(2ζ + hω) / (1 + hω(2ζ + hω)),
+//   impulseScale = 1 / (1 + hω(2ζ + hω)).
+struct Softness {
+    double biasRate = 0.0, massScale = 1.0, impulseScale = 0.0;
+};
+Softness makeSoftness(double hertz, double dampingRatio, double h);
+
+struct SolverContext {
+    std::vector<PhysicsBody>& bodies;    // the static body last
+    std::vector<Contact>& contacts;
+    const PhysicsSettings& settings;
+    double gravity;                      // m/s² along −y
+    double friction;                     // Coulomb coefficient
+    double restitution;
+    double h;                            // substep, s
+    Softness soft;
+};
+
+void prepareContacts(SolverContext& ctx);
+void warmStartContacts(SolverContext& ctx);
+// Contacts in order; they must be sorted bottom-up for shock propagation (see the .cpp).
+void solveContacts(SolverContext& ctx, bool useBias);  // useBias false: the relax pass
+void applyRestitution(SolverContext& ctx);
+double contactSeparation(const Contact& c, const std::vector<PhysicsBody>& bodies);  // now
+
+}  // namespace mb

@@ -1,0 +1,22 @@
+// marchbox/island.h — sleeping and waking bodies by islands of touching spheres.
+//
+// An island is a set of dynamic bodies joined by this step's contacts (union-find).
+// It sleeps when every body in it has been slower than sleepSpeed for timeToSleep, and wakes as
+// a whole when an awake body comes within contact reach of any of its bodies.
+#pragma once
+
+#include "marchbox/contact_solver.h"
+#include "marchbox/physics.h"
+
+#include <vector>
+
+namespace mb {
+
+// Advances each awake body's sleep timer by dt and puts settled islands to sleep.
+void updateSleep(std::vector<PhysicsBody>& bodies, const std::vector<Contact>& contacts,
+                 const PhysicsSettings& settings, std::vector<int>& scratch);
+
+// Wakes every body of the given sleeping islands (ids may repeat).
+void wakeIslands(std::vector<PhysicsBody>& bodies, std::vector<int>& islands);
+
+}  // namespace mb

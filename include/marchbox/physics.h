@@ -1,0 +1,126 @@
+// marchbox/physics.h — the rigid-body sphere simulator.
+//
+// [SECTION] Settings
+// [SECTION] Bodies and statistics
+// [SECTION] PhysicsWorld: one fixed step at a time
+// [SECTION] Driving it: simulate() and the frame accumulator
+//
+// Dynamic spheres (Object::dynamic()) move; every other object, and the ground plane, is a static
+// collider seen through its SDF (marchbox/sdf.h). The state is double precision so that a sphere
+// 1e5 m from the origin still resolves millimetres; the scene keeps floats.
+//
+// One step of dt is split into `substeps` soft steps (Box2D v3's "soft step"):
+//   collide once (speculative contacts, warm started from the last step), then per substep
+//   integrate velocities → warm start → solve (soft, with bias) → integrate positions → relax
+//   (rigid, no bias); then restitution, a continuous sweep for fast spheres, and sleep.
+#pragma once
+
+#include "marchbox/scene.h"
+
+#include <glm/vec3.hpp>
+#include <memory>
+#include <vector>
+
+namespace mb {
+
+//-----------------------------------------------------------------------------
+// [SECTION] Settings
+//-----------------------------------------------------------------------------
+enum class Integrator : int {
+    SymplecticEuler = 0,  // v += g·h; x += v·h (Box2D): first order, free-fall error g·t·h/2
+    ExactGravity = 1,     // x += v·h − ½·g·h² while no contact pushes: exact for free flight
+};
+
+struct PhysicsSettings {
+    double dt = 1.0 / 120;              // fixed step, s
+    int substeps = 4;                   // soft steps per step
+    int iterations = 1;                 // solve and relax passes per substep
+    double maxFrame = 0.25;             // a longer frame is clamped to this (StepAccumulator)
+    Integrator integrator = Integrator::ExactGravity;
+    double contactHertz = 30;           // contact stiffness, capped at a quarter of the substep rate
+    double contactDampingRatio = 10;    // heavily over-damped: pushes out, never bounces
+    double maxPushSpeed = 3;            // m/s, fastest overlap recovery
+    double linearSlop = 0.005;          // m, allowed overlap; at most 5 % of the smaller radius
+    double restitutionThreshold = 0.5;  // m/s: slower impacts do not bounce (no jitter at rest)
+    double rollingResistance = 0.02;    // torque = this · radius · normal force, stops rolling
+    bool continuous = true;             // sweep fast spheres against static surfaces
+    bool sleep = true;
+    double sleepSpeed = 0.05;           // m/s (and rad/s · radius) below which a body may sleep
+    double timeToSleep = 0.5;           // s an island must stay slow before it sleeps
+    double maxSpeed = 1e4;              // m/s, a guard against runaway input
+};
+
+//-----------------------------------------------------------------------------
+// [SECTION] Bodies and statistics
+//-----------------------------------------------------------------------------
+struct PhysicsBody {
+    glm::dvec3 pos{0.0}, vel{0.0}, spin{0.0};  // m, m/s, rad/s
+    double radius = 0.5;
+    double invMass = 0.0;                      // 0 for the static body
+    double invInertia = 0.0;                   // 1 / (2/5·m·r²)
+    glm::dvec3 delta{0.0};                     // displacement during the current step
+    double sleepTime = 0.0;                    // s spent slow
+    bool awake = true;
+    bool supported = false;                    // a contact pushed it this substep
+    int island = -1;                           // sleeping island, for waking it whole
+    int object = -1;                           // index in Scene::objects; -1 for the static body
+};
+
+struct PhysicsStats {
+    int contacts = 0;             // contact constraints in the last step (speculative included)
+    int awake = 0;                // awake dynamic bodies
+    double maxPenetration = 0.0;  // m, deepest overlap at the end of the last step
+};
+
+//-----------------------------------------------------------------------------
+// [SECTION] PhysicsWorld
+//-----------------------------------------------------------------------------
+class PhysicsWorld {
+public:
+    explicit PhysicsWorld(const Scene& scene, const PhysicsSettings& settings = {});
+    ~PhysicsWorld();
+    PhysicsWorld(const PhysicsWorld&) = delete;
+    PhysicsWorld& operator=(const PhysicsWorld&) = delete;
+
+    void step();                           // advance by one fixed step, settings().dt
+    void writeBack(Scene& scene) const;    // pos, vel, spin into the scene's dynamic objects
+
+    int bodyCount() const { return int(bodies_.size()) - 1; }            // dynamic spheres
+    const PhysicsBody& body(int i) const { return bodies_[size_t(i)]; }  // in scene order
+    const PhysicsSettings& settings() const { return settings_; }
+    const PhysicsStats& stats() const { return stats_; }
+    double kineticEnergy() const;          // J, translation and rotation
+    double potentialEnergy() const;        // J, m·g·y
+    long long stepCount() const { return steps_; }
+
+private:
+    struct Impl;  // static colliders, broad phase, contacts: see src/core/physics_world.cpp
+    void collide();                  // this step's contacts, warm started from the last step
+    void collideStatic(int body);
+    void integrateVelocities(double h);
+    void integratePositions(double h);
+    void sweepFast();                // continuous collision against static surfaces
+    void updateStats();
+    PhysicsSettings settings_;
+    std::vector<PhysicsBody> bodies_;  // the dynamic spheres, then the static body
+    PhysicsStats stats_;
+    long long steps_ = 0;
+    std::unique_ptr<Impl> impl_;
+};
+
+//-----------------------------------------------------------------------------
+// [SECTION] Driving it
+//-----------------------------------------------------------------------------
+// Exactly round(seconds / dt) steps, then writes the state back. Deterministic: the same scene
+// and settings give the same bytes. Returns the number of steps taken.
+int simulate(Scene& scene, double seconds, const PhysicsSettings& settings = {});
+
+// Turns variable frame times into whole fixed steps, so the result does not depend on the frame
+// rate. Frames longer than maxFrame are clamped: a hitch slows the scene, it cannot explode it.
+struct StepAccumulator {
+    double acc = 0.0;  // simulated time owed, s, in [0, dt)
+    int advance(double frameSeconds, const PhysicsSettings& settings);  // steps to take now
+    double alpha(const PhysicsSettings& settings) const { return acc / settings.dt; }  // for blending
+};
+
+}  // namespace mb

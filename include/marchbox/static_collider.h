@@ -1,0 +1,58 @@
+// marchbox/static_collider.h — what a dynamic sphere sees of the static scene: the ground plane
+// and the static objects' CSG chain, through the SDF mirror (marchbox/sdf.h).
+//
+// The chain is split into groups whose union is the whole: the objects up to the last one that
+// is not a sharp union form one group (a subtract or intersect changes everything before it);
+// each later sharp-union object is a group of its own. A sphere gets one contact per group it
+// is near, so it can rest in a corner between two boxes, or in a hole carved out of one.
+//
+// mapObjects works in float world coordinates, which at 1e5 m resolve only 8 mm. Every query
+// here first moves the group to a local origin at the query point, in double, so the float
+// evaluation sees small numbers and keeps its relative precision.
+#pragma once
+
+#include "marchbox/scene.h"
+#include "marchbox/sdf.h"
+
+#include <glm/vec3.hpp>
+#include <vector>
+
+namespace mb {
+
+struct StaticHit {
+    int feature;           // 0 the ground plane, g + 1 static group g
+    double separation;     // centre distance minus radius; negative when overlapping
+    glm::dvec3 normal;     // unit, out of the static surface towards the sphere
+};
+
+class StaticCollider {
+public:
+    explicit StaticCollider(const Scene& scene);  // the non-dynamic objects and the ground
+
+    // Every surface within `reach` of the sphere's surface.
+    void query(const glm::dvec3& centre, double radius, double reach, std::vector<StaticHit>& out);
+
+    // How far the centre may travel from `from` along unit `dir`, up to `length`, before it comes
+    // within `radius` of a static surface (conservative advancement on the SDF).
+    double cast(const glm::dvec3& from, const glm::dvec3& dir, double length, double radius);
+
+    double distance(const glm::dvec3& p);  // to the nearest static surface, ground included
+
+private:
+    struct Group {
+        int first, last;       // objects [first, last) of statics_
+    };
+    double lowerBound(const Group& g, const glm::dvec3& p) const;  // <= distance to the group
+    void localise(const Group& g, const glm::dvec3& origin, bool append);
+    // Every group within `reach` of `centre`, moved to `origin`, in chain order.
+    void localiseNear(const glm::dvec3& origin, const glm::dvec3& centre, double reach);
+    double groundDistance(const glm::dvec3& p) const;
+
+    std::vector<SdfObject> statics_;
+    std::vector<Group> groups_;
+    bool ground_ = true;
+    double floor_ = 0.0;
+    SceneSdf local_;           // scratch: groups moved to a local origin
+};
+
+}  // namespace mb

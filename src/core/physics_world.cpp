@@ -1,0 +1,284 @@
+// physics_world.cpp — the fixed step: collide, soft substeps, restitution, sweep, sleep.
+#include "marchbox/physics.h"
+
+#include "marchbox/broadphase.h"
+#include "marchbox/contact_solver.h"
+#include "marchbox/island.h"
+#include "marchbox/static_collider.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <tuple>
+
+namespace mb {
+
+using glm::dvec3;
+
+struct PhysicsWorld::Impl {
+    explicit Impl(const Scene& scene)
+        : statics(scene),
+          gravity(scene.world.gravity),
+          friction(scene.world.friction),
+          restitution(scene.world.restitution) {}
+
+    StaticCollider statics;
+    Broadphase broadphase;
+    double gravity, friction, restitution;
+    std::vector<Contact> contacts, previous;
+    std::vector<dvec3> centres;
+    std::vector<double> extents, margins;
+    std::vector<std::pair<int, int>> pairs;
+    std::vector<StaticHit> hits;
+    std::vector<int> islands, scratch;
+};
+
+namespace {
+
+// Overlap a contact may keep: small against the sphere, so millimetre spheres do not sink.
+double slopFor(double radius, const PhysicsSettings& s) { return std::min(s.linearSlop, 0.05 * radius); }
+
+// Contacts sort by (first dynamic body, other body, feature): the warm-start key.
+auto contactKey(const Contact& c, int staticBody) {
+    return c.a == staticBody ? std::make_tuple(c.b, c.a, c.feature) : std::make_tuple(c.a, c.b, c.feature);
+}
+
+// Carries the impulses of contacts that persist from the last step, matched by key.
+void warmStartFrom(std::vector<Contact>& previous, std::vector<Contact>& contacts, int staticBody) {
+    auto less = [staticBody](const Contact& x, const Contact& y) {
+        return contactKey(x, staticBody) < contactKey(y, staticBody);
+    };
+    std::sort(previous.begin(), previous.end(), less);
+    std::sort(contacts.begin(), contacts.end(), less);
+    auto old = previous.begin();
+    for (Contact& c : contacts) {
+        while (old != previous.end() && less(*old, c)) ++old;
+        if (old == previous.end() || less(c, *old)) continue;
+        c.normalImpulse = old->normalImpulse;
+        c.tangentImpulse = old->tangentImpulse;
+        c.rollImpulse = old->rollImpulse;
+    }
+}
+
+double contactHeight(const Contact& c, const std::vector<PhysicsBody>& bodies) {
+    const PhysicsBody& b = bodies[c.b];
+    return b.pos.y - c.armB * c.normal.y;  // the contact point, on b's surface
+}
+
+}  // namespace
+
+PhysicsWorld::PhysicsWorld(const Scene& scene, const PhysicsSettings& settings)
+    : settings_(settings), impl_(std::make_unique<Impl>(scene)) {
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& o = scene.objects[i];
+        if (!o.dynamic()) continue;
+        PhysicsBody b;
+        b.pos = dvec3(o.pos);
+        b.vel = dvec3(o.vel);
+        b.spin = dvec3(o.spin);
+        b.radius = o.radius;
+        b.invMass = 1.0 / o.mass;
+        b.invInertia = 1.0 / (0.4 * o.mass * b.radius * b.radius);  // solid sphere: I = 2/5·m·r²
+        b.object = int(i);
+        bodies_.push_back(b);
+    }
+    bodies_.push_back(PhysicsBody{});  // the static body: zero inverse mass, never moves
+    bodies_.back().invMass = 0.0;
+}
+
+PhysicsWorld::~PhysicsWorld() = default;
+
+void PhysicsWorld::writeBack(Scene& scene) const {
+    for (int i = 0; i < bodyCount(); ++i) {
+        Object& o = scene.objects[size_t(bodies_[i].object)];
+        o.pos = glm::vec3(bodies_[i].pos);
+        o.vel = glm::vec3(bodies_[i].vel);
+        o.spin = glm::vec3(bodies_[i].spin);
+    }
+}
+
+double PhysicsWorld::kineticEnergy() const {
+    double e = 0.0;
+    for (int i = 0; i < bodyCount(); ++i) {
+        const PhysicsBody& b = bodies_[i];
+        e += 0.5 * glm::dot(b.vel, b.vel) / b.invMass + 0.5 * glm::dot(b.spin, b.spin) / b.invInertia;
+    }
+    return e;
+}
+
+double PhysicsWorld::potentialEnergy() const {
+    double e = 0.0;
+    for (int i = 0; i < bodyCount(); ++i) e += impl_->gravity * bodies_[i].pos.y / bodies_[i].invMass;
+    return e;
+}
+
+}  // namespace mb
+
+namespace mb {
+
+void PhysicsWorld::step() {
+    Impl& w = *impl_;
+    const int substeps = std::max(1, settings_.substeps);
+    const int iterations = std::max(1, settings_.iterations);
+    const double h = settings_.dt / substeps;
+    collide();
+    SolverContext ctx{bodies_, w.contacts, settings_, w.gravity, w.friction, w.restitution, h,
+                      makeSoftness(std::min(settings_.contactHertz, 0.25 / h),
+                                   settings_.contactDampingRatio, h)};
+    prepareContacts(ctx);
+    for (PhysicsBody& b : bodies_) b.delta = dvec3(0.0);
+    for (int k = 0; k < substeps; ++k) {
+        integrateVelocities(h);
+        warmStartContacts(ctx);
+        for (int i = 0; i < iterations; ++i) solveContacts(ctx, true);
+        integratePositions(h);
+        for (int i = 0; i < iterations; ++i) solveContacts(ctx, false);
+    }
+    applyRestitution(ctx);
+    if (settings_.continuous) sweepFast();
+    updateSleep(bodies_, w.contacts, settings_, w.scratch);
+    updateStats();
+    ++steps_;
+}
+
+// Speculative margin: a contact is made for anything the sphere could reach this step, moving
+// at its current speed plus what gravity adds, |v|·dt + g·dt², and a few slops besides.
+void PhysicsWorld::collide() {
+    Impl& w = *impl_;
+    const int n = bodyCount();
+    const double dt = settings_.dt;
+    w.previous.swap(w.contacts);
+    w.contacts.clear();
+    w.centres.resize(n);
+    w.extents.resize(n);
+    w.margins.resize(n);
+    for (int i = 0; i < n; ++i) {
+        const PhysicsBody& b = bodies_[i];
+        w.margins[i] = 4.0 * slopFor(b.radius, settings_) + glm::length(b.vel) * dt + w.gravity * dt * dt;
+        w.centres[i] = b.pos;
+        w.extents[i] = b.radius + w.margins[i];
+    }
+    w.broadphase.findPairs(w.centres, w.extents, w.pairs);
+    for (auto [a, b] : w.pairs)  // an awake body near a sleeping one wakes its island
+        if (bodies_[a].awake != bodies_[b].awake)
+            w.islands.push_back(bodies_[a].awake ? bodies_[b].island : bodies_[a].island);
+    wakeIslands(bodies_, w.islands);
+    for (auto [a, b] : w.pairs) {
+        const PhysicsBody &A = bodies_[a], &B = bodies_[b];
+        if (!A.awake && !B.awake) continue;
+        Contact c;
+        c.a = a;
+        c.b = b;
+        const dvec3 d = B.pos - A.pos;
+        const double len = glm::length(d);
+        c.normal = len > 0.0 ? d / len : dvec3(0, 1, 0);
+        c.separation = len - A.radius - B.radius;
+        c.armA = A.radius;
+        c.armB = B.radius;
+        c.rollRadius = std::min(A.radius, B.radius);
+        c.slop = slopFor(c.rollRadius, settings_);
+        w.contacts.push_back(c);
+    }
+    for (int i = 0; i < n; ++i)
+        if (bodies_[i].awake) collideStatic(i);
+    warmStartFrom(w.previous, w.contacts, n);
+    // Bottom-up, for shock propagation; ties by key, so the order is deterministic.
+    auto lower = [this, n](const Contact& x, const Contact& y) {
+        return std::make_tuple(contactHeight(x, bodies_), contactKey(x, n)) <
+               std::make_tuple(contactHeight(y, bodies_), contactKey(y, n));
+    };
+    std::sort(w.contacts.begin(), w.contacts.end(), lower);
+}
+
+void PhysicsWorld::collideStatic(int body) {
+    Impl& w = *impl_;
+    const PhysicsBody& b = bodies_[body];
+    w.statics.query(b.pos, b.radius, w.margins[body], w.hits);
+    for (const StaticHit& hit : w.hits) {
+        Contact c;
+        c.a = bodyCount();
+        c.b = body;
+        c.feature = hit.feature;
+        c.normal = hit.normal;
+        c.separation = hit.separation;
+        c.armB = b.radius;
+        c.rollRadius = b.radius;
+        c.slop = slopFor(b.radius, settings_);
+        w.contacts.push_back(c);
+    }
+}
+
+void PhysicsWorld::integrateVelocities(double h) {
+    for (int i = 0; i < bodyCount(); ++i) {
+        PhysicsBody& b = bodies_[i];
+        if (!b.awake) continue;
+        b.vel.y -= impl_->gravity * h;
+        const double speed = glm::length(b.vel);
+        if (speed > settings_.maxSpeed) b.vel *= settings_.maxSpeed / speed;
+    }
+}
+
+// Symplectic Euler moves by v_new·h, which trails the exact free flight x + v·h + ½·a·h² by
+// ½·g·h² each substep. ExactGravity adds that back, but only while no contact pushed the body:
+// a resting sphere must not be nudged into its support every substep.
+void PhysicsWorld::integratePositions(double h) {
+    for (PhysicsBody& b : bodies_) b.supported = false;
+    for (const Contact& c : impl_->contacts)
+        if (c.normalImpulse > 0.0) bodies_[c.a].supported = bodies_[c.b].supported = true;
+    const bool exact = settings_.integrator == Integrator::ExactGravity;
+    for (int i = 0; i < bodyCount(); ++i) {
+        PhysicsBody& b = bodies_[i];
+        if (!b.awake) continue;
+        dvec3 dx = b.vel * h;
+        if (exact && !b.supported) dx.y += 0.5 * impl_->gravity * h * h;
+        b.pos += dx;
+        b.delta += dx;
+    }
+}
+
+// Speculative contacts hold along the normal they were made with; a fast sphere moving across it
+// (past an edge, into a thin plate at a slant) could still pass through. Sweep each sphere that
+// moved more than half its radius: if its centre came within r/2 of a static surface, pull it
+// back to where the whole sphere first touched. Its velocity is kept; next step's contact
+// bounces it.
+void PhysicsWorld::sweepFast() {
+    Impl& w = *impl_;
+    for (int i = 0; i < bodyCount(); ++i) {
+        PhysicsBody& b = bodies_[i];
+        const double travel = glm::length(b.delta);
+        if (!b.awake || travel <= 0.5 * b.radius) continue;
+        const dvec3 from = b.pos - b.delta, dir = b.delta / travel;
+        const double core = w.statics.cast(from, dir, travel, 0.5 * b.radius);
+        if (core >= travel) continue;
+        const double t = w.statics.cast(from, dir, core, b.radius - slopFor(b.radius, settings_));
+        b.delta = dir * t;
+        b.pos = from + b.delta;
+    }
+}
+
+void PhysicsWorld::updateStats() {
+    stats_ = PhysicsStats{};
+    stats_.contacts = int(impl_->contacts.size());
+    for (const Contact& c : impl_->contacts)
+        stats_.maxPenetration = std::max(stats_.maxPenetration, -contactSeparation(c, bodies_));
+    for (int i = 0; i < bodyCount(); ++i) stats_.awake += bodies_[i].awake ? 1 : 0;
+}
+
+int simulate(Scene& scene, double seconds, const PhysicsSettings& settings) {
+    PhysicsWorld world(scene, settings);
+    const int steps = int(std::llround(seconds / settings.dt));
+    for (int i = 0; i < steps; ++i) world.step();
+    world.writeBack(scene);
+    return steps;
+}
+
+int StepAccumulator::advance(double frameSeconds, const PhysicsSettings& settings) {
+    acc += std::clamp(frameSeconds, 0.0, settings.maxFrame);
+    // Frame times that add up to a whole number of steps (144 frames of 1/144 s) must give that
+    // number, not one less for a rounding error: allow a billionth of a step.
+    const int steps = int(std::floor(acc / settings.dt + 1e-9));
+    acc = std::max(0.0, acc - steps * settings.dt);
+    return steps;
+}
+
+}  // namespace mb
