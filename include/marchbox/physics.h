@@ -42,6 +42,7 @@ struct PhysicsSettings {
     double maxPushSpeed = 3;            // m/s, fastest overlap recovery
     double linearSlop = 0.005;          // m, allowed overlap; at most 5 % of the smaller radius
     double restitutionThreshold = 0.5;  // m/s: slower impacts do not bounce (no jitter at rest)
+    int restitutionIterations = 4;      // bounce passes: simultaneous impacts tend to Newton's law
     double rollingResistance = 0.02;    // torque = this · radius · normal force, stops rolling
     bool continuous = true;             // sweep fast spheres against static surfaces
     bool sleep = true;

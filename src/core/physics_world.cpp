@@ -134,7 +134,7 @@ void PhysicsWorld::step() {
         integratePositions(h);
         for (int i = 0; i < iterations; ++i) solveContacts(ctx, false);
     }
-    applyRestitution(ctx);
+    for (int i = 0; i < settings_.restitutionIterations; ++i) applyRestitution(ctx);
     if (settings_.continuous) sweepFast();
     updateSleep(bodies_, w.contacts, settings_, w.scratch);
     updateStats();

@@ -84,20 +84,40 @@ INSTANTIATE_TEST_SUITE_P(PhysicsScales, PhysicsResting,
                          ::testing::Values(std::make_tuple(0.001f, 0.0f), std::make_tuple(1000.0f, 0.0f),
                                            std::make_tuple(0.5f, 1e5f), std::make_tuple(0.001f, 1e5f)));
 
+namespace {
+
+// Deepest overlap in the world, measured afresh: sphere pairs, and each sphere against the
+// static scene through the collider.
+double deepestOverlap(const PhysicsWorld& w, const Scene& scene) {
+    StaticCollider statics(scene);
+    double deepest = 0.0;
+    for (int i = 0; i < w.bodyCount(); ++i) {
+        const PhysicsBody& a = w.body(i);
+        deepest = std::max(deepest, a.radius - statics.distance(a.pos));
+        for (int j = i + 1; j < w.bodyCount(); ++j) {
+            const PhysicsBody& b = w.body(j);
+            deepest = std::max(deepest, a.radius + b.radius - glm::length(b.pos - a.pos));
+        }
+    }
+    return deepest;
+}
+
+}  // namespace
+
 // A pile of 200 spheres dropped into a bin. Gravity is the only input, so the total energy
 // (kinetic + potential) may never rise above where it started. Once settled the pile must sleep
-// and stop: no jitter, no creeping overlap.
+// and stop: no jitter, and no overlap beyond the slop a resting contact keeps.
 TEST(PhysicsExtreme, PileComesToRest) {
-    PhysicsWorld w(pileScene(200, 7));
+    const Scene scene = pileScene(200, 7);
+    PhysicsWorld w(scene);
     const double e0 = w.kineticEnergy() + w.potentialEnergy();
-    double worst = 0.0, highest = e0;
+    double highest = e0;
     const int steps = stepsFor(8.0, w.settings());
     std::vector<dvec3> before;
     for (int i = 0; i < steps; ++i) {
         w.step();
         ASSERT_TRUE(allFinite(w)) << "step " << i;
         highest = std::max(highest, w.kineticEnergy() + w.potentialEnergy());
-        if (i > steps / 2) worst = std::max(worst, w.stats().maxPenetration);
         if (i == steps - 121)
             for (int k = 0; k < w.bodyCount(); ++k) before.push_back(w.body(k).pos);
     }
@@ -105,16 +125,20 @@ TEST(PhysicsExtreme, PileComesToRest) {
     EXPECT_EQ(w.stats().awake, 0);
     double moved = 0.0;
     for (int k = 0; k < w.bodyCount(); ++k) moved = std::max(moved, glm::length(w.body(k).pos - before[size_t(k)]));
-    EXPECT_LT(moved, 1e-6) << "still creeping in the last second";
-    EXPECT_LT(worst, 2.0 * w.settings().linearSlop);
-    std::printf("pile: energy %.6g -> %.6g J, worst settled overlap %.3g m\n", e0,
-                w.kineticEnergy() + w.potentialEnergy(), worst);
+    EXPECT_LT(moved, 1e-9) << "still moving in the last second";
+    const double deepest = deepestOverlap(w, scene);
+    EXPECT_LT(deepest, 1.5 * w.settings().linearSlop);
+    std::printf("pile: energy %.6g -> %.6g J, deepest overlap at rest %.3g m\n", e0,
+                w.kineticEnergy() + w.potentialEnergy(), deepest);
 }
 
 // 64 elastic, frictionless spheres in a closed box, no gravity. Each impact bounces off the
-// pre-step approach speed with e = 1, so a lone two-body impact keeps energy exactly; a sphere
-// touching two others at once shares one relax pass, which can only lose energy. Bounds: never
-// a gain, and less than 2 % lost over 3 s.
+// pre-step approach speed with e = 1, so a lone two-body impact keeps energy exactly. Impacts
+// that share a sphere within one step (two spheres, or a sphere and a wall) are solved together:
+// Newton's law v_n' = −e·v_n on every contact conserves energy with e = 1 once converged:
+// with Δv = M⁻¹Jᵀλ and J·v' = −J·v, ΔKE = λᵀJv + ½λᵀJM⁻¹Jᵀλ = λᵀJv − λᵀJv = 0. The four
+// Gauss-Seidel restitution passes stop short of convergence, which leaves a small loss.
+// Bounds: never a gain, and less than 2 % lost over 3 s (measured: about 1 %).
 TEST(PhysicsExtreme, ElasticGasConservesEnergy) {
     PhysicsSettings s;
     s.restitutionThreshold = 0.0;  // a gas has no resting contacts: every impact bounces
