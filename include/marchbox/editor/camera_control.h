@@ -1,0 +1,40 @@
+// marchbox/editor/camera_control.h — orbit, pan, zoom and fly for the scene's camera.
+//
+// Rules: angles in radians, distances in metres, mouse movement in window pixels with +y down
+// (as the mouse reports it). The camera orbits its target; panning and flying move both.
+#pragma once
+
+#include "marchbox/scene.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace mb {
+
+struct CameraControls {
+    float orbitRadiansPerPixel = 0.005f;
+    float zoomPerWheelStep = 0.85f;     // distance factor for one wheel notch forward
+    float minDistance = 0.05f, maxDistance = 1e4f;
+    float maxPitch = 1.54f;             // rad from the horizon: never quite over the pole
+    float flySpeed = 4.0f;              // m/s
+    float previewRadiansPerSecond = 0.4f;
+};
+
+// Turns the camera about its target so the scene follows the mouse, as three.js's
+// OrbitControls do: dragging right swings the camera to the view's left, dragging down lifts it.
+void orbitCamera(Camera& c, glm::vec2 dragPixels, const CameraControls& k = {});
+
+// Slides camera and target across the view so the point under the mouse follows it.
+// viewHeight is the view's height in the same pixels as dragPixels.
+void panCamera(Camera& c, glm::vec2 dragPixels, float viewHeight);
+
+// Moves towards the target (positive steps) or away, keeping the distance within limits.
+void zoomCamera(Camera& c, float wheelSteps, const CameraControls& k = {});
+
+// WASD/QE: move is (right, up, forward), each -1..1; up is the world's +y.
+void flyCamera(Camera& c, glm::vec3 move, float seconds, const CameraControls& k = {});
+
+// Key 1's preview: a slow turn about the vertical through the target.
+void previewOrbit(Camera& c, float seconds, const CameraControls& k = {});
+
+}  // namespace mb

@@ -1,0 +1,98 @@
+// marchbox/editor/editor.h — the editor without its window: the document, the selection and the
+// simulation, and the rules that tie them together.
+//
+// [SECTION] File: new, open, save; leaving unsaved work always asks first
+// [SECTION] Edits: every change to the scene, undo and redo
+// [SECTION] Selection and the viewport's object commands
+// [SECTION] Simulation
+//
+// The window's panels and input call these; nothing here knows about GL, GLFW or ImGui.
+#pragma once
+
+#include "marchbox/editor/document.h"
+#include "marchbox/editor/scene_edit.h"
+#include "marchbox/editor/selection.h"
+#include "marchbox/editor/simulation.h"
+
+#include <glm/vec2.hpp>
+#include <string>
+#include <vector>
+
+namespace mb {
+
+enum class Leave : int { None, NewScene, Open, Exit };
+
+class Editor {
+public:
+    //-------------------------------------------------------------------------
+    // [SECTION] File
+    //-------------------------------------------------------------------------
+    // New, Open and Exit leave the current scene. With unsaved changes they wait (pendingLeave)
+    // until confirmLeave() (after the user saved or chose to discard) or cancelLeave().
+    // Returns false only when an Open carried out now failed; *errors then has FILE:LINE lines
+    // and the open scene is untouched.
+    bool request(Leave what, const std::string& path, std::vector<std::string>* errors);
+    Leave pendingLeave() const { return pending_; }
+    const std::string& pendingPath() const { return pendingPath_; }
+    bool confirmLeave(std::vector<std::string>* errors);
+    void cancelLeave() { pending_ = Leave::None; }
+    bool quitRequested() const { return quit_; }
+
+    bool save(std::string* error);  // to document().path(); fails when the scene has none
+    bool saveAs(const std::string& path, std::string* error);
+
+    //-------------------------------------------------------------------------
+    // [SECTION] Edits
+    //-------------------------------------------------------------------------
+    // A running simulation's progress is recorded first, so the edit is its own undo step.
+    void edit(const std::string& label, const SceneChange& change, uint64_t mergeKey = 0);
+    void endEdit() { doc_.seal(); }  // a widget was released: the next change is a new step
+    bool undo();
+    bool redo();
+
+    bool add(ItemKind k, std::string* why);                    // selects the new item
+    bool duplicate(ItemKind k, int index, std::string* why);   // selects the copy
+    bool remove(ItemKind k, int index, std::string* why);
+    void clear(ItemKind k);
+    int kick();  // J: random velocities for the dynamic spheres; returns how many
+
+    //-------------------------------------------------------------------------
+    // [SECTION] Selection
+    //-------------------------------------------------------------------------
+    const Selection& selection() const { return sel_; }
+    void select(ItemKind k, int index);
+    int pick(glm::vec2 pixel, glm::vec2 viewSize);  // selects the object there, or nothing
+    bool removeSelected(std::string* why);
+    void moveObject(int index, glm::vec3 pos, uint64_t mergeKey);  // a drag: one undo step
+
+    //-------------------------------------------------------------------------
+    // [SECTION] Simulation
+    //-------------------------------------------------------------------------
+    void togglePlay();
+    void step();
+    void resetSimulation();
+    void frame(double seconds);  // the simulator's share of one frame
+    const Simulation& simulation() const { return sim_; }
+
+    // The camera moves as a view, not an edit: no undo step, no unsaved change.
+    Camera& view() { return doc_.live().camera; }
+
+    const Document& document() const { return doc_; }
+    const Scene& scene() const { return doc_.scene(); }
+
+private:
+    bool leaveNow(Leave what, const std::string& path, std::vector<std::string>* errors);
+    bool open(const std::string& path, std::vector<std::string>* errors);
+    void replace(const Scene& scene, const std::string& path);  // New or Open
+    void edited();    // after any change of the scene outside the simulator
+
+    Document doc_;
+    Selection sel_;
+    Simulation sim_;
+    Leave pending_ = Leave::None;
+    std::string pendingPath_;
+    bool quit_ = false;
+    uint32_t kicks_ = 0;  // seeds J: different each press, the same in every run
+};
+
+}  // namespace mb

@@ -1,0 +1,30 @@
+// marchbox/editor/files.h — the scene files File > Open offers, and noticing files that change.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace mb {
+
+// The .txt files in the folder of `currentScene` and in `scenesDir`, each once, sorted by
+// path. Folders that do not exist add nothing.
+std::vector<std::string> listSceneFiles(const std::string& currentScene,
+                                        const std::string& scenesDir);
+
+bool hasSceneExtension(const std::string& path);  // ".txt", any case
+
+// Polls the modification times of the files directly in one folder (the shaders).
+class FolderWatch {
+public:
+    explicit FolderWatch(std::string folder);
+    bool changed();  // true when a file appeared, vanished or was rewritten since the last call
+
+private:
+    std::map<std::string, std::filesystem::file_time_type> scan() const;
+    std::string folder_;
+    std::map<std::string, std::filesystem::file_time_type> stamps_;
+};
+
+}  // namespace mb

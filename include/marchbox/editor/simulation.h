@@ -1,0 +1,53 @@
+// marchbox/editor/simulation.h — Play, Pause, Step and Reset over a Document.
+//
+// While playing, the simulator changes the live scene every frame through the fixed-step
+// accumulator, outside the undo history; pausing records the whole run as one undo step.
+// Reset goes back to the scene as it was when Play was last pressed.
+#pragma once
+
+#include "marchbox/editor/document.h"
+#include "marchbox/physics.h"
+
+#include <memory>
+
+namespace mb {
+
+class Simulation {
+public:
+    explicit Simulation(const PhysicsSettings& settings = {}) : settings_(settings) {}
+
+    bool playing() const { return playing_; }
+    bool canReset() const { return hasResetPoint_; }
+    const PhysicsSettings& settings() const { return settings_; }
+
+    void play(Document& doc);
+    void pause(Document& doc);   // records the run since play() as "Simulation run"
+    void step(Document& doc);    // one fixed step, as its own undo step; pauses first
+    void reset(Document& doc);   // back to the scene when Play was pressed, as an undo step
+
+    // Each frame: the steps the accumulator owes for frameSeconds, taken and written back.
+    // Returns the number of steps; 0 while paused.
+    int advance(Document& doc, double frameSeconds);
+
+    // The scene was edited, undone or replaced: the physics world is rebuilt before the next
+    // step. While playing, the run so far must be committed first (commitRun) so that the edit
+    // is its own undo step; the run then continues from the edited scene.
+    void commitRun(Document& doc);
+    void sceneChanged(Document& doc);
+    void forgetResetPoint() { hasResetPoint_ = false; }  // a new file: its own start
+
+    const PhysicsWorld* world() const { return world_.get(); }
+
+private:
+    void ensureWorld(const Scene& scene);
+
+    PhysicsSettings settings_;
+    std::unique_ptr<PhysicsWorld> world_;  // null when it no longer mirrors the scene
+    StepAccumulator accumulator_;
+    Scene runStart_;    // the scene when this run (or its last committed part) began
+    Scene resetPoint_;  // the scene when Play was pressed
+    bool hasResetPoint_ = false;
+    bool playing_ = false;
+};
+
+}  // namespace mb

@@ -1,0 +1,75 @@
+// camera_control.cpp — the camera as a point on a sphere about its target.
+#include "marchbox/editor/camera_control.h"
+
+#include "marchbox/camera.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace mb {
+
+// offset = r·(cos p·sin y, sin p, cos p·cos y): yaw y about +y, pitch p above the horizon.
+struct Spherical {
+    float r, yaw, pitch;
+};
+
+static Spherical toSpherical(glm::vec3 offset) {
+    float r = glm::length(offset);
+    if (r <= 0.0f) return {0.0f, 0.0f, 0.0f};
+    return {r, std::atan2(offset.x, offset.z), std::asin(std::clamp(offset.y / r, -1.0f, 1.0f))};
+}
+
+static glm::vec3 fromSpherical(const Spherical& s) {
+    return s.r * glm::vec3(std::cos(s.pitch) * std::sin(s.yaw), std::sin(s.pitch),
+                           std::cos(s.pitch) * std::cos(s.yaw));
+}
+
+void orbitCamera(Camera& c, glm::vec2 drag, const CameraControls& k) {
+    Spherical s = toSpherical(c.pos - c.target);
+    if (s.r <= 0.0f) return;
+    // Lowering yaw moves the camera towards the view's left (right = forward × up), so the
+    // scene turns with a drag to the right.
+    s.yaw -= drag.x * k.orbitRadiansPerPixel;
+    s.pitch = std::clamp(s.pitch + drag.y * k.orbitRadiansPerPixel, -k.maxPitch, k.maxPitch);
+    c.pos = c.target + fromSpherical(s);
+}
+
+void panCamera(Camera& c, glm::vec2 drag, float viewHeight) {
+    if (viewHeight <= 0.0f) return;
+    CameraBasis b = cameraBasis(c);
+    // At the target's distance the view is 2·d·tan(fov/2) metres tall.
+    float d = glm::length(c.target - c.pos);
+    float metresPerPixel = 2.0f * d * std::tan(glm::radians(c.fov) * 0.5f) / viewHeight;
+    glm::vec3 right = glm::normalize(b.right), up = glm::normalize(b.up);
+    glm::vec3 move = (-drag.x * right + drag.y * up) * metresPerPixel;
+    c.pos += move;
+    c.target += move;
+}
+
+void zoomCamera(Camera& c, float steps, const CameraControls& k) {
+    glm::vec3 offset = c.pos - c.target;
+    float r = glm::length(offset);
+    if (r <= 0.0f) return;
+    float next = std::clamp(r * std::pow(k.zoomPerWheelStep, steps), k.minDistance, k.maxDistance);
+    c.pos = c.target + offset * (next / r);
+}
+
+void flyCamera(Camera& c, glm::vec3 move, float seconds, const CameraControls& k) {
+    CameraBasis b = cameraBasis(c);
+    glm::vec3 step = move.x * glm::normalize(b.right) + move.y * glm::vec3(0, 1, 0) +
+                     move.z * b.forward;
+    step *= k.flySpeed * seconds;
+    c.pos += step;
+    c.target += step;
+}
+
+void previewOrbit(Camera& c, float seconds, const CameraControls& k) {
+    Spherical s = toSpherical(c.pos - c.target);
+    if (s.r <= 0.0f) return;
+    s.yaw += k.previewRadiansPerSecond * seconds;
+    c.pos = c.target + fromSpherical(s);
+}
+
+}  // namespace mb

@@ -1,0 +1,60 @@
+// document.cpp — edits, live changes and undo over one scene.
+#include "marchbox/editor/document.h"
+
+namespace mb {
+
+bool sameCamera(const Camera& a, const Camera& b) {
+    return a.pos == b.pos && a.target == b.target && a.fov == b.fov;
+}
+
+void Document::replace(const Scene& scene, const std::string& path) {
+    scene_ = scene;
+    path_ = path;
+    history_.clear();
+    savedState_ = history_.state();
+    ++version_;
+}
+
+void Document::markSaved(const std::string& path) {
+    path_ = path;
+    savedState_ = history_.state();
+    history_.seal();  // a later drag must not fold into the step that was saved
+}
+
+void Document::apply(const std::string& label, const SceneChange& change, uint64_t mergeKey) {
+    Scene before = scene_;
+    change(scene_);
+    ++version_;
+    history_.push(label, before, scene_, mergeKey);
+}
+
+void Document::commit(const std::string& label, const Scene& before) {
+    Scene from = before;
+    from.camera = scene_.camera;  // the view moving meanwhile is not part of the step
+    history_.push(label, from, scene_);
+}
+
+void Document::restore(const Scene& target, bool stepMovedCamera) {
+    Camera view = scene_.camera;
+    scene_ = target;
+    if (!stepMovedCamera) scene_.camera = view;
+    ++version_;
+}
+
+bool Document::undo(std::string* label) {
+    const HistoryStep* s = history_.undo();
+    if (!s) return false;
+    restore(s->before, !sameCamera(s->before.camera, s->after.camera));
+    if (label) *label = s->label;
+    return true;
+}
+
+bool Document::redo(std::string* label) {
+    const HistoryStep* s = history_.redo();
+    if (!s) return false;
+    restore(s->after, !sameCamera(s->before.camera, s->after.camera));
+    if (label) *label = s->label;
+    return true;
+}
+
+}  // namespace mb

@@ -1,0 +1,218 @@
+// editor.cpp — the rules between document, selection and simulation.
+#include "marchbox/editor/editor.h"
+
+#include "marchbox/editor/events.h"
+#include "marchbox/editor/picking.h"
+#include "marchbox/scene_io.h"
+
+namespace mb {
+
+static const char* leaveName(Leave what) {
+    static const char* names[] = {"none", "new", "open", "exit"};
+    return names[int(what)];
+}
+
+//-----------------------------------------------------------------------------
+// [SECTION] File
+//-----------------------------------------------------------------------------
+bool Editor::request(Leave what, const std::string& path, std::vector<std::string>* errors) {
+    if (what == Leave::None) return true;
+    if (!doc_.dirty()) return leaveNow(what, path, errors);
+    pending_ = what;
+    pendingPath_ = path;
+    emitEvent(std::string("ask ") + leaveName(what));
+    return true;
+}
+
+bool Editor::confirmLeave(std::vector<std::string>* errors) {
+    Leave what = pending_;
+    pending_ = Leave::None;
+    return leaveNow(what, pendingPath_, errors);
+}
+
+bool Editor::leaveNow(Leave what, const std::string& path, std::vector<std::string>* errors) {
+    switch (what) {
+        case Leave::None: return true;
+        case Leave::NewScene:
+            replace(newScene(), "");
+            emitEvent("new");
+            return true;
+        case Leave::Open: return open(path, errors);
+        case Leave::Exit:
+            quit_ = true;
+            emitEvent("quit");
+            return true;
+    }
+    return true;
+}
+
+bool Editor::open(const std::string& path, std::vector<std::string>* errors) {
+    Scene loaded;
+    if (!loadScene(path, &loaded, errors)) {
+        emitEvent("open-failed " + path);
+        return false;
+    }
+    replace(loaded, path);
+    emitEvent("open " + path);
+    return true;
+}
+
+void Editor::replace(const Scene& scene, const std::string& path) {
+    sim_.pause(doc_);  // before the history goes, so the run is not recorded into the new one
+    doc_.replace(scene, path);
+    sim_.sceneChanged(doc_);
+    sim_.forgetResetPoint();
+    sel_.clear();
+}
+
+bool Editor::save(std::string* error) {
+    if (doc_.path().empty()) {
+        *error = "the scene has no file yet: use Save As";
+        return false;
+    }
+    return saveAs(doc_.path(), error);
+}
+
+bool Editor::saveAs(const std::string& path, std::string* error) {
+    // What is on screen is what gets saved: a running simulation is recorded first.
+    sim_.commitRun(doc_);
+    if (!saveScene(path, doc_.scene(), error)) return false;
+    doc_.markSaved(path);
+    emitEvent("save " + path);
+    return true;
+}
+
+//-----------------------------------------------------------------------------
+// [SECTION] Edits
+//-----------------------------------------------------------------------------
+void Editor::edit(const std::string& label, const SceneChange& change, uint64_t mergeKey) {
+    sim_.commitRun(doc_);
+    doc_.apply(label, change, mergeKey);
+    edited();
+    if (mergeKey == 0) emitEvent("edit " + label);
+}
+
+void Editor::edited() {
+    sim_.sceneChanged(doc_);
+    selectionClamp(sel_, doc_.scene());
+}
+
+bool Editor::undo() {
+    sim_.pause(doc_);
+    std::string label;
+    if (!doc_.undo(&label)) return false;
+    edited();
+    emitEvent("undo " + label);
+    return true;
+}
+
+bool Editor::redo() {
+    sim_.pause(doc_);
+    std::string label;
+    if (!doc_.redo(&label)) return false;
+    edited();
+    emitEvent("redo " + label);
+    return true;
+}
+
+// Runs a scene_edit command inside an undo step, keeping the scene untouched if it refuses.
+template <typename Command>
+static bool tryEdit(Editor& e, const std::string& label, Command command) {
+    Scene trial = e.scene();
+    if (!command(trial)) return false;
+    e.edit(label, [&](Scene& s) { s = trial; });
+    return true;
+}
+
+bool Editor::add(ItemKind k, std::string* why) {
+    int index = -1;
+    bool ok = tryEdit(*this, std::string("Add ") + itemKindName(k),
+                      [&](Scene& s) { return (index = addItem(s, k, why)) >= 0; });
+    if (ok) select(k, index);
+    return ok;
+}
+
+bool Editor::duplicate(ItemKind k, int index, std::string* why) {
+    int copy = -1;
+    bool ok = tryEdit(*this, std::string("Duplicate ") + itemKindName(k),
+                      [&](Scene& s) { return (copy = duplicateItem(s, k, index, why)) >= 0; });
+    if (ok) select(k, copy);
+    return ok;
+}
+
+bool Editor::remove(ItemKind k, int index, std::string* why) {
+    // The selection moves before the edit, whose clamp would otherwise drop it.
+    return tryEdit(*this, std::string("Delete ") + itemKindName(k), [&](Scene& s) {
+        if (!deleteItem(s, k, index, why)) return false;
+        selectionAfterDelete(sel_, k, index);
+        return true;
+    });
+}
+
+void Editor::clear(ItemKind k) {
+    edit(std::string("Clear ") + itemKindName(k) + "s", [&](Scene& s) { clearItems(s, k); });
+    selectionClamp(sel_, doc_.scene());
+}
+
+int Editor::kick() {
+    int n = 0;
+    uint32_t seed = ++kicks_;
+    edit("Random velocities", [&](Scene& s) { n = randomizeVelocities(s, seed); });
+    return n;
+}
+
+//-----------------------------------------------------------------------------
+// [SECTION] Selection
+//-----------------------------------------------------------------------------
+void Editor::select(ItemKind k, int index) {
+    if (index >= itemCount(doc_.scene(), k)) index = -1;
+    if (sel_.kind == k && sel_.index == index) return;
+    sel_.kind = k;
+    sel_.index = index;
+    if (index < 0) emitEvent("select none");
+    else emitEvent(std::string("select ") + itemKindName(k) + " " + std::to_string(index));
+}
+
+int Editor::pick(glm::vec2 pixel, glm::vec2 viewSize) {
+    int hit = pickObject(doc_.scene(), pixel, viewSize);
+    select(ItemKind::Object, hit);
+    return hit;
+}
+
+bool Editor::removeSelected(std::string* why) {
+    if (sel_.empty()) return false;
+    return remove(sel_.kind, sel_.index, why);
+}
+
+void Editor::moveObject(int index, glm::vec3 pos, uint64_t mergeKey) {
+    if (index < 0 || index >= int(doc_.scene().objects.size())) return;
+    edit("Move object", [&](Scene& s) { s.objects[size_t(index)].pos = pos; }, mergeKey);
+}
+
+//-----------------------------------------------------------------------------
+// [SECTION] Simulation
+//-----------------------------------------------------------------------------
+void Editor::togglePlay() {
+    if (sim_.playing()) {
+        sim_.pause(doc_);
+        emitEvent("pause");
+    } else {
+        sim_.play(doc_);
+        emitEvent("play");
+    }
+}
+
+void Editor::step() {
+    sim_.step(doc_);
+    emitEvent("step");
+}
+
+void Editor::resetSimulation() {
+    sim_.reset(doc_);
+    selectionClamp(sel_, doc_.scene());
+    emitEvent("reset");
+}
+
+void Editor::frame(double seconds) { sim_.advance(doc_, seconds); }
+
+}  // namespace mb

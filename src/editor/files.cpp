@@ -1,0 +1,60 @@
+// files.cpp — scene file listing and folder polling, with std::filesystem, never throwing.
+#include "marchbox/editor/files.h"
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+
+namespace fs = std::filesystem;
+
+namespace mb {
+
+bool hasSceneExtension(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext == ".txt";
+}
+
+// Keyed by canonical path, so the same file reached as "scenes/a.txt" and "/src/scenes/a.txt"
+// is listed once, under the first spelling.
+static void addScenesIn(const fs::path& folder, std::map<std::string, std::string>* out) {
+    std::error_code ec;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        if (!it->is_regular_file(ec) || !hasSceneExtension(it->path().string())) continue;
+        std::error_code ignored;
+        std::string key = fs::weakly_canonical(it->path(), ignored).string();
+        out->emplace(key, it->path().lexically_normal().string());
+    }
+}
+
+std::vector<std::string> listSceneFiles(const std::string& currentScene,
+                                        const std::string& scenesDir) {
+    std::map<std::string, std::string> found;
+    fs::path folder = fs::path(currentScene).parent_path();
+    addScenesIn(folder.empty() ? fs::path(".") : folder, &found);
+    addScenesIn(scenesDir, &found);
+    std::set<std::string> paths;
+    for (const auto& entry : found) paths.insert(entry.second);
+    return {paths.begin(), paths.end()};
+}
+
+FolderWatch::FolderWatch(std::string folder) : folder_(std::move(folder)), stamps_(scan()) {}
+
+std::map<std::string, fs::file_time_type> FolderWatch::scan() const {
+    std::map<std::string, fs::file_time_type> stamps;
+    std::error_code ec;
+    for (fs::directory_iterator it(folder_, ec), end; !ec && it != end; it.increment(ec)) {
+        auto t = it->last_write_time(ec);
+        if (!ec) stamps[it->path().string()] = t;
+    }
+    return stamps;
+}
+
+bool FolderWatch::changed() {
+    auto now = scan();
+    if (now == stamps_) return false;
+    stamps_ = std::move(now);
+    return true;
+}
+
+}  // namespace mb

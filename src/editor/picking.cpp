@@ -1,0 +1,61 @@
+// picking.cpp — ray casts for selection and for dragging objects over the ground.
+#include "marchbox/editor/picking.h"
+
+#include "marchbox/camera.h"
+#include "marchbox/sdf.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace mb {
+
+// As far as the shader marches (gpu_scene's maxRayDistance): past every object's bound.
+static float reach(const Scene& scene, const SceneSdf& sdf) {
+    float far = 100.0f;
+    for (const SdfObject& o : sdf.objects)
+        far = std::max(far, 2.0f * (glm::length(o.pos - scene.camera.pos) + o.bound));
+    return far;
+}
+
+int pickObject(const Scene& scene, glm::vec2 pixel, glm::vec2 viewSize) {
+    if (viewSize.x <= 0.0f || viewSize.y <= 0.0f) return -1;
+    SceneSdf sdf = makeSceneSdf(scene);
+    glm::vec3 dir = cameraRay(cameraBasis(scene.camera), pixel, viewSize);
+    RayHit hit = castRay(sdf, scene.camera.pos, dir, scene.render.steps, scene.render.epsilon,
+                         reach(scene, sdf));
+    return hit.hit && hit.object >= 0 ? hit.object : -1;
+}
+
+bool pixelOnPlane(const Camera& camera, glm::vec2 pixel, glm::vec2 viewSize, float height,
+                  glm::vec3* hit) {
+    if (viewSize.x <= 0.0f || viewSize.y <= 0.0f) return false;
+    glm::vec3 dir = cameraRay(cameraBasis(camera), pixel, viewSize);
+    if (std::abs(dir.y) < 1e-6f) return false;
+    float t = (height - camera.pos.y) / dir.y;
+    if (t <= 0.0f) return false;
+    *hit = camera.pos + t * dir;
+    return true;
+}
+
+bool GroundDrag::begin(const Scene& scene, int index, glm::vec2 pixel, glm::vec2 viewSize) {
+    if (index < 0 || index >= int(scene.objects.size())) return false;
+    const Object& o = scene.objects[size_t(index)];
+    glm::vec3 grabbed;
+    if (!pixelOnPlane(scene.camera, pixel, viewSize, o.pos.y, &grabbed)) return false;
+    object = index;
+    height = o.pos.y;
+    offset = o.pos - grabbed;
+    return true;
+}
+
+bool GroundDrag::follow(const Camera& camera, glm::vec2 pixel, glm::vec2 viewSize,
+                        glm::vec3* pos) const {
+    glm::vec3 point;
+    if (!active() || !pixelOnPlane(camera, pixel, viewSize, height, &point)) return false;
+    *pos = point + offset;
+    pos->y = height;  // exactly: the plane's y, not a rounding of it
+    return true;
+}
+
+}  // namespace mb

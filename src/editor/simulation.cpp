@@ -1,0 +1,66 @@
+// simulation.cpp — the physics world driven by frames, recorded as undo steps.
+#include "marchbox/editor/simulation.h"
+
+namespace mb {
+
+void Simulation::ensureWorld(const Scene& scene) {
+    if (!world_) world_ = std::make_unique<PhysicsWorld>(scene, settings_);
+}
+
+void Simulation::play(Document& doc) {
+    if (playing_) return;
+    playing_ = true;
+    accumulator_ = {};
+    runStart_ = doc.scene();
+    resetPoint_ = doc.scene();
+    hasResetPoint_ = true;
+}
+
+void Simulation::pause(Document& doc) {
+    if (!playing_) return;
+    commitRun(doc);
+    playing_ = false;
+}
+
+void Simulation::commitRun(Document& doc) {
+    if (!playing_) return;
+    doc.commit("Simulation run", runStart_);
+    runStart_ = doc.scene();
+}
+
+void Simulation::sceneChanged(Document& doc) {
+    world_.reset();
+    if (playing_) runStart_ = doc.scene();
+}
+
+void Simulation::step(Document& doc) {
+    pause(doc);
+    Scene before = doc.scene();
+    ensureWorld(before);
+    world_->step();
+    world_->writeBack(doc.live());
+    doc.commit("Simulation step", before);
+}
+
+void Simulation::reset(Document& doc) {
+    if (!hasResetPoint_) return;
+    pause(doc);
+    Camera view = doc.scene().camera;
+    doc.apply("Reset simulation", [&](Scene& s) {
+        s = resetPoint_;
+        s.camera = view;
+    });
+    world_.reset();
+}
+
+int Simulation::advance(Document& doc, double frameSeconds) {
+    if (!playing_) return 0;
+    int steps = accumulator_.advance(frameSeconds, settings_);
+    if (steps == 0) return 0;
+    ensureWorld(doc.scene());
+    for (int i = 0; i < steps; ++i) world_->step();
+    world_->writeBack(doc.live());
+    return steps;
+}
+
+}  // namespace mb

@@ -1,0 +1,192 @@
+// test_editor.cpp — the editor's rules: open failures, unsaved work, edits while simulating.
+#include "marchbox/editor/editor.h"
+#include "marchbox/scene_io.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+
+using namespace mb;
+namespace fs = std::filesystem;
+
+static std::string tempPath(const std::string& name) {
+    fs::path dir = fs::path(MARCHBOX_BINARY_DIR) / "test-output" / "editor";
+    fs::create_directories(dir);
+    return (dir / name).string();
+}
+
+static std::string writeFile(const std::string& name, const std::string& text) {
+    std::string path = tempPath(name);
+    std::ofstream(path) << text;
+    return path;
+}
+
+static const char* kScene =
+    "material r:1 g:0 b:0\n"
+    "object type:sphere pos:0,3,0 radius:0.5\n"
+    "object type:box pos:3,0.5,0 static:1\n";
+
+static Editor openEditor(const std::string& path) {
+    Editor e;
+    std::vector<std::string> errors;
+    EXPECT_TRUE(e.request(Leave::Open, path, &errors));
+    return e;
+}
+
+TEST(Editor, FailedOpenLeavesTheSceneAndSaysWhere) {
+    Editor e = openEditor(writeFile("good.txt", kScene));
+    std::string bad = writeFile("bad.txt", "material r:1 g:0 b:0\nobject type:sphere pos:0,1\n");
+    std::vector<std::string> errors;
+    EXPECT_FALSE(e.request(Leave::Open, bad, &errors));
+    ASSERT_FALSE(errors.empty());
+    EXPECT_EQ(errors[0].rfind(bad + ":2:", 0), 0u) << errors[0];
+    EXPECT_EQ(e.scene().objects.size(), 2u);
+    EXPECT_EQ(e.document().path(), tempPath("good.txt"));
+}
+
+TEST(Editor, LeavingUnsavedWorkWaitsForAnAnswer) {
+    Editor e = openEditor(writeFile("leave.txt", kScene));
+    std::vector<std::string> errors;
+    e.request(Leave::Exit, "", &errors);
+    EXPECT_TRUE(e.quitRequested());  // nothing unsaved: leaves at once
+
+    Editor f = openEditor(writeFile("leave.txt", kScene));
+    f.kick();
+    f.request(Leave::NewScene, "", &errors);
+    EXPECT_EQ(f.pendingLeave(), Leave::NewScene);
+    EXPECT_EQ(f.scene().objects.size(), 2u);
+    f.cancelLeave();
+    EXPECT_EQ(f.pendingLeave(), Leave::None);
+    f.request(Leave::Exit, "", &errors);
+    EXPECT_FALSE(f.quitRequested());
+    EXPECT_TRUE(f.confirmLeave(&errors));
+    EXPECT_TRUE(f.quitRequested());
+}
+
+TEST(Editor, SaveAsWritesAFileThatLoadsAndCleans) {
+    Editor e = openEditor(writeFile("src.txt", kScene));
+    e.kick();
+    EXPECT_TRUE(e.document().dirty());
+    std::string out = tempPath("saved-as.txt"), error;
+    ASSERT_TRUE(e.saveAs(out, &error)) << error;
+    EXPECT_FALSE(e.document().dirty());
+    EXPECT_EQ(e.document().path(), out);
+    Scene back;
+    std::vector<std::string> errors;
+    ASSERT_TRUE(loadScene(out, &back, &errors));
+    EXPECT_EQ(back, e.scene());
+}
+
+TEST(Editor, SaveWithoutAFileAsksForSaveAs) {
+    Editor e;
+    std::vector<std::string> errors;
+    e.request(Leave::NewScene, "", &errors);
+    std::string error;
+    EXPECT_FALSE(e.save(&error));
+    EXPECT_NE(error.find("Save As"), std::string::npos);
+}
+
+TEST(Editor, ASimulationRunIsOneUndoStep) {
+    Editor e = openEditor(writeFile("run.txt", kScene));
+    const glm::vec3 start = e.scene().objects[0].pos;
+    e.togglePlay();
+    for (int i = 0; i < 30; ++i) e.frame(1.0 / 60);
+    EXPECT_LT(e.scene().objects[0].pos.y, start.y);  // it fell
+    e.togglePlay();
+    EXPECT_TRUE(e.document().dirty());
+    EXPECT_EQ(e.document().history().undoLabel(), "Simulation run");
+    ASSERT_TRUE(e.undo());
+    EXPECT_EQ(e.scene().objects[0].pos, start);
+    EXPECT_FALSE(e.document().dirty());
+    ASSERT_TRUE(e.redo());
+    EXPECT_LT(e.scene().objects[0].pos.y, start.y);
+}
+
+TEST(Editor, AnEditWhilePlayingSplitsTheRun) {
+    Editor e = openEditor(writeFile("split.txt", kScene));
+    e.togglePlay();
+    for (int i = 0; i < 10; ++i) e.frame(1.0 / 60);
+    e.edit("Gravity", [](Scene& s) { s.world.gravity = 1; });
+    for (int i = 0; i < 10; ++i) e.frame(1.0 / 60);
+    e.togglePlay();
+    EXPECT_EQ(e.document().history().size(), 3u);  // run, edit, run
+    e.undo();
+    EXPECT_EQ(e.document().history().undoLabel(), "Gravity");
+    EXPECT_EQ(e.scene().world.gravity, 1.0f);
+}
+
+TEST(Editor, ResetReturnsToWhenPlayWasPressed) {
+    Editor e = openEditor(writeFile("reset.txt", kScene));
+    const Scene start = e.scene();
+    e.togglePlay();
+    for (int i = 0; i < 20; ++i) e.frame(1.0 / 60);
+    e.resetSimulation();
+    EXPECT_FALSE(e.simulation().playing());
+    EXPECT_EQ(e.scene(), start);
+    e.undo();  // undo the reset: back to where the run got to
+    EXPECT_NE(e.scene().objects[0].pos, start.objects[0].pos);
+}
+
+TEST(Editor, StepIsOneFixedStep) {
+    Editor e = openEditor(writeFile("step.txt", kScene));
+    Scene expected = e.scene();
+    simulate(expected, e.simulation().settings().dt);
+    e.step();
+    EXPECT_EQ(e.scene().objects[0].pos, expected.objects[0].pos);
+    EXPECT_EQ(e.document().history().undoLabel(), "Simulation step");
+}
+
+TEST(Editor, FramesOfAnyLengthMatchTheFixedStepSimulation) {
+    // The accumulator turns uneven frames into whole steps: 0.5 s in frames of 7, 23 and 13 ms
+    // ends exactly where simulate() ends after the same number of steps.
+    Editor e = openEditor(writeFile("frames.txt", kScene));
+    Scene expected = e.scene();
+    e.togglePlay();
+    const double frames[] = {0.007, 0.023, 0.013};
+    double total = 0;
+    for (int i = 0; total + 0.023 < 0.5; ++i) {
+        e.frame(frames[i % 3]);
+        total += frames[i % 3];
+    }
+    e.togglePlay();
+    simulate(expected, std::floor(total / e.simulation().settings().dt + 1e-9) *
+                           e.simulation().settings().dt);
+    EXPECT_EQ(e.scene().objects[0].pos, expected.objects[0].pos);
+}
+
+TEST(Editor, SelectionSurvivesDeletesAndUndo) {
+    Editor e = openEditor(writeFile("sel.txt", kScene));
+    e.select(ItemKind::Object, 1);
+    std::string why;
+    ASSERT_TRUE(e.remove(ItemKind::Object, 0, &why));
+    EXPECT_EQ(e.selection().object(), 0);  // the box moved down the list
+    ASSERT_TRUE(e.removeSelected(&why));
+    EXPECT_TRUE(e.selection().empty());
+    EXPECT_TRUE(e.scene().objects.empty());
+    e.undo();
+    e.undo();
+    EXPECT_EQ(e.scene().objects.size(), 2u);
+}
+
+TEST(Editor, PickSelectsTheObjectUnderTheMouse) {
+    Editor e = openEditor(writeFile("pick.txt", kScene));
+    e.view() = Camera{{0, 3, -6}, {0, 3, 0}, 50};
+    EXPECT_EQ(e.pick({320.5f, 180.5f}, {640, 360}), 0);  // the sphere straight ahead
+    EXPECT_EQ(e.selection().object(), 0);
+    EXPECT_EQ(e.pick({320.5f, 350.5f}, {640, 360}), -1);  // sky above
+    EXPECT_TRUE(e.selection().empty());
+    EXPECT_FALSE(e.document().dirty());  // picking and looking are no edits
+}
+
+TEST(Editor, AddAndDuplicateSelectTheNewItem) {
+    Editor e = openEditor(writeFile("add.txt", kScene));
+    std::string why;
+    ASSERT_TRUE(e.add(ItemKind::Light, &why));
+    EXPECT_TRUE(e.selection().is(ItemKind::Light, 0));
+    ASSERT_TRUE(e.duplicate(ItemKind::Object, 1, &why));
+    EXPECT_TRUE(e.selection().is(ItemKind::Object, 2));
+    e.clear(ItemKind::Object);
+    EXPECT_TRUE(e.selection().empty());
+    EXPECT_EQ(e.document().history().undoLabel(), "Clear objects");
+}

@@ -1,0 +1,118 @@
+// test_scene_edit.cpp — Edit menu commands keep the scene loadable.
+#include "marchbox/editor/scene_edit.h"
+#include "marchbox/editor/selection.h"
+#include "marchbox/scene_io.h"
+
+#include <gtest/gtest.h>
+
+using namespace mb;
+
+// What saving and loading would say about the scene: empty when it loads.
+static std::string problems(const Scene& s) {
+    Scene back;
+    std::vector<SceneError> errors;
+    if (parseScene(formatScene(s), &back, &errors)) return "";
+    return errors.front().message;
+}
+
+static Scene threeMaterials() {
+    Scene s;
+    std::string why;
+    for (int i = 0; i < 3; ++i) addItem(s, ItemKind::Material, &why);
+    for (int m = 0; m < 3; ++m) {
+        Object o;
+        o.material = m;
+        s.objects.push_back(o);
+    }
+    return s;
+}
+
+TEST(SceneEdit, AddingAnObjectBringsAMaterial) {
+    Scene s;
+    std::string why;
+    EXPECT_EQ(addItem(s, ItemKind::Object, &why), 0);
+    EXPECT_EQ(s.materials.size(), 1u);
+    EXPECT_EQ(problems(s), "");
+}
+
+TEST(SceneEdit, NewSceneLoads) {
+    Scene s = newScene();
+    EXPECT_EQ(problems(s), "");
+    EXPECT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(s.lights.size(), 1u);
+}
+
+TEST(SceneEdit, DeletingAMaterialRenumbersObjects) {
+    Scene s = threeMaterials();
+    std::string why;
+    ASSERT_TRUE(deleteItem(s, ItemKind::Material, 1, &why));
+    EXPECT_EQ(s.objects[0].material, 0);
+    EXPECT_EQ(s.objects[1].material, 0);  // used the deleted one
+    EXPECT_EQ(s.objects[2].material, 1);
+    EXPECT_EQ(problems(s), "");
+}
+
+TEST(SceneEdit, LastMaterialStaysWhileObjectsNeedIt) {
+    Scene s;
+    std::string why;
+    addItem(s, ItemKind::Object, &why);
+    EXPECT_FALSE(deleteItem(s, ItemKind::Material, 0, &why));
+    EXPECT_EQ(why, "the objects need at least one material");
+    clearItems(s, ItemKind::Material);
+    EXPECT_EQ(s.materials.size(), 1u);
+    EXPECT_EQ(problems(s), "");
+}
+
+TEST(SceneEdit, ListsStopAtTheirLimits) {
+    Scene s;
+    std::string why;
+    for (int i = 0; i < kMaxLights; ++i) ASSERT_GE(addItem(s, ItemKind::Light, &why), 0);
+    EXPECT_EQ(addItem(s, ItemKind::Light, &why), -1);
+    EXPECT_EQ(why, "a scene holds at most 16 lights");
+    EXPECT_EQ(duplicateItem(s, ItemKind::Light, 0, &why), -1);
+    EXPECT_EQ(int(s.lights.size()), kMaxLights);
+}
+
+TEST(SceneEdit, DuplicateAppendsAMovedCopy) {
+    Scene s = newScene();
+    std::string why;
+    int copy = duplicateItem(s, ItemKind::Object, 0, &why);
+    ASSERT_EQ(copy, 1);
+    EXPECT_EQ(s.objects[1].pos, s.objects[0].pos + glm::vec3(1, 0, 0));
+    EXPECT_EQ(duplicateItem(s, ItemKind::Object, 7, &why), -1);
+    EXPECT_EQ(why, "no object 7");
+}
+
+TEST(SceneEdit, RandomVelocitiesTouchOnlyDynamicSpheres) {
+    Scene s = threeMaterials();
+    s.objects[1].isStatic = true;
+    s.objects[2].type = ShapeType::Box;
+    EXPECT_EQ(randomizeVelocities(s, 1), 1);
+    EXPECT_NE(s.objects[0].vel, glm::vec3(0.0f));
+    EXPECT_EQ(s.objects[1].vel, glm::vec3(0.0f));
+    Scene again = threeMaterials();
+    again.objects[1].isStatic = true;
+    again.objects[2].type = ShapeType::Box;
+    randomizeVelocities(again, 1);
+    EXPECT_EQ(again.objects[0].vel, s.objects[0].vel);  // seeded: repeatable
+}
+
+TEST(Selection, FollowsItsItemThroughDeletes) {
+    Selection sel{ItemKind::Object, 3};
+    selectionAfterDelete(sel, ItemKind::Material, 0);
+    EXPECT_EQ(sel.index, 3);
+    selectionAfterDelete(sel, ItemKind::Object, 1);
+    EXPECT_EQ(sel.index, 2);
+    selectionAfterDelete(sel, ItemKind::Object, 2);
+    EXPECT_TRUE(sel.empty());
+}
+
+TEST(Selection, ClampsToTheList) {
+    Scene s = newScene();
+    Selection sel{ItemKind::Light, 4};
+    selectionClamp(sel, s);
+    EXPECT_TRUE(sel.empty());
+    sel = {ItemKind::Object, 0};
+    selectionClamp(sel, s);
+    EXPECT_EQ(sel.object(), 0);
+}
