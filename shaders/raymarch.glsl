@@ -7,7 +7,7 @@ vec3 castRay(vec3 ro, vec3 rd) {
 #if UBER
         if (i >= uSteps) break;
 #endif
-        vec2 h = map(ro + rd * t);
+        vec3 h = mapAlong(ro + rd * t, rd);
         // Inside a surface (the camera in an object) counts as a hit at once.
         if (h.x < uEpsilon) return vec3(t, h.y, float(i + 1));
         t += h.x;
@@ -34,7 +34,7 @@ const int SHADOW_STEPS = MAX_STEPS < 128 ? MAX_STEPS : 128;
 float hardShadow(vec3 ro, vec3 rd, float maxT) {
     float t = 0.0;
     for (int i = 0; i < SHADOW_STEPS; ++i) {
-        float h = map(ro + rd * t).x;
+        float h = mapAlong(ro + rd * t, rd).x;
         if (h < uEpsilon) return 0.0;
         t += h;
         if (t > maxT) break;
@@ -50,13 +50,14 @@ float softShadow(vec3 ro, vec3 rd, float maxT) {
     const float k = 8.0;
     float res = 1.0, t = 0.0, ph = 1e10;
     for (int i = 0; i < SHADOW_STEPS; ++i) {
-        float h = map(ro + rd * t).x;
-        if (h < uEpsilon) return 0.0;
+        vec3 m = mapAlong(ro + rd * t, rd);
+        if (m.x < uEpsilon) return 0.0;
+        float h = m.z;
         float y = h * h / (2.0 * ph);
         float d = sqrt(max(h * h - y * y, 0.0));
         res = min(res, k * d / max(1e-6, t - y));
         ph = h;
-        t += h;
+        t += m.x;
         if (t > maxT) break;
     }
     res = clamp(res, 0.0, 1.0);

@@ -24,6 +24,14 @@ layout(std140) uniform Objects { Object uObjects[NUM_OBJECTS > 0 ? NUM_OBJECTS :
 layout(std140) uniform Materials { Material uMaterials[NUM_MATERIALS > 0 ? NUM_MATERIALS : 1]; };
 layout(std140) uniform Lights { Light uLights[NUM_POINT_LIGHTS + NUM_DIR_LIGHTS > 0 ? NUM_POINT_LIGHTS + NUM_DIR_LIGHTS : 1]; };
 
+#if USE_GRID
+uniform usamplerBuffer uGridCells;  // cells + 1 offsets into uGridItems
+uniform usamplerBuffer uGridItems;  // object indices, file order within a cell
+uniform vec3 uGridOrigin;
+uniform vec3 uGridCell;
+uniform ivec3 uGridDims;
+#endif
+
 uniform vec3 uCamPos;
 uniform vec3 uCamRight;     // scaled by tan(fov/2)
 uniform vec3 uCamUp;        // scaled by tan(fov/2)
@@ -36,7 +44,7 @@ uniform float uFog;
 
 #if UBER
 uniform int uObjectCount, uPointLights, uDirLights, uSteps, uShadows, uReflections, uAA;
-uniform bool uGround, uAo;
+uniform bool uGround, uAo, uUseGrid;
 #define OBJECT_COUNT uObjectCount
 #define POINT_LIGHTS uPointLights
 #define DIR_LIGHTS uDirLights

@@ -20,36 +20,113 @@ float sdObjectLocal(int i, vec3 q) {
     return 1e10;
 }
 
+// Joins object i to the chain so far (x: distance, y: surface's object index).
+vec2 chainStep(vec2 res, int i, vec3 p) {
+    int op = uObjects[i].info.y;
+    float k = uObjects[i].shape.z;
+    vec3 rel = p - uObjects[i].posBound.xyz;
+    // dObj >= bound: union and subtract keep their value when the object is k beyond it.
+    float bound = length(rel) - uObjects[i].posBound.w;
+    if (op == 0 && bound >= res.x + k) return res;
+#if HAS_SUBTRACT
+    if (op == 1 && bound >= k - res.x) return res;
+#endif
+    float d = sdObjectLocal(i, uObjects[i].toLocal * rel);
+    vec2 r = opUnion(res.x, d, k);
+#if HAS_SUBTRACT
+    if (op == 1) r = opSubtract(res.x, d, k);
+#endif
+#if HAS_INTERSECT
+    if (op == 2) r = opIntersect(res.x, d, k);
+#endif
+    return vec2(r.x, r.y > 0.5 ? float(i) : res.y);
+}
+
+#if !USE_GRID || UBER
 // x: distance; y: index of the surface's object, -1 ground, -2 nothing.
 vec2 mapObjects(vec3 p) {
     vec2 res = vec2(1e10, -2.0);
-    for (int i = 0; i < OBJECT_COUNT; ++i) {
-        int op = uObjects[i].info.y;
-        float k = uObjects[i].shape.z;
-        vec3 rel = p - uObjects[i].posBound.xyz;
-        // dObj >= bound: union and subtract keep their value when the object is k beyond it.
-        float bound = length(rel) - uObjects[i].posBound.w;
-        if (op == 0 && bound >= res.x + k) continue;
-#if HAS_SUBTRACT
-        if (op == 1 && bound >= k - res.x) continue;
+    for (int i = 0; i < OBJECT_COUNT; ++i) res = chainStep(res, i, p);
+    return res;
+}
 #endif
-        float d = sdObjectLocal(i, uObjects[i].toLocal * rel);
-        vec2 r = opUnion(res.x, d, k);
-#if HAS_SUBTRACT
-        if (op == 1) r = opSubtract(res.x, d, k);
-#endif
-#if HAS_INTERSECT
-        if (op == 2) r = opIntersect(res.x, d, k);
-#endif
-        res = vec2(r.x, r.y > 0.5 ? float(i) : res.y);
-    }
+
+#if USE_GRID
+// The uniform object grid of src/core/object_grid.cpp: each cell lists, in file order, the
+// objects that can change the chain inside it; every other object lies beyond its boundary.
+vec3 gridLo() { return uGridOrigin; }
+vec3 gridHi() { return uGridOrigin + vec3(uGridDims) * uGridCell; }
+
+ivec3 gridCellOf(vec3 p) {
+    return clamp(ivec3(floor((p - uGridOrigin) / uGridCell)), ivec3(0), uGridDims - 1);
+}
+
+vec2 mapCell(ivec3 c, vec3 p) {
+    int cell = (c.z * uGridDims.y + c.y) * uGridDims.x + c.x;
+    int first = int(texelFetch(uGridCells, cell).r), last = int(texelFetch(uGridCells, cell + 1).r);
+    vec2 res = vec2(1e10, -2.0);
+    for (int k = first; k < last; ++k) res = chainStep(res, int(texelFetch(uGridItems, k).r), p);
     return res;
 }
 
-vec2 map(vec3 p) {
-    vec2 res = mapObjects(p);
+float gridBoxDistance(vec3 p) {  // exact box distance (sdBox), here for every scene
+    vec3 q = abs(p - 0.5 * (gridLo() + gridHi())) - 0.5 * (gridHi() - gridLo());
+    return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);
+}
+
+vec2 mapGrid(vec3 p) {
+    float outside = gridBoxDistance(p);
+    return outside > 0.0 ? vec2(outside, -2.0) : mapCell(gridCellOf(p), p);
+}
+
+// x: a safe step along rd; y: the object; z: the cell's own distance, for penumbrae. The step
+// ends just past the cell's exit, since what lies beyond is at least that far; the extra
+// `bump` (over 2 epsilon) carries the ray into the next cell without counting as a hit.
+vec3 mapGridAlong(vec3 p, vec3 rd) {
+    float bump = max(2.0 * uEpsilon, 1e-4 * min(uGridCell.x, min(uGridCell.y, uGridCell.z)));
+    float outside = gridBoxDistance(p);
+    if (outside > 0.0) return vec3(outside + bump, -2.0, 1e10);
+    ivec3 c = gridCellOf(p);
+    vec2 res = mapCell(c, p);
+    vec3 lo = uGridOrigin + vec3(c) * uGridCell;
+    vec3 safeRd = vec3(rd.x >= 0.0 ? 1.0 : -1.0, rd.y >= 0.0 ? 1.0 : -1.0, rd.z >= 0.0 ? 1.0 : -1.0) * max(abs(rd), vec3(1e-8));
+    vec3 tExit = (lo + step(0.0, rd) * uGridCell - p) / safeRd;
+    float exit = max(min(tExit.x, min(tExit.y, tExit.z)), 0.0) + bump;
+    return exit < res.x ? vec3(exit, -2.0, res.x) : vec3(res, res.x);
+}
+#endif
+
+vec2 withGround(vec2 res, vec3 p) {
 #if HAS_GROUND
     if (GROUND_ON && p.y - uFloor < res.x) res = vec2(p.y - uFloor, -1.0);
 #endif
     return res;
 }
+
+#if USE_GRID && !UBER
+vec2 map(vec3 p) { return withGround(mapGrid(p), p); }
+
+// Like map, for stepping along rd; z is the true distance, for penumbrae.
+vec3 mapAlong(vec3 p, vec3 rd) {
+    vec3 g = mapGridAlong(p, rd);
+    return vec3(withGround(g.xy, p), withGround(vec2(g.z, -2.0), p).x);
+}
+#else
+vec2 map(vec3 p) {
+#if USE_GRID
+    if (uUseGrid) return withGround(mapGrid(p), p);
+#endif
+    return withGround(mapObjects(p), p);
+}
+
+vec3 mapAlong(vec3 p, vec3 rd) {
+#if USE_GRID
+    if (uUseGrid) {
+        vec3 g = mapGridAlong(p, rd);
+        return vec3(withGround(g.xy, p), withGround(vec2(g.z, -2.0), p).x);
+    }
+#endif
+    vec2 res = map(p);
+    return vec3(res, res.x);
+}
+#endif

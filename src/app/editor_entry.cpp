@@ -31,9 +31,11 @@ static int renderPreview(const std::string& scenePath) {
         for (const std::string& e : errors) std::cerr << e << '\n';
         return kExitBadInput;
     }
-    std::string out = std::filesystem::path(scenePath).stem().string() + "-preview.png", error;
-    std::filesystem::path absolute = std::filesystem::absolute(out);
-    std::cout << "no display: rendering " << scenePath << " to " << absolute.string() << " instead\n";
+    // Beside the executable (build/), so a preview never litters the scene's folder.
+    std::filesystem::path dir = std::filesystem::read_symlink("/proc/self/exe").parent_path();
+    std::string out = (dir / (std::filesystem::path(scenePath).stem().string() + "-preview.png")).string();
+    std::string error;
+    std::cout << "no display: rendering " << scenePath << " to " << out << " instead\n";
     Image img;
     if (!renderOffscreen(scene, RenderOptions{}, 640, 360, &img, &error)) {
         std::cerr << "cannot render: " << error << '\n';

@@ -4,12 +4,15 @@
 #include "marchbox/camera.h"
 #include "marchbox/gl/gpu_scene.h"
 #include "marchbox/gl/offscreen_context.h"
+#include "marchbox/object_grid.h"
+#include "marchbox/sdf.h"
 
 #include <algorithm>
 
 namespace mb {
 
 enum BindingPoint : GLuint { kObjectsBinding = 0, kMaterialsBinding = 1, kLightsBinding = 2 };
+enum TextureUnit : GLuint { kGridCellsUnit = 0, kGridItemsUnit = 1 };
 
 bool Renderer::init(std::string* error) {
     const float corners[] = {-1, -1, 1, -1, 1, 1, -1, 1};
@@ -73,13 +76,7 @@ void Renderer::upload(const Scene& scene, const ShaderFeatures& f) {
         uploadPadded(objects_, g.objects, f.objects, kObjectsBinding);
     }
     uploadPadded(materials_, g.materials, f.materials, kMaterialsBinding);
-    std::vector<GpuLight> lights = g.lights;
-    if (f.uber) {  // the uber shader keeps directional lights after all point-light slots
-        lights.assign(size_t(f.pointLights + f.dirLights), GpuLight{});
-        std::copy_n(g.lights.begin(), g.pointLights, lights.begin());
-        std::copy_n(g.lights.begin() + g.pointLights, g.dirLights, lights.begin() + f.pointLights);
-    }
-    uploadPadded(lights_, lights, f.pointLights + f.dirLights, kLightsBinding);
+    uploadPadded(lights_, g.lights, f.pointLights + f.dirLights, kLightsBinding);
 }
 
 static void setUniform(const Program& p, const char* name, glm::vec3 v) {
@@ -100,6 +97,20 @@ static void setCamera(const Program& p, const Camera& c) {
     setUniform(p, "uCamUp", b.up);
 }
 
+void Renderer::uploadGrid(const Scene& scene) {
+    ObjectGrid grid = buildObjectGrid(makeSceneSdf(scene));
+    gridCells_.upload(grid.cellStart.data(), grid.cellStart.size());
+    gridItems_.upload(grid.items.data(), grid.items.size());
+    gridCells_.bind(kGridCellsUnit);
+    gridItems_.bind(kGridItemsUnit);
+    const Program& p = *current_;
+    setUniform(p, "uGridCells", int(kGridCellsUnit));
+    setUniform(p, "uGridItems", int(kGridItemsUnit));
+    setUniform(p, "uGridOrigin", grid.origin);
+    setUniform(p, "uGridCell", grid.cellSize);
+    if (GLint loc = p.uniform("uGridDims"); loc >= 0) glUniform3i(loc, grid.dims.x, grid.dims.y, grid.dims.z);
+}
+
 void Renderer::setUniforms(const Scene& scene, const ShaderFeatures& f) {
     const Program& p = *current_;
     glUseProgram(p.id());
@@ -108,7 +119,10 @@ void Renderer::setUniforms(const Scene& scene, const ShaderFeatures& f) {
     setUniform(p, "uMaxDist", maxRayDistance(scene));
     setUniform(p, "uFloor", scene.world.floor);
     setUniform(p, "uFog", scene.render.fog);
+    bool useGrid = int(scene.objects.size()) > kGridMinObjects;
+    if (f.grid && useGrid) uploadGrid(scene);
     if (!f.uber) return;
+    setUniform(p, "uUseGrid", int(useGrid));
     GpuScene counts = packScene(scene);
     setUniform(p, "uObjectCount", int(scene.objects.size()));
     setUniform(p, "uPointLights", counts.pointLights);

@@ -1,12 +1,15 @@
 // shader_source.cpp — from a scene's feature set to the #defines of its fragment shader.
 #include "marchbox/gl/shader_source.h"
 
+#include "marchbox/gl/glsl_conditionals.h"
 #include "marchbox/gl/gpu_scene.h"
 #include "marchbox/gl/shader.h"
 
 #include <algorithm>
 #include <cstring>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace mb {
 
@@ -30,7 +33,7 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const {
            materials == o.materials && pointLights == o.pointLights && dirLights == o.dirLights &&
            ground == o.ground && steps == o.steps && shadows == o.shadows &&
            reflections == o.reflections && fog == o.fog && ao == o.ao && aa == o.aa &&
-           objectsInStorage == o.objectsInStorage;
+           objectsInStorage == o.objectsInStorage && grid == o.grid;
 }
 
 static bool anyMirror(const Scene& s) {
@@ -51,6 +54,7 @@ static ShaderFeatures uberFeatures(RenderMode mode, int uniformObjects) {
     f.reflections = 8;
     f.fog = f.ao = true;
     f.aa = 4;
+    f.grid = true;
     return f;
 }
 
@@ -68,6 +72,7 @@ ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int ma
     }
     f.objects = int(s.objects.size());
     f.objectsInStorage = f.objects > uniformObjects;
+    f.grid = f.objects > kGridMinObjects;
     f.materials = int(s.materials.size());
     for (const Light& l : s.lights) (l.directional ? f.dirLights : f.pointLights)++;
     f.ground = s.world.ground;
@@ -80,37 +85,39 @@ ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int ma
     return f;
 }
 
+// The macros in the order the prefix lists them.
+static std::vector<std::pair<const char*, long>> featureDefines(const ShaderFeatures& f) {
+    std::vector<std::pair<const char*, long>> d = {{"UBER", f.uber}, {"MODE", long(f.mode)}};
+    static const char* shapeDefs[kShapeTypeCount] = {"HAS_SPHERE", "HAS_BOX", "HAS_TORUS",
+                                                     "HAS_CAPSULE", "HAS_CYLINDER"};
+    for (int i = 0; i < kShapeTypeCount; ++i) d.push_back({shapeDefs[i], (f.shapes >> i) & 1});
+    d.insert(d.end(), {{"HAS_SUBTRACT", f.subtract}, {"HAS_INTERSECT", f.intersect},
+                       {"HAS_BLEND", f.blend}, {"NUM_OBJECTS", f.objects},
+                       {"NUM_MATERIALS", f.materials}, {"NUM_POINT_LIGHTS", f.pointLights},
+                       {"NUM_DIR_LIGHTS", f.dirLights}, {"OBJECTS_IN_STORAGE", f.objectsInStorage},
+                       {"HAS_GROUND", f.ground}, {"MAX_STEPS", f.steps}, {"SHADOWS", f.shadows},
+                       {"REFLECTIONS", f.reflections}, {"HAS_FOG", f.fog}, {"HAS_AO", f.ao},
+                       {"AA", f.aa}, {"USE_GRID", f.grid}});
+    return d;
+}
+
 std::string shaderPrefix(const ShaderFeatures& f) {
     std::ostringstream o;
     o << (f.objectsInStorage ? "#version 430 core\n" : "#version 330 core\n");
-    auto def = [&](const char* name, int value) { o << "#define " << name << ' ' << value << '\n'; };
-    def("UBER", f.uber);
-    def("MODE", int(f.mode));
-    static const char* shapeDefs[kShapeTypeCount] = {"HAS_SPHERE", "HAS_BOX", "HAS_TORUS",
-                                                     "HAS_CAPSULE", "HAS_CYLINDER"};
-    for (int i = 0; i < kShapeTypeCount; ++i) def(shapeDefs[i], (f.shapes >> i) & 1);
-    def("HAS_SUBTRACT", f.subtract);
-    def("HAS_INTERSECT", f.intersect);
-    def("HAS_BLEND", f.blend);
-    def("NUM_OBJECTS", f.objects);
-    def("NUM_MATERIALS", f.materials);
-    def("NUM_POINT_LIGHTS", f.pointLights);
-    def("NUM_DIR_LIGHTS", f.dirLights);
-    def("OBJECTS_IN_STORAGE", f.objectsInStorage);
-    def("HAS_GROUND", f.ground);
-    def("MAX_STEPS", f.steps);
-    def("SHADOWS", f.shadows);
-    def("REFLECTIONS", f.reflections);
-    def("HAS_FOG", f.fog);
-    def("HAS_AO", f.ao);
-    def("AA", f.aa);
+    for (const auto& [name, value] : featureDefines(f)) o << "#define " << name << ' ' << value << '\n';
     return o.str();
 }
 
 bool fragmentSource(const ShaderFeatures& f, std::string* out, std::string* error) {
-    std::string body;
+    std::string body, resolved;
     if (!readShaderSource(shaderDir() + "/march.frag", &body, error)) return false;
-    *out = shaderPrefix(f) + body;
+    auto list = featureDefines(f);
+    Defines defines(list.begin(), list.end());
+    if (!resolveConditionals(body, defines, &resolved, error)) {
+        *error = "march.frag: " + *error;
+        return false;
+    }
+    *out = shaderPrefix(f) + resolved;
     return true;
 }
 

@@ -55,5 +55,5 @@ TEST_P(Agreement, CpuAndGpuHitTheSameObject) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Agreement,
-                         ::testing::Values("primitives", "csg", "default", "lights", "legacy"),
+                         ::testing::Values("primitives", "csg", "default", "lights", "legacy", "pile"),
                          [](const auto& info) { return std::string(info.param); });

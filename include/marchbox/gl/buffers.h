@@ -4,6 +4,7 @@
 #include "marchbox/gl/gl.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 
 namespace mb {
@@ -52,6 +53,40 @@ public:
 class StorageBuffer : public Buffer<GL_SHADER_STORAGE_BUFFER> {
 public:
     void bindBase(GLuint point) const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, point, id()); }
+};
+
+// A buffer read by shaders as a usamplerBuffer of 32-bit unsigned integers.
+class TextureBuffer {
+public:
+    TextureBuffer() = default;
+    ~TextureBuffer() {
+        if (texture_) glDeleteTextures(1, &texture_);
+    }
+    TextureBuffer(TextureBuffer&& o) noexcept
+        : buffer_(std::move(o.buffer_)), texture_(std::exchange(o.texture_, 0)) {}
+    TextureBuffer& operator=(TextureBuffer&& o) noexcept {
+        std::swap(buffer_, o.buffer_);
+        std::swap(texture_, o.texture_);
+        return *this;
+    }
+    TextureBuffer(const TextureBuffer&) = delete;
+    TextureBuffer& operator=(const TextureBuffer&) = delete;
+
+    void upload(const uint32_t* data, size_t count) {
+        uint32_t none = 0;  // a zero-sized buffer texture is not complete
+        buffer_.upload(count ? data : &none, (count ? count : 1) * sizeof(uint32_t), GL_DYNAMIC_DRAW);
+        if (!texture_) glGenTextures(1, &texture_);
+        glBindTexture(GL_TEXTURE_BUFFER, texture_);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_R32UI, buffer_.id());
+    }
+    void bind(GLuint unit) const {
+        glActiveTexture(GL_TEXTURE0 + unit);
+        glBindTexture(GL_TEXTURE_BUFFER, texture_);
+    }
+
+private:
+    Buffer<GL_TEXTURE_BUFFER> buffer_;
+    GLuint texture_ = 0;
 };
 
 class VertexArray {

@@ -3,7 +3,8 @@
 // GLEW loads every entry point past OpenGL 1.1 through glXGetProcAddressARB. The 1.1 functions
 // it leaves to the linker; here they go through pointers too, loaded the same way, because the
 // off-screen path loads OSMesa privately (dlopen, RTLD_LOCAL) and a linked libGL would send
-// them to a window system that has no current context.
+// them to a window system that has no current context. marchbox_gl does not link libGL, so
+// a 1.1 function missing here fails to link in gl_tests instead of drawing nothing.
 #pragma once
 
 #include <GL/glew.h>
@@ -26,6 +27,13 @@ struct Gl11 {
     const GLubyte*(GLAPIENTRY* GetString)(GLenum);
     GLenum(GLAPIENTRY* GetError)();
     void(GLAPIENTRY* Finish)();
+    void(GLAPIENTRY* GenTextures)(GLsizei, GLuint*);
+    void(GLAPIENTRY* DeleteTextures)(GLsizei, const GLuint*);
+    void(GLAPIENTRY* BindTexture)(GLenum, GLuint);
+    void(GLAPIENTRY* TexImage2D)(GLenum, GLint, GLint, GLsizei, GLsizei, GLint, GLenum, GLenum, const void*);
+    void(GLAPIENTRY* TexParameteri)(GLenum, GLenum, GLint);
+    void(GLAPIENTRY* DrawArrays)(GLenum, GLint, GLsizei);
+    void(GLAPIENTRY* BlendFunc)(GLenum, GLenum);
 };
 extern Gl11 gl11;
 
@@ -48,3 +56,10 @@ bool loadGl(bool offscreen, std::string* error);
 #define glGetString mb::gl11.GetString
 #define glGetError mb::gl11.GetError
 #define glFinish mb::gl11.Finish
+#define glGenTextures mb::gl11.GenTextures
+#define glDeleteTextures mb::gl11.DeleteTextures
+#define glBindTexture mb::gl11.BindTexture
+#define glTexImage2D mb::gl11.TexImage2D
+#define glTexParameteri mb::gl11.TexParameteri
+#define glDrawArrays mb::gl11.DrawArrays
+#define glBlendFunc mb::gl11.BlendFunc

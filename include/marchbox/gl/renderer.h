@@ -43,6 +43,7 @@ private:
     Program* programFor(const ShaderFeatures& f, std::string* error);
     void upload(const Scene& scene, const ShaderFeatures& f);
     void setUniforms(const Scene& scene, const ShaderFeatures& f);
+    void uploadGrid(const Scene& scene);
 
     std::vector<Cached> cache_;
     Program* current_ = nullptr;
@@ -52,6 +53,7 @@ private:
     IndexBuffer quadIndices_;
     UniformBuffer objects_, materials_, lights_;
     StorageBuffer objectStore_;
+    TextureBuffer gridCells_, gridItems_;
     int maxUniformBlock_ = 16384;
 };
 

@@ -30,9 +30,14 @@ struct ShaderFeatures {
     bool fog = false, ao = false;
     int aa = 1;
     bool objectsInStorage = false;  // past the uniform-block limit objects go in an SSBO
+    bool grid = false;              // steps visit one cell of the object grid, not every object
 
     bool operator==(const ShaderFeatures& o) const;
 };
+
+// Above this many objects a step looks only at its grid cell. Below it the whole list is cheaper
+// than the cell lookups (docs/render-report.md).
+constexpr int kGridMinObjects = 8;
 
 // maxUniformBlockBytes is GL_MAX_UNIFORM_BLOCK_SIZE; 0 means "assume the GL minimum, 16 KiB".
 ShaderFeatures shaderFeatures(const Scene& scene, RenderMode mode, bool uber,
