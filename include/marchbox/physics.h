@@ -98,6 +98,8 @@ private:
     struct Impl;  // static colliders, broad phase, contacts: see src/core/physics_world.cpp
     void collide();                  // this step's contacts, warm started from the last step
     void collideStatic(int body);
+    void orderAndWarmStart();        // bottom-up solve order; impulses of persisting contacts
+    void keepImpulses();             // for the next step's warm start
     void integrateVelocities(double h);
     void integratePositions(double h);
     void sweepFast();                // continuous collision against static surfaces

@@ -2,13 +2,14 @@
 //
 // Each builds a whole Scene: the analytic cases (free fall, bounce, collisions, slide to roll)
 // and the stiff and extreme ones (stacks, piles, gas, tunnelling). Randomness is a fixed LCG, so
-// every build gives the same scene on every platform.
+// every build gives the same scene on every platform. Also the overlap yardstick they share.
 #pragma once
 
 #include "marchbox/scene.h"
 
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <vector>
 
 namespace mb {
 
@@ -31,5 +32,10 @@ Scene tunnelScene(float speed, float angleDegrees);    // at a 2 cm plate, angle
 Scene restingScene(float radius, float x);             // at rest on the ground at x
 Scene pileScene(int count, std::uint32_t seed);        // dropped into a walled bin
 Scene gasScene(int count, std::uint32_t seed);         // elastic, frictionless, in a closed box
+
+// The deepest overlap among spheres (centres, radii) and between them and the scene's static
+// colliders, measured afresh: the same yardstick for this simulator and for Bullet.
+double deepestOverlap(const Scene& scene, const std::vector<glm::dvec3>& centres,
+                      const std::vector<double>& radii);
 
 }  // namespace mb

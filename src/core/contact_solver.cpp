@@ -73,6 +73,8 @@ void solveRolling(Contact& c, PhysicsBody& a, PhysicsBody& b, double resistance)
 // impulse just found, then rolling resistance.
 void solveRows(Contact& c, PhysicsBody& a, PhysicsBody& b, const SolverContext& ctx, bool useBias) {
     solveNormal(c, a, b, ctx, useBias);
+    // A speculative contact that stays open carries no friction: skip the rows that would find 0.
+    if (c.normalImpulse == 0.0 && c.tangentImpulse == dvec3(0.0) && c.rollImpulse == dvec3(0.0)) return;
     solveFriction(c, a, b, ctx.friction);
     solveRolling(c, a, b, ctx.settings.rollingResistance);
 }
@@ -133,6 +135,7 @@ void prepareContacts(SolverContext& ctx) {
 
 void warmStartContacts(SolverContext& ctx) {
     for (Contact& c : ctx.contacts) {
+        if (c.normalImpulse == 0.0 && c.tangentImpulse == dvec3(0.0) && c.rollImpulse == dvec3(0.0)) continue;
         PhysicsBody& a = ctx.bodies[c.a];
         PhysicsBody& b = ctx.bodies[c.b];
         applyImpulse(a, b, c, c.normalImpulse * c.normal + c.tangentImpulse);

@@ -1,7 +1,12 @@
 // physics_scenes.cpp — builders of the physics test and benchmark scenes.
 #include "marchbox/physics_scenes.h"
 
+#include "marchbox/broadphase.h"
+#include "marchbox/static_collider.h"
+
+#include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 
 namespace mb {
 
@@ -162,6 +167,20 @@ Scene gasScene(int count, std::uint32_t seed) {
         s.objects.push_back(dynamicSphere(pos, r, 1.0f, vel));
     }
     return s;
+}
+
+double deepestOverlap(const Scene& scene, const std::vector<glm::dvec3>& centres,
+                      const std::vector<double>& radii) {
+    StaticCollider statics(scene);
+    double deepest = 0.0;
+    for (size_t i = 0; i < centres.size(); ++i)
+        deepest = std::max(deepest, radii[i] - statics.distance(centres[i]));
+    Broadphase broadphase;
+    std::vector<std::pair<int, int>> pairs;
+    broadphase.findPairs(centres, radii, pairs);  // exactly the overlapping pairs
+    for (auto [a, b] : pairs)
+        deepest = std::max(deepest, radii[a] + radii[b] - glm::length(centres[b] - centres[a]));
+    return deepest;
 }
 
 }  // namespace mb

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <glm/geometric.hpp>
 #include <tuple>
 
@@ -22,10 +23,25 @@ struct PhysicsWorld::Impl {
           friction(scene.world.friction),
           restitution(scene.world.restitution) {}
 
+    struct Order {
+        double height;
+        std::uint64_t key;
+        int index;
+        bool operator<(const Order& o) const { return std::tie(height, key) < std::tie(o.height, o.key); }
+    };
+    struct Warm {  // a contact's impulses, kept for the next step
+        std::uint64_t key;
+        double normal;
+        dvec3 tangent, roll;
+        bool operator<(const Warm& o) const { return key < o.key; }
+    };
+
     StaticCollider statics;
     Broadphase broadphase;
     double gravity, friction, restitution;
-    std::vector<Contact> contacts, previous;
+    std::vector<Contact> contacts, sorted;
+    std::vector<Order> order;
+    std::vector<Warm> warm;  // by key
     std::vector<dvec3> centres;
     std::vector<double> extents, margins;
     std::vector<std::pair<int, int>> pairs;
@@ -38,26 +54,11 @@ namespace {
 // Overlap a contact may keep: small against the sphere, so millimetre spheres do not sink.
 double slopFor(double radius, const PhysicsSettings& s) { return std::min(s.linearSlop, 0.05 * radius); }
 
-// Contacts sort by (first dynamic body, other body, feature): the warm-start key.
-auto contactKey(const Contact& c, int staticBody) {
-    return c.a == staticBody ? std::make_tuple(c.b, c.a, c.feature) : std::make_tuple(c.a, c.b, c.feature);
-}
-
-// Carries the impulses of contacts that persist from the last step, matched by key.
-void warmStartFrom(std::vector<Contact>& previous, std::vector<Contact>& contacts, int staticBody) {
-    auto less = [staticBody](const Contact& x, const Contact& y) {
-        return contactKey(x, staticBody) < contactKey(y, staticBody);
-    };
-    std::sort(previous.begin(), previous.end(), less);
-    std::sort(contacts.begin(), contacts.end(), less);
-    auto old = previous.begin();
-    for (Contact& c : contacts) {
-        while (old != previous.end() && less(*old, c)) ++old;
-        if (old == previous.end() || less(c, *old)) continue;
-        c.normalImpulse = old->normalImpulse;
-        c.tangentImpulse = old->tangentImpulse;
-        c.rollImpulse = old->rollImpulse;
-    }
+// Warm-start key: first dynamic body, other body, feature + 1, in 24, 24 and 16 bits.
+std::uint64_t contactKey(const Contact& c, int staticBody) {
+    const bool onStatic = c.a == staticBody;
+    const std::uint64_t first = std::uint64_t(onStatic ? c.b : c.a), second = std::uint64_t(onStatic ? c.a : c.b);
+    return first << 40 | second << 16 | std::uint64_t(c.feature + 1);
 }
 
 double contactHeight(const Contact& c, const std::vector<PhysicsBody>& bodies) {
@@ -135,6 +136,7 @@ void PhysicsWorld::step() {
         for (int i = 0; i < iterations; ++i) solveContacts(ctx, false);
     }
     for (int i = 0; i < settings_.restitutionIterations; ++i) applyRestitution(ctx);
+    keepImpulses();
     if (settings_.continuous) sweepFast();
     updateSleep(bodies_, w.contacts, settings_, w.scratch);
     updateStats();
@@ -147,7 +149,6 @@ void PhysicsWorld::collide() {
     Impl& w = *impl_;
     const int n = bodyCount();
     const double dt = settings_.dt;
-    w.previous.swap(w.contacts);
     w.contacts.clear();
     w.centres.resize(n);
     w.extents.resize(n);
@@ -181,13 +182,38 @@ void PhysicsWorld::collide() {
     }
     for (int i = 0; i < n; ++i)
         if (bodies_[i].awake) collideStatic(i);
-    warmStartFrom(w.previous, w.contacts, n);
-    // Bottom-up, for shock propagation; ties by key, so the order is deterministic.
-    auto lower = [this, n](const Contact& x, const Contact& y) {
-        return std::make_tuple(contactHeight(x, bodies_), contactKey(x, n)) <
-               std::make_tuple(contactHeight(y, bodies_), contactKey(y, n));
-    };
-    std::sort(w.contacts.begin(), w.contacts.end(), lower);
+    orderAndWarmStart();
+}
+
+// Bottom-up, for shock propagation; ties by key, so the order is deterministic. Contacts that
+// persist from the last step start from its impulses.
+void PhysicsWorld::orderAndWarmStart() {
+    Impl& w = *impl_;
+    const int staticBody = bodyCount();
+    w.order.clear();
+    for (size_t i = 0; i < w.contacts.size(); ++i)
+        w.order.push_back({contactHeight(w.contacts[i], bodies_), contactKey(w.contacts[i], staticBody), int(i)});
+    std::sort(w.order.begin(), w.order.end());
+    w.sorted.clear();
+    for (const Impl::Order& o : w.order) {
+        Contact c = w.contacts[size_t(o.index)];
+        auto old = std::lower_bound(w.warm.begin(), w.warm.end(), Impl::Warm{o.key, 0.0, {}, {}});
+        if (old != w.warm.end() && old->key == o.key) {
+            c.normalImpulse = old->normal;
+            c.tangentImpulse = old->tangent;
+            c.rollImpulse = old->roll;
+        }
+        w.sorted.push_back(c);
+    }
+    w.contacts.swap(w.sorted);
+}
+
+void PhysicsWorld::keepImpulses() {
+    Impl& w = *impl_;
+    w.warm.clear();
+    for (const Contact& c : w.contacts)
+        w.warm.push_back({contactKey(c, bodyCount()), c.normalImpulse, c.tangentImpulse, c.rollImpulse});
+    std::sort(w.warm.begin(), w.warm.end());
 }
 
 void PhysicsWorld::collideStatic(int body) {

@@ -1,7 +1,6 @@
 // test_physics_extreme.cpp — stiff and extreme cases: mass ratios, speed, scale, piles, gas.
 #include "marchbox/physics.h"
 #include "marchbox/physics_scenes.h"
-#include "marchbox/static_collider.h"
 #include "physics_test_util.h"
 
 #include <gtest/gtest.h>
@@ -86,20 +85,14 @@ INSTANTIATE_TEST_SUITE_P(PhysicsScales, PhysicsResting,
 
 namespace {
 
-// Deepest overlap in the world, measured afresh: sphere pairs, and each sphere against the
-// static scene through the collider.
 double deepestOverlap(const PhysicsWorld& w, const Scene& scene) {
-    StaticCollider statics(scene);
-    double deepest = 0.0;
+    std::vector<dvec3> centres;
+    std::vector<double> radii;
     for (int i = 0; i < w.bodyCount(); ++i) {
-        const PhysicsBody& a = w.body(i);
-        deepest = std::max(deepest, a.radius - statics.distance(a.pos));
-        for (int j = i + 1; j < w.bodyCount(); ++j) {
-            const PhysicsBody& b = w.body(j);
-            deepest = std::max(deepest, a.radius + b.radius - glm::length(b.pos - a.pos));
-        }
+        centres.push_back(w.body(i).pos);
+        radii.push_back(w.body(i).radius);
     }
-    return deepest;
+    return deepestOverlap(scene, centres, radii);
 }
 
 }  // namespace
