@@ -1,6 +1,40 @@
 // raymarch.glsl — sphere tracing, normals, shadows and occlusion over map().
 
+float hitEpsilon(float t) {
+#if CONE_EPSILON
+    return max(uEpsilon, t * uPixelRadius);  // finer than a pixel cannot be seen
+#else
+    return uEpsilon;
+#endif
+}
+
 // x: distance along rd; y: object index (-1 ground, -2 miss); z: steps taken.
+#if RELAX_PERCENT > 100
+// Over-relaxed sphere tracing (Keinert et al. 2014): steps of omega·d while consecutive
+// unbounding spheres overlap; where they do not, step back and fall to plain tracing.
+vec3 castRay(vec3 ro, vec3 rd) {
+    float t = 0.0, omega = float(RELAX_PERCENT) / 100.0, stepLength = 0.0, prevRadius = 0.0;
+    for (int i = 0; i < MAX_STEPS; ++i) {
+#if UBER
+        if (i >= uSteps) break;
+#endif
+        vec3 h = mapAlong(ro + rd * t, rd);
+        float radius = abs(h.x);
+        bool fail = omega > 1.0 && radius + prevRadius < stepLength;
+        if (fail) {
+            stepLength -= omega * stepLength;
+            omega = 1.0;
+        } else {
+            if (h.x < hitEpsilon(t) && h.y > -1.5) return vec3(t, h.y, float(i + 1));
+            stepLength = h.x * omega;
+        }
+        prevRadius = radius;
+        t += stepLength;
+        if (t > uMaxDist) return vec3(t, -2.0, float(i + 1));
+    }
+    return vec3(t, -2.0, float(MAX_STEPS));
+}
+#else
 vec3 castRay(vec3 ro, vec3 rd) {
     float t = 0.0;
     for (int i = 0; i < MAX_STEPS; ++i) {
@@ -8,13 +42,15 @@ vec3 castRay(vec3 ro, vec3 rd) {
         if (i >= uSteps) break;
 #endif
         vec3 h = mapAlong(ro + rd * t, rd);
-        // Inside a surface (the camera in an object) counts as a hit at once.
-        if (h.x < uEpsilon) return vec3(t, h.y, float(i + 1));
+        // Inside a surface (the camera in an object) counts as a hit at once; a grid cell's
+        // capped step (y = -2) never does.
+        if (h.x < hitEpsilon(t) && h.y > -1.5) return vec3(t, h.y, float(i + 1));
         t += h.x;
         if (t > uMaxDist) return vec3(t, -2.0, float(i + 1));
     }
     return vec3(t, -2.0, float(MAX_STEPS));
 }
+#endif
 
 // Differences far from the origin must span several float ulps of p to stay smooth.
 float normalStep(vec3 p) { return max(0.5 * uEpsilon, 1e-5 * length(p)); }
@@ -27,8 +63,6 @@ vec3 calcNormal(vec3 p) {  // tetrahedron of four samples (Quilez)
     float len = length(n);
     return len > 1e-20 ? n / len : vec3(0.0, 1.0, 0.0);  // flat field (deep inside): no NaN
 }
-
-const int SHADOW_STEPS = MAX_STEPS < 128 ? MAX_STEPS : 128;
 
 #if SHADOWS == 1 || UBER
 float hardShadow(vec3 ro, vec3 rd, float maxT) {
@@ -56,6 +90,7 @@ float softShadow(vec3 ro, vec3 rd, float maxT) {
         float y = h * h / (2.0 * ph);
         float d = sqrt(max(h * h - y * y, 0.0));
         res = min(res, k * d / max(1e-6, t - y));
+        if (res < 0.001) return 0.0;  // fully dark already: the rest of the ray cannot matter
         ph = h;
         t += m.x;
         if (t > maxT) break;

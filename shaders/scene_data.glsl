@@ -38,6 +38,7 @@ uniform vec3 uCamUp;        // scaled by tan(fov/2)
 uniform vec3 uCamForward;
 uniform vec4 uViewport;     // this draw's pixel offset xy in the whole image, image size zw
 uniform float uEpsilon;
+uniform float uPixelRadius;  // half a pixel's footprint per metre along a primary ray
 uniform float uMaxDist;
 uniform float uFloor;
 uniform float uFog;

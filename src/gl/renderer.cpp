@@ -8,6 +8,7 @@
 #include "marchbox/sdf.h"
 
 #include <algorithm>
+#include <glm/geometric.hpp>
 
 namespace mb {
 
@@ -89,8 +90,7 @@ static void setUniform(const Program& p, const char* name, int v) {
     if (GLint loc = p.uniform(name); loc >= 0) glUniform1i(loc, v);
 }
 
-static void setCamera(const Program& p, const Camera& c) {
-    CameraBasis b = cameraBasis(c);
+static void setCamera(const Program& p, const CameraBasis& b) {
     setUniform(p, "uCamPos", b.pos);
     setUniform(p, "uCamForward", b.forward);
     setUniform(p, "uCamRight", b.right);
@@ -114,13 +114,15 @@ void Renderer::uploadGrid(const Scene& scene) {
 void Renderer::setUniforms(const Scene& scene, const ShaderFeatures& f) {
     const Program& p = *current_;
     glUseProgram(p.id());
-    setCamera(p, scene.camera);
+    CameraBasis basis = cameraBasis(scene.camera);
+    setCamera(p, basis);
+    tanHalfFov_ = glm::length(basis.up);
     setUniform(p, "uEpsilon", scene.render.epsilon);
     setUniform(p, "uMaxDist", maxRayDistance(scene));
     setUniform(p, "uFloor", scene.world.floor);
     setUniform(p, "uFog", scene.render.fog);
-    bool useGrid = int(scene.objects.size()) > kGridMinObjects;
-    if (f.grid && useGrid) uploadGrid(scene);
+    bool useGrid = f.grid && (!f.uber || int(scene.objects.size()) > kGridMinObjects);
+    if (useGrid) uploadGrid(scene);
     if (!f.uber) return;
     setUniform(p, "uUseGrid", int(useGrid));
     GpuScene counts = packScene(scene);
@@ -136,7 +138,7 @@ void Renderer::setUniforms(const Scene& scene, const ShaderFeatures& f) {
 }
 
 bool Renderer::setScene(const Scene& scene, const RenderOptions& options, std::string* error) {
-    ShaderFeatures f = shaderFeatures(scene, options.mode, options.uber, maxUniformBlock_);
+    ShaderFeatures f = shaderFeatures(scene, options.mode, options.uber, maxUniformBlock_, options.quality);
     if (f.uber && int(scene.objects.size()) > f.objects) {
         *error = "the uber shader holds at most " + std::to_string(f.objects) + " objects";
         return false;
@@ -154,6 +156,8 @@ void Renderer::draw(int x, int y, int w, int h, int fullW, int fullH) {
     if (!current_ || w <= 0 || h <= 0) return;
     glUseProgram(current_->id());
     if (GLint loc = current_->uniform("uViewport"); loc >= 0) glUniform4f(loc, float(x), float(y), float(fullW), float(fullH));
+    // Half a pixel's footprint per metre of distance: the cone epsilon's slope.
+    setUniform(*current_, "uPixelRadius", tanHalfFov_ / float(fullH));
     glViewport(0, 0, w, h);
     quad_.bind();
     glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_INT, nullptr);

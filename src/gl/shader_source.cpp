@@ -33,7 +33,8 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const {
            materials == o.materials && pointLights == o.pointLights && dirLights == o.dirLights &&
            ground == o.ground && steps == o.steps && shadows == o.shadows &&
            reflections == o.reflections && fog == o.fog && ao == o.ao && aa == o.aa &&
-           objectsInStorage == o.objectsInStorage && grid == o.grid;
+           objectsInStorage == o.objectsInStorage && grid == o.grid &&
+           relaxPercent == o.relaxPercent && coneEpsilon == o.coneEpsilon && shadowSteps == o.shadowSteps;
 }
 
 static bool anyMirror(const Scene& s) {
@@ -58,10 +59,21 @@ static ShaderFeatures uberFeatures(RenderMode mode, int uniformObjects) {
     return f;
 }
 
-ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int maxUniformBlockBytes) {
+static void applyQuality(ShaderFeatures* f, const RenderQuality& q) {
+    f->relaxPercent = f->grid ? 100 : q.relaxPercent;
+    f->coneEpsilon = q.coneEpsilon;
+    f->shadowSteps = q.shadowSteps;
+}
+
+ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int maxUniformBlockBytes,
+                              const RenderQuality& quality) {
     int blockBytes = maxUniformBlockBytes > 0 ? maxUniformBlockBytes : 16384;
     int uniformObjects = blockBytes / int(sizeof(GpuObject));
-    if (uber) return uberFeatures(mode, uniformObjects);
+    if (uber) {
+        ShaderFeatures f = uberFeatures(mode, uniformObjects);
+        applyQuality(&f, quality);
+        return f;
+    }
     ShaderFeatures f;
     f.mode = mode;
     for (const Object& o : s.objects) {
@@ -72,7 +84,7 @@ ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int ma
     }
     f.objects = int(s.objects.size());
     f.objectsInStorage = f.objects > uniformObjects;
-    f.grid = f.objects > kGridMinObjects;
+    f.grid = quality.grid < 0 ? f.objects > kGridMinObjects : quality.grid == 1 && f.objects > 0;
     f.materials = int(s.materials.size());
     for (const Light& l : s.lights) (l.directional ? f.dirLights : f.pointLights)++;
     f.ground = s.world.ground;
@@ -82,6 +94,7 @@ ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int ma
     f.fog = s.render.fog > 0;
     f.ao = s.render.ao;
     f.aa = mode == RenderMode::ObjectId ? 1 : s.render.aa;
+    applyQuality(&f, quality);
     return f;
 }
 
@@ -97,7 +110,9 @@ static std::vector<std::pair<const char*, long>> featureDefines(const ShaderFeat
                        {"NUM_DIR_LIGHTS", f.dirLights}, {"OBJECTS_IN_STORAGE", f.objectsInStorage},
                        {"HAS_GROUND", f.ground}, {"MAX_STEPS", f.steps}, {"SHADOWS", f.shadows},
                        {"REFLECTIONS", f.reflections}, {"HAS_FOG", f.fog}, {"HAS_AO", f.ao},
-                       {"AA", f.aa}, {"USE_GRID", f.grid}});
+                       {"AA", f.aa}, {"USE_GRID", f.grid},
+                       {"RELAX_PERCENT", f.relaxPercent}, {"CONE_EPSILON", f.coneEpsilon},
+                       {"SHADOW_STEPS", f.shadowSteps}});
     return d;
 }
 

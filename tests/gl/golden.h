@@ -11,6 +11,13 @@ namespace mb::test {
 
 constexpr int kGoldenWidth = 320, kGoldenHeight = 180;
 
+inline RenderOptions options(RenderMode mode, bool uber = false) {
+    RenderOptions o;
+    o.mode = mode;
+    o.uber = uber;
+    return o;
+}
+
 std::string sourcePath(const std::string& relative);   // inside the source tree
 std::string outputPath(const std::string& name);       // under build/test-output/
 

@@ -33,7 +33,7 @@ class Agreement : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(Agreement, CpuAndGpuHitTheSameObject) {
     Scene scene = test::loadSceneOrDie(std::string("scenes/") + GetParam() + ".txt");
-    Image ids = test::renderOrDie(scene, RenderOptions{RenderMode::ObjectId, false}, kWidth, kHeight);
+    Image ids = test::renderOrDie(scene, test::options(RenderMode::ObjectId), kWidth, kHeight);
     ASSERT_EQ(ids.width, kWidth);
     SceneSdf sdf = makeSceneSdf(scene);
     CameraBasis basis = cameraBasis(scene.camera);

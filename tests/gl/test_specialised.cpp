@@ -32,8 +32,8 @@ std::string sourceFor(const Scene& s, bool uber = false) {
 TEST(Specialised, EverySceneRendersLikeTheUberShader) {
     for (const std::string& name : sceneNames()) {
         Scene scene = test::loadSceneOrDie("scenes/" + name + ".txt");
-        Image spec = test::renderOrDie(scene, RenderOptions{RenderMode::Shaded, false}, 160, 90);
-        Image uber = test::renderOrDie(scene, RenderOptions{RenderMode::Shaded, true}, 160, 90);
+        Image spec = test::renderOrDie(scene, test::options(RenderMode::Shaded), 160, 90);
+        Image uber = test::renderOrDie(scene, test::options(RenderMode::Shaded, true), 160, 90);
         ImageDiff d = diffImages(spec, uber);
         EXPECT_LE(d.meanAbs, 0.5) << name;
         EXPECT_LE(d.p99, 4.0) << name;
@@ -84,7 +84,7 @@ TEST(Specialised, FourThousandNinetySixSpheresRender) {
     }
     ShaderFeatures f = shaderFeatures(s, RenderMode::ObjectId, false, 65536);
     EXPECT_TRUE(f.objectsInStorage);
-    Image ids = test::renderOrDie(s, RenderOptions{RenderMode::ObjectId, false}, 320, 180);
+    Image ids = test::renderOrDie(s, test::options(RenderMode::ObjectId), 320, 180);
     std::set<int> seen;
     for (int y = 0; y < ids.height; ++y)
         for (int x = 0; x < ids.width; ++x) seen.insert(int(ids.pixel(x, y)[0]) + 256 * ids.pixel(x, y)[1] - 2);

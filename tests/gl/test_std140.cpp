@@ -1,4 +1,5 @@
 // test_std140.cpp — the C++ structs of gpu_scene.h against the offsets the driver reports.
+#include "golden.h"
 #include "marchbox/gl/gpu_scene.h"
 #include "marchbox/gl/offscreen_context.h"
 #include "marchbox/gl/renderer.h"
@@ -27,7 +28,7 @@ protected:
         ASSERT_TRUE(context.create(8, 8, &error)) << error;
         ASSERT_TRUE(renderer.init(&error)) << error;
         Scene s;  // the uber program declares every field of every block
-        ASSERT_TRUE(renderer.setScene(s, RenderOptions{RenderMode::Shaded, true}, &error)) << error;
+        ASSERT_TRUE(renderer.setScene(s, test::options(RenderMode::Shaded, true), &error)) << error;
         program = renderer.program()->id();
     }
     OffscreenContext context;

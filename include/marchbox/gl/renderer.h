@@ -16,6 +16,7 @@ namespace mb {
 struct RenderOptions {
     RenderMode mode = RenderMode::Shaded;
     bool uber = false;  // the general shader with every feature behind uniforms
+    RenderQuality quality;
 };
 
 class Renderer {
@@ -55,6 +56,7 @@ private:
     StorageBuffer objectStore_;
     TextureBuffer gridCells_, gridItems_;
     int maxUniformBlock_ = 16384;
+    float tanHalfFov_ = 0.0f;
 };
 
 // Creates an OSMesa context, renders one width × height frame and reads it back (row 0 at top).

@@ -17,6 +17,14 @@ constexpr int kRenderModeCount = 7;
 const char* renderModeName(RenderMode m);               // "shaded", "normals", ... "id"
 bool parseRenderMode(const std::string& s, RenderMode* out);
 
+// Renderer knobs beyond the scene's `render` record; defaults from docs/render-report.md.
+struct RenderQuality {
+    int relaxPercent = 100;    // over-relaxation ω × 100 (Keinert et al. 2014); 100 is plain
+    bool coneEpsilon = false;  // the hit distance grows to half a pixel's footprint far away
+    int shadowSteps = 128;     // march steps of each shadow ray
+    int grid = -1;             // object grid: -1 when it pays (kGridMinObjects), 0 never, 1 always
+};
+
 struct ShaderFeatures {
     bool uber = false;
     RenderMode mode = RenderMode::Shaded;
@@ -31,6 +39,9 @@ struct ShaderFeatures {
     int aa = 1;
     bool objectsInStorage = false;  // past the uniform-block limit objects go in an SSBO
     bool grid = false;              // steps visit one cell of the object grid, not every object
+    int relaxPercent = 100;         // applies without the grid only: cell caps are not radii
+    bool coneEpsilon = false;
+    int shadowSteps = 128;
 
     bool operator==(const ShaderFeatures& o) const;
 };
@@ -41,7 +52,7 @@ constexpr int kGridMinObjects = 8;
 
 // maxUniformBlockBytes is GL_MAX_UNIFORM_BLOCK_SIZE; 0 means "assume the GL minimum, 16 KiB".
 ShaderFeatures shaderFeatures(const Scene& scene, RenderMode mode, bool uber,
-                              int maxUniformBlockBytes);
+                              int maxUniformBlockBytes, const RenderQuality& quality = {});
 
 // The #version line and the #define block for a feature set.
 std::string shaderPrefix(const ShaderFeatures& f);
