@@ -3,9 +3,16 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdlib>
 
 namespace mb {
+
+std::string quoteArg(const std::string& arg) {
+    constexpr size_t kMax = 60;
+    std::string q = arg.substr(0, kMax);
+    for (char& c : q)
+        if ((unsigned char)c < 0x20 || c == 0x7f) c = '?';
+    return "'" + q + (arg.size() > kMax ? "...'" : "'");
+}
 
 static bool parseInt(const std::string& s, int lo, int hi, int* out) {
     int v = 0;
@@ -17,14 +24,23 @@ static bool parseInt(const std::string& s, int lo, int hi, int* out) {
 
 static bool parseSize(const std::string& s, int* w, int* h) {
     size_t x = s.find('x');
-    return x != std::string::npos && parseInt(s.substr(0, x), 1, kMaxImageSide, w) &&
-           parseInt(s.substr(x + 1), 1, kMaxImageSide, h);
+    int width = 0, height = 0;
+    if (x == std::string::npos || !parseInt(s.substr(0, x), 1, kMaxImageSide, &width) ||
+        !parseInt(s.substr(x + 1), 1, kMaxImageSide, &height) ||
+        long(width) * height > kMaxImagePixels)
+        return false;
+    *w = width, *h = height;
+    return true;
 }
 
+// from_chars, unlike strtod, takes no hex ("0x10") and no leading blanks; it does read "inf"
+// and "nan", which the range check refuses.
 static bool parseSeconds(const std::string& s, double* out) {
-    char* end = nullptr;
-    double v = std::strtod(s.c_str(), &end);
-    if (s.empty() || *end != '\0' || !std::isfinite(v) || v < 0 || v > kMaxSeconds) return false;
+    double v = 0;
+    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v) || v < 0 ||
+        v > kMaxSeconds)
+        return false;
     *out = v;
     return true;
 }
@@ -40,11 +56,11 @@ static bool applyValue(const std::string& opt, const std::string& v, Args* a, st
     if (!ok) {
         static const char* expected[][2] = {
             {"-o", "a file path"},
-            {"--size", "WxH with each side 1 to 16384"},
+            {"--size", "WxH, each side 1 to 16384, at most 4096x4096 pixels in all"},
             {"--seconds", "a number of seconds from 0 to 3600"},
             {"--frames", "a whole number from 1 to 100000"}};
         for (auto& e : expected)
-            if (opt == e[0]) *error = "bad value '" + v + "' for " + opt + ": expected " + e[1];
+            if (opt == e[0]) *error = "bad value " + quoteArg(v) + " for " + opt + ": expected " + e[1];
     }
     return ok;
 }
@@ -61,7 +77,7 @@ bool parseArgs(int argc, char** argv, int first, Args* out, std::string* error) 
             }
             if (!applyValue(arg, argv[++i], out, error)) return false;
         } else if (arg.size() > 1 && arg[0] == '-') {
-            *error = "unknown option '" + arg + "'";
+            *error = "unknown option " + quoteArg(arg);
             return false;
         } else {
             out->positional.push_back(arg);

@@ -22,7 +22,14 @@ struct Args {
 // malformed value, or a value out of range.
 bool parseArgs(int argc, char** argv, int first, Args* out, std::string* error);
 
+// An argument quoted for an error message: control characters shown as '?' so the message
+// stays one line, and cut at 60 bytes so a pasted file does not fill the terminal.
+std::string quoteArg(const std::string& arg);
+
 constexpr int kMaxImageSide = 16384;
+// Off-screen renders run on the CPU (llvmpipe): 4096x4096 takes minutes and 64 MiB a copy;
+// 16384x16384 would take an hour and gigabytes, which looks like a hang.
+constexpr long kMaxImagePixels = 4096L * 4096L;
 constexpr double kMaxSeconds = 3600;
 
 }  // namespace mb

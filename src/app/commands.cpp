@@ -26,27 +26,58 @@ static bool needOne(const Args& a, const char* usage) {
     return false;
 }
 
+static bool needOutput(const Args& a, const char* command, const char* what) {
+    if (!a.output.empty()) return true;
+    std::cerr << command << " needs -o " << what << '\n';
+    return false;
+}
+
+// A driver's log runs to several lines (warnings, the error, a blank); the CLI promises one line
+// per error, and the first error is the one to fix. The label in front ("fragment shader: ")
+// is kept when the error is further down.
+static std::string firstErrorLine(const std::string& text) {
+    const std::string first = text.substr(0, text.find('\n'));
+    for (size_t at = 0; at < text.size();) {
+        size_t end = std::min(text.find('\n', at), text.size());
+        std::string line = text.substr(at, end - at);
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        size_t label = first.find(": ");
+        if (line.find("error") != std::string::npos)
+            return at == 0 || label == std::string::npos ? line : first.substr(0, label + 2) + line;
+        at = end + 1;
+    }
+    return first;
+}
+
+static int cannotRender(const std::string& error) {
+    std::cerr << "cannot render: " << firstErrorLine(error) << '\n';
+    return kExitNoGl;
+}
+
+static int flushStdout() {
+    if (std::cout.flush()) return kExitOk;
+    std::cerr << "marchbox: cannot write to standard output\n";
+    return kExitBadInput;
+}
+
 static bool renderOptions(const Args& a, RenderOptions* o) {
     o->uber = a.uber;
     if (parseRenderMode(a.mode, &o->mode)) return true;
-    std::cerr << "unknown mode '" << a.mode << "': expected shaded, normals, depth, steps, ao, shadow or id\n";
+    std::cerr << "unknown mode " << quoteArg(a.mode) << ": expected shaded, normals, depth, steps, ao, shadow or id\n";
     return false;
 }
 
 int runRender(const Args& a) {
     RenderOptions options;
     if (!needOne(a, "marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M]") ||
-        a.output.empty() || !renderOptions(a, &options))
-        return a.output.empty() ? (std::cerr << "render needs -o OUT.png\n", kExitUsage) : kExitUsage;
+        !needOutput(a, "render", "OUT.png") || !renderOptions(a, &options))
+        return kExitUsage;
     Scene scene;
     if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
     simulate(scene, a.seconds);
     Image img;
     std::string error;
-    if (!renderOffscreen(scene, options, a.width, a.height, &img, &error)) {
-        std::cerr << "cannot render: " << error << '\n';
-        return kExitNoGl;
-    }
+    if (!renderOffscreen(scene, options, a.width, a.height, &img, &error)) return cannotRender(error);
     if (!savePng(a.output, img, &error)) {
         std::cerr << error << '\n';
         return kExitBadInput;
@@ -61,7 +92,7 @@ int runSimulate(const Args& a) {
     simulate(scene, a.seconds);
     if (a.output.empty()) {
         std::cout << formatScene(scene);
-        return std::cout.flush() ? kExitOk : kExitBadInput;
+        return flushStdout();
     }
     std::string error;
     if (saveScene(a.output, scene, &error)) return kExitOk;
@@ -98,12 +129,9 @@ int runShader(const Args& a) {
     if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
     ShaderFeatures f = shaderFeatures(scene, options.mode, options.uber, driverUniformBlockBytes());
     std::string source, error;
-    if (!fragmentSource(f, &source, &error)) {
-        std::cerr << error << '\n';
-        return kExitNoGl;
-    }
+    if (!fragmentSource(f, &source, &error)) return cannotRender(error);
     std::cout << source;
-    return kExitOk;
+    return flushStdout();
 }
 
 int runBench(const Args& a) {
@@ -116,10 +144,8 @@ int runBench(const Args& a) {
     Renderer renderer;
     std::string error;
     if (!context.create(a.width, a.height, &error) || !renderer.init(&error) ||
-        !renderer.setScene(scene, options, &error)) {
-        std::cerr << "cannot render: " << error << '\n';
-        return kExitNoGl;
-    }
+        !renderer.setScene(scene, options, &error))
+        return cannotRender(error);
     std::vector<double> ms;
     for (int i = 0; i <= a.frames; ++i) {  // frame 0 warms up: shader JIT, caches
         auto t0 = std::chrono::steady_clock::now();

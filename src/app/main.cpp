@@ -3,7 +3,9 @@
 #include "commands.h"
 
 #include <cstring>
+#include <filesystem>
 #include <iostream>
+#include <string_view>
 
 static const char* kUsage =
     "usage: marchbox [SCENE]                      open the editor (default scenes/default.txt)\n"
@@ -15,6 +17,15 @@ static const char* kUsage =
     "       marchbox report physics|render\n"
     "       marchbox --help | --version\n"
     "modes: shaded normals depth steps ao shadow id\n";
+
+// `marchbox rendr x.txt` is a typo of a command, not a scene to open: a first word that is no
+// file and has no .txt ending. A missing scene.txt still reaches the editor, which says so.
+static bool looksLikeCommand(const char* arg) {
+    std::string_view s(arg);
+    bool txt = s.size() >= 4 && s.substr(s.size() - 4) == ".txt";
+    std::error_code error;  // e.g. a name too long: not a file either, and must not throw
+    return !s.empty() && s[0] != '-' && !txt && !std::filesystem::exists(s, error);
+}
 
 int main(int argc, char** argv) {
     using namespace mb;
@@ -36,6 +47,10 @@ int main(int argc, char** argv) {
     const Command* command = nullptr;
     for (const Command& c : commands)
         if (argc > 1 && !std::strcmp(argv[1], c.name)) command = &c;
+    if (!command && argc > 1 && looksLikeCommand(argv[1])) {
+        std::cerr << "marchbox: unknown command " << quoteArg(argv[1]) << " (see marchbox --help)\n";
+        return kExitUsage;
+    }
     Args args;
     std::string error;
     if (!parseArgs(argc, argv, command ? 2 : 1, &args, &error)) {

@@ -1,0 +1,109 @@
+#!/usr/bin/env bash
+# cli_test.sh — absurd command lines get one line on standard error and the exit status of
+# ../shared/CLI.md (1 bad input, 2 usage, 3 OpenGL), never a crash, a hang or a stack trace.
+# Usage: tests/cli/cli_test.sh MARCHBOX SOURCE_DIR GROUP   (GROUP: args, files or gl)
+set -uo pipefail
+mb=$1 src=$2 group=$3
+scene=$src/scenes/primitives.txt
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+
+# expect STATUS CMD...: runs CMD (60 s at most) and checks its exit status and that standard
+# error is exactly one non-empty line. MB_ENV, when set, is passed to env for the command.
+expect() {
+  local want=$1
+  shift
+  timeout 60 env ${MB_ENV:-} "$@" >"$tmp/out" 2>"$tmp/err" </dev/null
+  local got=$? lines
+  lines=$(wc -l <"$tmp/err")
+  if [[ $got -ne $want || $lines -ne 1 || ! -s $tmp/err ]]; then
+    echo "FAIL: $* -> exit $got (want $want), $lines stderr lines:" >&2
+    head -c 600 "$tmp/err" >&2
+    failures=$((failures + 1))
+  fi
+}
+
+# Like expect, and standard error must also contain TEXT.
+expect_says() {
+  local text=$1
+  shift
+  expect "$@"
+  grep -qF -- "$text" "$tmp/err" || { echo "FAIL: $* does not say '$text'" >&2; failures=$((failures + 1)); }
+}
+
+args_cases() {
+  local r=("$mb" render "$scene" -o "$tmp/x.png")
+  for size in 0x0 100000x100000 junk 16384x16384 640x x360 -640x360 640x360x2 '' 0x10 \
+              99999999999999999999x1 640X360; do
+    expect 2 "${r[@]}" --size "$size"
+  done
+  for t in -1 nan NaN inf -inf 1e400 0x10 '' abc 3601 ' 5' 1,5; do
+    expect 2 "${r[@]}" --seconds "$t"
+    expect 2 "$mb" simulate "$scene" --seconds "$t"
+  done
+  expect 2 "$mb" bench "$scene" --frames 0
+  expect 2 "$mb" bench "$scene" --frames -5
+  expect 2 "$mb" render "$scene" --mode bogus -o "$tmp/x.png"
+  for opt in --seconds --size -o --frames --mode; do expect 2 "$mb" simulate "$scene" "$opt"; done
+  expect_says "unknown command 'foo'" 2 "$mb" foo
+  expect_says "unknown command 'rendr'" 2 "$mb" rendr "$scene"
+  expect 2 "$mb" "$(printf 'a%.0s' {1..5000})"         # too long for a file name
+  expect 2 "$mb" "$(printf 'two\nlines')"               # one line even so
+  expect 2 "$mb" --bogus
+  expect 2 "$mb" render
+  expect 2 "$mb" render "$scene"
+  expect 2 "$mb" render "$scene" "$scene" -o "$tmp/x.png"
+  expect 2 "$mb" simulate
+  expect 2 "$mb" check
+  expect 2 "$mb" shader
+  expect 2 "$mb" report bogus
+}
+
+files_cases() {
+  # A directory where a scene belongs, for each command that reads one.
+  expect_says "is a directory" 1 "$mb" "$src/scenes"
+  expect 1 "$mb" render "$src/scenes" -o "$tmp/x.png" --size 8x8
+  expect 1 "$mb" simulate "$src/scenes"
+  expect 1 "$mb" check "$src/scenes"
+  expect 1 "$mb" check "$tmp/missing.txt"
+  # 8 MB scenes: one line of 8 MB, and 8 MB of objects past the limit. Each is one error.
+  head -c 8388608 /dev/zero | tr '\0' x >"$tmp/line.txt"
+  expect_says "line longer than 4096 bytes" 1 "$mb" check "$tmp/line.txt"
+  { echo "material r:1 g:1 b:1"
+    yes "object type:sphere pos:0,1,0 radius:0.5" | head -n 205000; } >"$tmp/objects.txt"
+  expect_says "more than 4096 objects" 1 "$mb" simulate "$tmp/objects.txt" --seconds 1
+  # Outputs that cannot be written; a device is refused, not replaced.
+  expect 1 "$mb" render "$scene" -o "$tmp/missing/x.png" --size 8x8
+  expect 1 "$mb" render "$scene" -o "$tmp" --size 8x8
+  expect 1 "$mb" simulate "$scene" -o "$tmp/missing/x.txt"
+  expect 1 "$mb" simulate "$scene" -o "$tmp"
+  expect_says "not a regular file" 1 "$mb" simulate "$scene" -o /dev/null
+  [[ -c /dev/null ]] || { echo "FAIL: /dev/null was replaced" >&2; failures=$((failures + 1)); }
+  if [[ -w /dev/full ]]; then
+    expect 1 sh -c '"$0" simulate "$1" >/dev/full' "$mb" "$scene"
+    expect 1 sh -c '"$0" shader "$1" >/dev/full' "$mb" "$scene"
+  fi
+}
+
+gl_cases() {
+  local r=("$mb" render "$scene" -o "$tmp/x.png" --size 8x8)
+  MB_ENV=MARCHBOX_SHADERS=/nonexistent expect_says "/nonexistent" 3 "${r[@]}"
+  MB_ENV=MARCHBOX_SHADERS=/nonexistent expect 3 "$mb" bench "$scene" --frames 1 --size 8x8
+  MB_ENV=MARCHBOX_SHADERS=/nonexistent expect 3 "$mb" shader "$scene"
+  # A syntax error in an included file, then in the vertex shader: the driver's first error line.
+  cp -r "$src/shaders" "$tmp/shaders"
+  echo "float broken() { return ; }" >>"$tmp/shaders/sdf.glsl"
+  MB_ENV=MARCHBOX_SHADERS=$tmp/shaders expect_says "fragment shader: " 3 "${r[@]}"
+  grep -q "error" "$tmp/err" || { echo "FAIL: no error line: $(cat "$tmp/err")" >&2; failures=$((failures + 1)); }
+  cp "$src/shaders/sdf.glsl" "$tmp/shaders/sdf.glsl"
+  echo "garbage" >>"$tmp/shaders/fullscreen.vert"
+  MB_ENV=MARCHBOX_SHADERS=$tmp/shaders expect_says "vertex shader: " 3 "${r[@]}"
+}
+
+"${group}_cases"
+if ((failures)); then
+  echo "$failures failure(s) in group $group" >&2
+  exit 1
+fi
+echo "cli $group: all cases passed"
