@@ -1,5 +1,6 @@
 // editor_entry.cpp — `marchbox [SCENE]`: the editor window, or a PNG when there is no display.
 #include "commands.h"
+#include "editor_window.h"
 
 #include "marchbox/gl/renderer.h"
 #include "marchbox/physics.h"
@@ -55,7 +56,8 @@ int runEditor(const Args& a) {
     }
     std::string path = a.positional.empty() ? defaultScenePath() : a.positional[0];
     if (!haveDisplay()) return renderPreview(path);
-    return renderPreview(path);  // the window arrives with the editor (#4)
+    int status = runEditorWindow(path);
+    return status == kNoWindow ? renderPreview(path) : status;
 }
 
 }  // namespace mb

@@ -1,6 +1,8 @@
 // fields.cpp — the ranges of SCENE_FORMAT.md, once, for every widget and check.
 #include "marchbox/editor/fields.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -82,6 +84,13 @@ bool validateVec(Field f, glm::vec3 v, std::string* why) {
         return false;
     }
     return true;
+}
+
+bool validateName(const std::string& name, std::string* why) {
+    auto allowed = [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '.' || c == '-'; };
+    if (!name.empty() && std::all_of(name.begin(), name.end(), allowed)) return true;
+    *why = "a name is letters, digits, '_', '.' or '-', at least one";
+    return false;
 }
 
 }  // namespace mb

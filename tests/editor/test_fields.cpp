@@ -67,3 +67,11 @@ TEST(Fields, DragRangesLieInsideTheAllowedRange) {
         EXPECT_TRUE(validateField(Field(f), s.dragMax, &why)) << s.name << ": " << why;
     }
 }
+
+TEST(Fields, MaterialNames) {
+    std::string why;
+    EXPECT_TRUE(validateName("red_1.b-2", &why));
+    EXPECT_FALSE(validateName("", &why));
+    EXPECT_FALSE(validateName("two words", &why));
+    EXPECT_FALSE(validateName("r:1", &why));
+}

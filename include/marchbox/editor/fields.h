@@ -41,4 +41,7 @@ bool validateField(Field f, double v, std::string* why);
 // Each component through validateField; a direction must not be zero.
 bool validateVec(Field f, glm::vec3 v, std::string* why);
 
+// A material name: one or more of A-Z a-z 0-9 _ . -
+bool validateName(const std::string& name, std::string* why);
+
 }  // namespace mb

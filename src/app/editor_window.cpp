@@ -1,0 +1,205 @@
+// editor_window.cpp — the App: owns the window, the editor state, the scene view and the UI
+// state, and runs the frame loop (Initialization / Update / Draw / De-Initialization).
+#include "editor_window.h"
+
+#include "args.h"
+#include "marchbox/editor/events.h"
+#include "marchbox/editor/files.h"
+#include "marchbox/gl/gl.h"
+#include "scene_view.h"
+#include "ui.h"
+#include "viewport_input.h"
+#include "window.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+namespace mb {
+
+namespace {
+
+const char* envOr(const char* name, const char* fallback) {
+    const char* v = std::getenv(name);
+    return v && *v ? v : fallback;
+}
+
+class App {
+public:
+    ~App();
+    bool load(const std::string& path, std::vector<std::string>* errors);
+    bool start(std::string* error);
+    void run();
+
+private:
+    void frame(double seconds, int width, int height);
+    void buildUi(UiContext& c, int width, int height, double seconds);
+    void present(int width, int height);
+    void openDrops(UiContext& c);
+    void screenshot(int width, int height);
+    std::string title() const;
+
+    // Destroyed bottom-up: the scene view's GL objects go while the window's context lives.
+    Window window_;
+    SceneView view_;
+    Editor editor_;
+    UiState ui_;
+    FrameStats stats_;
+    ViewportInput input_;
+    bool imgui_ = false;
+};
+
+App::~App() {
+    if (!imgui_) return;
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+}
+
+//-----------------------------------------------------------------------------
+// Initialization
+//-----------------------------------------------------------------------------
+bool App::load(const std::string& path, std::vector<std::string>* errors) {
+    ui_.scenesDir = std::string(MARCHBOX_SOURCE_DIR) + "/scenes";
+    return editor_.request(Leave::Open, path, errors);
+}
+
+bool App::start(std::string* error) {
+    int w = 1280, h = 720;
+    // MARCHBOX_WINDOW_SIZE=WxH: tests ask for a small window so a software renderer keeps up.
+    std::sscanf(envOr("MARCHBOX_WINDOW_SIZE", "1280x720"), "%dx%d", &w, &h);
+    if (!window_.create(title(), std::max(w, 64), std::max(h, 64), error)) return false;
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    imgui_ = true;
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working folder
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(window_.handle(), true);
+    ImGui_ImplOpenGL3_Init("#version 330");
+    return view_.init(editor_.scene(), error);
+}
+
+//-----------------------------------------------------------------------------
+// Update
+//-----------------------------------------------------------------------------
+void App::run() {
+    double last = glfwGetTime();
+    bool ready = false;
+    while (!editor_.quitRequested()) {
+        glfwPollEvents();
+        if (window_.closeRequested()) {
+            window_.clearCloseRequest();
+            std::vector<std::string> none;
+            editor_.request(Leave::Exit, "", &none);
+        }
+        int w = 0, h = 0;
+        window_.framebufferSize(&w, &h);
+        double now = glfwGetTime(), seconds = now - last;
+        last = now;
+        if (w <= 0 || h <= 0) {  // minimised: nothing to draw into, so wait for the window
+            glfwWaitEventsTimeout(0.1);
+            continue;
+        }
+        frame(seconds, w, h);
+        if (!ready) emitEvent("ready " + std::to_string(w) + " " + std::to_string(h));
+        ready = true;
+    }
+}
+
+void App::frame(double seconds, int width, int height) {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    UiContext c{editor_, ui_, stats_, view_.shaderLog()};
+    buildUi(c, width, height, seconds);
+    editor_.frame(seconds);
+    ImGui::Render();
+    present(width, height);
+    window_.setTitle(title());
+    stats_.add(seconds);
+}
+
+void App::buildUi(UiContext& c, int width, int height, double seconds) {
+    handleShortcuts(c, window_.takeKeys());
+    openDrops(c);
+    input_.update(c, glm::vec2(width, height), float(seconds));
+    drawMenuBar(c);
+    drawEditWindows(c);
+    drawSimulationWindow(c);
+    drawViewWindows(c);
+    drawDialogs(c);
+    // A released widget or drag ends its undo step; the next change starts a new one.
+    if (!ImGui::IsAnyItemActive() && !input_.dragging()) editor_.endEdit();
+}
+
+void App::openDrops(UiContext& c) {
+    for (const std::string& path : window_.takeDrops()) {
+        if (!hasSceneExtension(path)) continue;
+        openFile(c, path);  // the first scene file; the rest would only replace it
+        break;
+    }
+}
+
+//-----------------------------------------------------------------------------
+// Draw
+//-----------------------------------------------------------------------------
+void App::present(int width, int height) {
+    double now = glfwGetTime();
+    view_.pollShaders(editor_.scene(), now);
+    view_.sync(editor_.scene(), editor_.document().version(), ui_.render, now);
+    glViewport(0, 0, width, height);
+    glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    view_.draw(width, height, editor_.selection().object());
+    glViewport(0, 0, width, height);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (ui_.wantScreenshot) screenshot(width, height);
+    window_.swap();
+}
+
+void App::screenshot(int width, int height) {
+    ui_.wantScreenshot = false;
+    std::string path, error;
+    if (saveScreenshot(width, height, envOr("MARCHBOX_SCREENSHOT_DIR", "."), &path, &error))
+        emitEvent("screenshot " + path);
+    else
+        ui_.message = error;
+}
+
+std::string App::title() const {
+    const std::string& path = editor_.document().path();
+    std::string name = path.empty() ? "untitled" : std::filesystem::path(path).filename().string();
+    return "Marchbox - " + name + (editor_.document().dirty() ? " *" : "");
+}
+
+}  // namespace
+
+//-----------------------------------------------------------------------------
+// De-Initialization happens in ~App, in reverse order of the members.
+//-----------------------------------------------------------------------------
+int runEditorWindow(const std::string& scenePath) {
+    if (std::string(envOr("MARCHBOX_EVENT_LOG", "0")) != "0") setEventStream(&std::cout);
+    App app;
+    std::vector<std::string> errors;
+    if (!app.load(scenePath, &errors)) {
+        for (const std::string& e : errors) std::cerr << e << '\n';
+        return kExitBadInput;
+    }
+    std::string error;
+    if (!app.start(&error)) {
+        std::cerr << "marchbox: cannot open the editor window: " << error << '\n';
+        return kNoWindow;
+    }
+    app.run();
+    emitEvent("exit 0");
+    return kExitOk;
+}
+
+}  // namespace mb

@@ -1,0 +1,227 @@
+// panels_edit.cpp — Edit > Objects, Materials, Lights: lists with add, duplicate, delete and
+// clear, the selected item's every field, and the viewport's right-click popup.
+//
+// Fields edit a copy of the item; a changed copy goes back through Editor::edit as one undo
+// step, keyed by the widget so that one drag is one step.
+#include "ui.h"
+#include "widgets.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+namespace mb {
+
+static const char* const kShapeNames[] = {"sphere", "box", "torus", "capsule", "cylinder"};
+static const char* const kOpNames[] = {"union", "subtract", "intersect"};
+static const char* const kLightKinds[] = {"point", "directional"};
+static const char* kObjectPopup = "object popup";
+
+static ImVec4 swatchColour(const Material& m) {
+    return ImVec4(m.color.r, m.color.g, m.color.b, 1.0f);
+}
+
+static void swatch(const Material& m, float size = 0.0f) {
+    ImGui::ColorButton("##swatch", swatchColour(m), ImGuiColorEditFlags_NoTooltip, ImVec2(size, size));
+}
+
+static std::string itemName(const Scene& s, ItemKind k, int i) {
+    std::string n = std::to_string(i) + " ";
+    switch (k) {
+        case ItemKind::Object: {
+            const Object& o = s.objects[size_t(i)];
+            n += shapeTypeName(o.type);
+            if (o.dynamic()) n += " (dynamic)";
+            return n;
+        }
+        case ItemKind::Material: return n + s.materials[size_t(i)].name;
+        case ItemKind::Light: return n + (s.lights[size_t(i)].directional ? "directional" : "point");
+    }
+    return n;
+}
+
+//-----------------------------------------------------------------------------
+// Fields of one item
+//-----------------------------------------------------------------------------
+static void materialCombo(const Scene& s, int* material, FieldEdit& e) {
+    const int m = *material;
+    std::string preview = m < int(s.materials.size()) ? s.materials[size_t(m)].name : "?";
+    if (!ImGui::BeginCombo("material", preview.c_str())) return;
+    for (int i = 0; i < int(s.materials.size()); ++i) {
+        ImGui::PushID(i);
+        swatch(s.materials[size_t(i)]);
+        ImGui::SameLine();
+        if (ImGui::Selectable(s.materials[size_t(i)].name.c_str(), i == m) && i != m) {
+            *material = i;
+            e.changed = true;
+            e.key = 0;  // a choice, not a drag: its own undo step
+        }
+        ImGui::PopID();
+    }
+    ImGui::EndCombo();
+}
+
+static void shapeFields(Object& o, FieldEdit& e) {
+    int type = int(o.type);
+    fieldCombo("type", &type, kShapeNames, kShapeTypeCount, e);
+    o.type = ShapeType(type);
+    fieldVec3("pos", Field::Position, &o.pos, e);
+    if (o.type == ShapeType::Box) fieldVec3("size", Field::HalfExtent, &o.size, e);
+    else fieldFloat("radius", Field::Radius, &o.radius, e);
+    if (o.type == ShapeType::Torus) fieldFloat("minor", Field::Minor, &o.minor, e);
+    if (o.type == ShapeType::Capsule || o.type == ShapeType::Cylinder)
+        fieldFloat("height", Field::Height, &o.height, e);
+    fieldVec3("rot", Field::Rotation, &o.rot, e);
+    int op = int(o.op);
+    fieldCombo("op", &op, kOpNames, kCsgOpCount, e);
+    o.op = CsgOp(op);
+    fieldFloat("blend", Field::Blend, &o.blend, e);
+}
+
+static void motionFields(Object& o, FieldEdit& e) {
+    fieldFlag("static", &o.isStatic, e);
+    fieldFloat("mass", Field::Mass, &o.mass, e);
+    fieldVec3("vel", Field::Velocity, &o.vel, e);
+    fieldVec3("spin", Field::Spin, &o.spin, e);
+    if (!o.dynamic()) ImGui::TextDisabled("static collider: only dynamic spheres move");
+}
+
+static void objectFields(UiContext& c, int i) {
+    const Scene& s = c.editor.scene();
+    Object o = s.objects[size_t(i)];
+    FieldEdit e{false, 0, &c.ui.message};
+    ImGui::PushID(i);
+    shapeFields(o, e);
+    materialCombo(s, &o.material, e);
+    motionFields(o, e);
+    ImGui::PopID();
+    if (e.changed) c.editor.edit("Edit object", [&](Scene& sc) { sc.objects[size_t(i)] = o; }, e.key);
+}
+
+static void materialFields(UiContext& c, int i) {
+    Material m = c.editor.scene().materials[size_t(i)];
+    FieldEdit e{false, 0, &c.ui.message};
+    ImGui::PushID(i);
+    swatch(m, 48.0f);
+    std::string name = m.name, why;
+    if (ImGui::InputText("name", &name, ImGuiInputTextFlags_EnterReturnsTrue)) {
+        if (validateName(name, &why)) {
+            m.name = name;
+            e.changed = true;
+        } else {
+            c.ui.message = why;
+        }
+    }
+    fieldColor("colour", Field::ColorChannel, &m.color, e);
+    fieldFloat("Ka ambient", Field::Ka, &m.Ka, e);
+    fieldFloat("Kd diffuse", Field::Kd, &m.Kd, e);
+    fieldFloat("Ks specular", Field::Ks, &m.Ks, e);
+    fieldFloat("C shininess", Field::Shininess, &m.C, e);
+    fieldFloat("Kr mirror", Field::Reflectivity, &m.Kr, e);
+    ImGui::PopID();
+    if (e.changed) c.editor.edit("Edit material", [&](Scene& s) { s.materials[size_t(i)] = m; }, e.key);
+}
+
+static void lightFields(UiContext& c, int i) {
+    Light l = c.editor.scene().lights[size_t(i)];
+    FieldEdit e{false, 0, &c.ui.message};
+    ImGui::PushID(i);
+    int kind = l.directional ? 1 : 0;
+    fieldCombo("kind", &kind, kLightKinds, 2, e);
+    if (bool directional = kind == 1; directional != l.directional) {
+        l.directional = directional;
+        if (directional) l.vec = {-0.3f, -1.0f, 0.2f};  // a position makes a poor direction
+    }
+    if (l.directional) fieldVec3("dir", Field::LightDirection, &l.vec, e);
+    else fieldVec3("pos", Field::LightPosition, &l.vec, e);
+    fieldColor("colour", Field::LightColor, &l.color, e);
+    fieldFloat("intensity", Field::Intensity, &l.intensity, e);
+    ImGui::PopID();
+    if (e.changed) c.editor.edit("Edit light", [&](Scene& s) { s.lights[size_t(i)] = l; }, e.key);
+}
+
+static void itemFields(UiContext& c, ItemKind k, int i) {
+    switch (k) {
+        case ItemKind::Object: return objectFields(c, i);
+        case ItemKind::Material: return materialFields(c, i);
+        case ItemKind::Light: return lightFields(c, i);
+    }
+}
+
+//-----------------------------------------------------------------------------
+// Lists
+//-----------------------------------------------------------------------------
+static void listButtons(UiContext& c, ItemKind k) {
+    Editor& e = c.editor;
+    const Selection& sel = e.selection();
+    const int chosen = sel.kind == k ? sel.index : -1;
+    if (ImGui::Button("Add")) e.add(k, &c.ui.message);
+    ImGui::SameLine();
+    ImGui::BeginDisabled(chosen < 0);
+    if (ImGui::Button("Duplicate")) e.duplicate(k, chosen, &c.ui.message);
+    ImGui::SameLine();
+    if (ImGui::Button("Delete")) e.remove(k, chosen, &c.ui.message);
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(itemCount(e.scene(), k) == 0);
+    if (ImGui::Button("Clear")) e.clear(k);
+    ImGui::EndDisabled();
+}
+
+static void itemList(UiContext& c, ItemKind k) {
+    const Scene& s = c.editor.scene();
+    ImGui::BeginChild("list", ImVec2(0, 150), true);
+    for (int i = 0; i < itemCount(s, k); ++i) {
+        ImGui::PushID(i);
+        int m = k == ItemKind::Material ? i : k == ItemKind::Object ? s.objects[size_t(i)].material : -1;
+        if (m >= 0 && m < int(s.materials.size())) {
+            swatch(s.materials[size_t(m)]);
+            ImGui::SameLine();
+        }
+        if (ImGui::Selectable(itemName(s, k, i).c_str(), c.editor.selection().is(k, i)))
+            c.editor.select(k, i);
+        ImGui::PopID();
+    }
+    ImGui::EndChild();
+}
+
+static void itemWindow(UiContext& c, ItemKind k, const char* title, bool* open, float y) {
+    if (!*open) return;
+    ImGui::SetNextWindowPos(ImVec2(10, y), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_Always);  // height 0: fits the fields
+    if (ImGui::Begin(title, open)) {
+        listButtons(c, k);
+        itemList(c, k);
+        const Selection& sel = c.editor.selection();
+        if (sel.kind == k && !sel.empty()) itemFields(c, k, sel.index);
+        fieldErrorLine(c.ui.message);
+    }
+    ImGui::End();
+}
+
+static void objectPopup(UiContext& c) {
+    if (c.ui.wantObjectPopup) ImGui::OpenPopup(kObjectPopup);
+    c.ui.wantObjectPopup = false;
+    if (!ImGui::BeginPopup(kObjectPopup)) return;
+    const int i = c.editor.selection().object();
+    if (i < 0) {
+        ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+        return;
+    }
+    ImGui::Text("object %d", i);
+    objectFields(c, i);
+    if (ImGui::Button("Duplicate")) c.editor.duplicate(ItemKind::Object, i, &c.ui.message);
+    ImGui::SameLine();
+    if (ImGui::Button("Delete")) c.editor.remove(ItemKind::Object, i, &c.ui.message);
+    fieldErrorLine(c.ui.message);
+    ImGui::EndPopup();
+}
+
+void drawEditWindows(UiContext& c) {
+    itemWindow(c, ItemKind::Object, "Objects", &c.ui.showObjects, 30);
+    itemWindow(c, ItemKind::Material, "Materials", &c.ui.showMaterials, 60);
+    itemWindow(c, ItemKind::Light, "Lights", &c.ui.showLights, 90);
+    objectPopup(c);
+}
+
+}  // namespace mb

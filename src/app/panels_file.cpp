@@ -1,0 +1,156 @@
+// panels_file.cpp — File > Open and Save As dialogs, the unsaved-changes prompt, load errors.
+#include "ui.h"
+#include "widgets.h"
+
+#include "marchbox/editor/files.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+namespace mb {
+
+static const char* kOpenPopup = "Open scene";
+static const char* kSaveAsPopup = "Save scene as";
+static const char* kUnsavedPopup = "Unsaved changes";
+static const char* kErrorsPopup = "Cannot open";
+
+// BeginPopupModal, its state told to the event log.
+static bool beginModal(const char* name) {
+    bool open = ImGui::BeginPopupModal(name, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    markPopup(name, open);
+    return open;
+}
+
+static std::string suggestedPath(const Editor& e) {
+    return e.document().path().empty() ? "scenes/untitled.txt" : e.document().path();
+}
+
+void openFile(UiContext& c, const std::string& path) {
+    c.ui.openErrors.clear();
+    c.editor.request(Leave::Open, path, &c.ui.openErrors);
+}
+
+void saveFile(UiContext& c) {
+    if (c.editor.document().path().empty()) {
+        c.ui.wantSaveAs = true;
+        return;
+    }
+    if (!c.editor.save(&c.ui.message)) c.ui.wantSaveAs = true;  // e.g. a read-only file
+}
+
+// A button with a widget mark.
+static bool button(const char* popup, const char* label) {
+    bool clicked = ImGui::Button(label);
+    markItem(std::string(popup) + "/" + label);
+    return clicked;
+}
+
+// The path field, focused when the dialog appears; Enter confirms.
+static bool pathField(const char* popup, std::string* path) {
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    ImGui::SetNextItemWidth(480);
+    const ImGuiInputTextFlags flags = ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll;
+    bool enter = ImGui::InputText("path", path, flags);  // typing replaces the suggestion
+    markItem(std::string(popup) + "/path");
+    markTyping(std::string(popup) + "/path");
+    return enter;
+}
+
+static void openDialog(UiContext& c) {
+    if (!beginModal(kOpenPopup)) return;
+    static std::vector<std::string> files;
+    if (ImGui::IsWindowAppearing())
+        files = listSceneFiles(c.editor.document().path(), c.ui.scenesDir);
+    bool go = false;
+    ImGui::BeginChild("files", ImVec2(480, 220), true);
+    for (const std::string& f : files) {
+        if (ImGui::Selectable(f.c_str(), f == c.ui.pathField, ImGuiSelectableFlags_AllowDoubleClick)) {
+            c.ui.pathField = f;
+            go = ImGui::IsMouseDoubleClicked(0);
+        }
+    }
+    ImGui::EndChild();
+    go |= pathField(kOpenPopup, &c.ui.pathField);
+    go |= button(kOpenPopup, "Open");
+    ImGui::SameLine();
+    bool cancel = button(kOpenPopup, "Cancel");
+    if (go || cancel) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+    if (go) openFile(c, c.ui.pathField);  // may raise the unsaved prompt: after EndPopup
+}
+
+static void finishSaveAs(UiContext& c, bool saved) {
+    bool leave = c.ui.saveThenLeave;
+    c.ui.saveThenLeave = false;
+    if (!leave) return;
+    if (saved) c.editor.confirmLeave(&c.ui.openErrors);
+    else c.editor.cancelLeave();
+}
+
+static void saveAsDialog(UiContext& c) {
+    if (!beginModal(kSaveAsPopup)) return;
+    bool go = pathField(kSaveAsPopup, &c.ui.pathField);
+    go |= button(kSaveAsPopup, "Save");
+    ImGui::SameLine();
+    bool cancel = button(kSaveAsPopup, "Cancel");
+    fieldErrorLine(c.ui.message);
+    bool saved = go && c.editor.saveAs(c.ui.pathField, &c.ui.message);
+    if (saved) c.ui.message.clear();
+    if (saved || cancel) {
+        ImGui::CloseCurrentPopup();
+        finishSaveAs(c, saved);
+    }
+    ImGui::EndPopup();
+}
+
+static void unsavedPrompt(UiContext& c) {
+    if (!beginModal(kUnsavedPopup)) return;
+    const std::string& path = c.editor.document().path();
+    ImGui::Text("Save the changes to %s first?", path.empty() ? "the new scene" : path.c_str());
+    bool save = button(kUnsavedPopup, "Save");
+    ImGui::SameLine();
+    bool discard = button(kUnsavedPopup, "Don't save");
+    ImGui::SameLine();
+    bool cancel = button(kUnsavedPopup, "Cancel");
+    if (save || discard || cancel) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+    std::vector<std::string>& errors = c.ui.openErrors;
+    if (cancel) c.editor.cancelLeave();
+    if (discard) c.editor.confirmLeave(&errors);
+    if (save && !c.editor.document().path().empty() && c.editor.save(&c.ui.message))
+        c.editor.confirmLeave(&errors);
+    else if (save) {  // no file yet, or it could not be written: ask where
+        c.ui.saveThenLeave = true;
+        c.ui.wantSaveAs = true;
+    }
+}
+
+static void errorsPopup(UiContext& c) {
+    if (!beginModal(kErrorsPopup)) return;
+    ImGui::TextUnformatted("The file did not load; the open scene is unchanged.");
+    for (const std::string& e : c.ui.openErrors) fieldErrorLine(e);
+    if (button(kErrorsPopup, "OK")) {
+        c.ui.openErrors.clear();
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+// Popups open here, at the top of ImGui's id stack, whichever menu or key asked for them.
+void drawDialogs(UiContext& c) {
+    UiState& ui = c.ui;
+    if (ui.wantOpen || ui.wantSaveAs) {
+        ImGui::OpenPopup(ui.wantOpen ? kOpenPopup : kSaveAsPopup);
+        ui.pathField = suggestedPath(c.editor);
+        ui.message.clear();
+    }
+    if (c.editor.pendingLeave() != Leave::None && !ui.saveThenLeave) ImGui::OpenPopup(kUnsavedPopup);
+    if (!ui.openErrors.empty()) ImGui::OpenPopup(kErrorsPopup);
+    ui.wantOpen = ui.wantSaveAs = false;
+    openDialog(c);
+    saveAsDialog(c);
+    unsavedPrompt(c);
+    errorsPopup(c);
+}
+
+}  // namespace mb

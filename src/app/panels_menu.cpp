@@ -1,0 +1,128 @@
+// panels_menu.cpp — the main menu bar, and the keys that do what its items do.
+#include "ui.h"
+#include "widgets.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+namespace mb {
+
+// BeginMenu with a widget mark, so tests find the menu where a person would. Only while
+// closed: once open, the last item is inside the menu's window.
+static bool beginMenu(const char* name) {
+    bool open = ImGui::BeginMenu(name);
+    if (!open) markItem(name);
+    markPopup(std::string("menu ") + name, open);
+    return open;
+}
+
+static bool menuItem(const char* menu, const char* label, const char* shortcut = nullptr,
+                     bool selected = false, bool enabled = true) {
+    bool clicked = ImGui::MenuItem(label, shortcut, selected, enabled);
+    markItem(std::string(menu) + "/" + label);
+    return clicked;
+}
+
+static void request(UiContext& c, Leave what) {
+    std::vector<std::string> errors;
+    c.editor.request(what, "", &errors);
+}
+
+static void fileMenu(UiContext& c) {
+    if (menuItem("File", "New", "Ctrl+N")) request(c, Leave::NewScene);
+    if (menuItem("File", "Open...", "Ctrl+O")) c.ui.wantOpen = true;
+    if (menuItem("File", "Save", "Ctrl+S")) saveFile(c);
+    if (menuItem("File", "Save As...")) c.ui.wantSaveAs = true;
+    ImGui::Separator();
+    if (menuItem("File", "Exit", "Esc")) request(c, Leave::Exit);
+}
+
+static void editMenu(UiContext& c) {
+    Editor& e = c.editor;
+    const History& h = e.document().history();
+    if (menuItem("Edit", ("Undo " + h.undoLabel()).c_str(), "Ctrl+Z", false, h.canUndo())) e.undo();
+    if (menuItem("Edit", ("Redo " + h.redoLabel()).c_str(), "Ctrl+Y", false, h.canRedo())) e.redo();
+    ImGui::Separator();
+    if (menuItem("Edit", "Objects", nullptr, c.ui.showObjects)) c.ui.showObjects = !c.ui.showObjects;
+    if (menuItem("Edit", "Materials", nullptr, c.ui.showMaterials)) c.ui.showMaterials = !c.ui.showMaterials;
+    if (menuItem("Edit", "Lights", nullptr, c.ui.showLights)) c.ui.showLights = !c.ui.showLights;
+    ImGui::Separator();
+    if (menuItem("Edit", "Delete selected", "Del", false, !e.selection().empty()))
+        e.removeSelected(&c.ui.message);
+    if (menuItem("Edit", "Random velocities", "J")) e.kick();
+}
+
+static void simulationMenu(UiContext& c) {
+    Editor& e = c.editor;
+    if (menuItem("Simulation", e.simulation().playing() ? "Pause" : "Play", "Space")) e.togglePlay();
+    if (menuItem("Simulation", "Step")) e.step();
+    if (menuItem("Simulation", "Reset", nullptr, false, e.simulation().canReset())) e.resetSimulation();
+    ImGui::Separator();
+    if (menuItem("Simulation", "Settings", nullptr, c.ui.showSimulation))
+        c.ui.showSimulation = !c.ui.showSimulation;
+}
+
+static void viewMenu(UiContext& c) {
+    UiState& ui = c.ui;
+    if (menuItem("View", "Camera and render", nullptr, ui.showView)) ui.showView = !ui.showView;
+    if (ImGui::BeginMenu("Debug view")) {
+        for (int m = 0; m < kRenderModeCount; ++m)
+            if (menuItem("View", renderModeName(RenderMode(m)), nullptr, int(ui.render.mode) == m))
+                ui.render.mode = RenderMode(m);
+        ImGui::EndMenu();
+    }
+    if (menuItem("View", "Orbit preview", "1", ui.previewOrbit)) ui.previewOrbit = !ui.previewOrbit;
+    if (menuItem("View", "Statistics", nullptr, ui.showStats)) ui.showStats = !ui.showStats;
+    if (menuItem("View", "Screenshot", "F12")) ui.wantScreenshot = true;
+}
+
+void drawMenuBar(UiContext& c) {
+    if (!ImGui::BeginMainMenuBar()) return;
+    if (beginMenu("File")) { fileMenu(c); ImGui::EndMenu(); }
+    if (beginMenu("Edit")) { editMenu(c); ImGui::EndMenu(); }
+    if (beginMenu("Simulation")) { simulationMenu(c); ImGui::EndMenu(); }
+    if (beginMenu("View")) { viewMenu(c); ImGui::EndMenu(); }
+    if (beginMenu("Help")) {
+        if (menuItem("Help", "Controls", nullptr, c.ui.showHelp)) c.ui.showHelp = !c.ui.showHelp;
+        ImGui::EndMenu();
+    }
+    ImGui::EndMainMenuBar();
+}
+
+static void ctrlShortcut(UiContext& c, const KeyPress& k) {
+    const bool shift = k.mods & GLFW_MOD_SHIFT;
+    switch (k.key) {
+        case GLFW_KEY_N: request(c, Leave::NewScene); break;
+        case GLFW_KEY_O: c.ui.wantOpen = true; break;
+        case GLFW_KEY_S: shift ? void(c.ui.wantSaveAs = true) : saveFile(c); break;
+        case GLFW_KEY_Z: shift ? void(c.editor.redo()) : void(c.editor.undo()); break;
+        case GLFW_KEY_Y: c.editor.redo(); break;
+        default: break;
+    }
+}
+
+static void plainShortcut(UiContext& c, const KeyPress& k) {
+    Editor& e = c.editor;
+    switch (k.key) {
+        case GLFW_KEY_SPACE: e.togglePlay(); break;
+        case GLFW_KEY_DELETE: e.removeSelected(&c.ui.message); break;
+        case GLFW_KEY_J: e.kick(); break;
+        case GLFW_KEY_1: c.ui.previewOrbit = !c.ui.previewOrbit; break;
+        case GLFW_KEY_ESCAPE: request(c, Leave::Exit); break;
+        default: break;
+    }
+}
+
+// Keys reach the editor only when ImGui is not typing into a field or showing a prompt.
+void handleShortcuts(UiContext& c, const std::vector<KeyPress>& keys) {
+    const bool imguiHasKeys = ImGui::GetIO().WantCaptureKeyboard;
+    for (const KeyPress& k : keys) {
+        if (k.key == GLFW_KEY_F12) c.ui.wantScreenshot = true;  // even over a dialog
+        else if (imguiHasKeys) continue;
+        else if (k.mods & GLFW_MOD_CONTROL) ctrlShortcut(c, k);
+        else plainShortcut(c, k);
+    }
+}
+
+}  // namespace mb

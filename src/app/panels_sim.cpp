@@ -1,0 +1,57 @@
+// panels_sim.cpp — Simulation: Play/Pause, Step, Reset, and the world the spheres fall in.
+#include "ui.h"
+#include "widgets.h"
+
+#include <imgui.h>
+
+namespace mb {
+
+static void controls(UiContext& c) {
+    Editor& e = c.editor;
+    if (ImGui::Button(e.simulation().playing() ? "Pause" : "Play")) e.togglePlay();
+    markItem("Simulation/PlayPause");
+    ImGui::SameLine();
+    if (ImGui::Button("Step")) e.step();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!e.simulation().canReset());
+    if (ImGui::Button("Reset")) e.resetSimulation();
+    ImGui::EndDisabled();
+}
+
+static void worldFields(UiContext& c) {
+    World w = c.editor.scene().world;
+    FieldEdit e{false, 0, &c.ui.message};
+    fieldFloat("gravity", Field::Gravity, &w.gravity, e);
+    fieldFloat("restitution", Field::Restitution, &w.restitution, e);
+    fieldFloat("friction", Field::Friction, &w.friction, e);
+    fieldFloat("floor", Field::Floor, &w.floor, e);
+    fieldFlag("ground", &w.ground, e);
+    if (e.changed) c.editor.edit("Edit world", [&](Scene& s) { s.world = w; }, e.key);
+}
+
+static void statistics(const Simulation& sim) {
+    const PhysicsWorld* w = sim.world();
+    if (!w) {
+        ImGui::TextDisabled("not started");
+        return;
+    }
+    ImGui::Text("steps %lld   bodies %d   awake %d", w->stepCount(), w->bodyCount(), w->stats().awake);
+    ImGui::Text("contacts %d   deepest overlap %.4f m", w->stats().contacts, w->stats().maxPenetration);
+    ImGui::Text("energy %.3f J", w->kineticEnergy() + w->potentialEnergy());
+}
+
+void drawSimulationWindow(UiContext& c) {
+    if (!c.ui.showSimulation) return;
+    ImGui::SetNextWindowPos(ImVec2(380, 30), ImGuiCond_FirstUseEver);
+    if (ImGui::Begin("Simulation", &c.ui.showSimulation, ImGuiWindowFlags_AlwaysAutoResize)) {
+        controls(c);
+        ImGui::Separator();
+        worldFields(c);
+        fieldErrorLine(c.ui.message);
+        ImGui::Separator();
+        statistics(c.editor.simulation());
+    }
+    ImGui::End();
+}
+
+}  // namespace mb

@@ -1,0 +1,139 @@
+// panels_view.cpp — View: camera and render settings, debug views; Help; the statistics
+// overlay; the shader log.
+#include "ui.h"
+#include "widgets.h"
+
+#include <algorithm>
+#include <imgui.h>
+
+namespace mb {
+
+void FrameStats::add(double seconds) {
+    frameMs[next] = float(seconds * 1000.0);
+    next = (next + 1) % kHistory;
+    count = std::min(count + 1, kHistory);
+    // Frames per second over the last half of the plot: steadier than one frame's reciprocal.
+    const int n = std::min(count, kHistory / 2);
+    float total = 0.0f;
+    for (int i = 1; i <= n; ++i) total += frameMs[(next - i + kHistory) % kHistory];
+    fps = total > 0.0f ? 1000.0f * float(n) / total : 0.0f;
+}
+
+static const char* const kShadowNames[] = {"none", "hard", "soft"};
+
+static void cameraFields(UiContext& c) {
+    Camera cam = c.editor.scene().camera;
+    FieldEdit e{false, 0, &c.ui.message};
+    fieldVec3("position", Field::Position, &cam.pos, e);
+    fieldVec3("target", Field::Position, &cam.target, e);
+    fieldFloat("fov", Field::Fov, &cam.fov, e);
+    if (e.changed) c.editor.edit("Edit camera", [&](Scene& s) { s.camera = cam; }, e.key);
+    ImGui::Checkbox("orbit preview (1)", &c.ui.previewOrbit);
+}
+
+static void renderFields(UiContext& c) {
+    RenderSettings r = c.editor.scene().render;
+    FieldEdit e{false, 0, &c.ui.message};
+    fieldInt("steps", Field::Steps, &r.steps, e);
+    fieldFloat("epsilon", Field::Epsilon, &r.epsilon, e);
+    fieldCombo("shadows", &r.shadows, kShadowNames, 3, e);
+    fieldInt("reflections", Field::Reflections, &r.reflections, e);
+    fieldFloat("fog", Field::Fog, &r.fog, e);
+    fieldFlag("ambient occlusion", &r.ao, e);
+    fieldInt("anti-aliasing", Field::Aa, &r.aa, e);
+    if (e.changed) c.editor.edit("Edit render settings", [&](Scene& s) { s.render = r; }, e.key);
+}
+
+static void debugView(UiState& ui) {
+    const char* names[kRenderModeCount];
+    for (int m = 0; m < kRenderModeCount; ++m) names[m] = renderModeName(RenderMode(m));
+    int mode = int(ui.render.mode);
+    if (ImGui::Combo("debug view", &mode, names, kRenderModeCount)) ui.render.mode = RenderMode(mode);
+    ImGui::Checkbox("uber shader", &ui.render.uber);
+}
+
+static void viewWindow(UiContext& c) {
+    if (!c.ui.showView) return;
+    ImGui::SetNextWindowPos(ImVec2(380, 260), ImGuiCond_FirstUseEver);
+    if (ImGui::Begin("View", &c.ui.showView, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::TextDisabled("Camera");
+        cameraFields(c);
+        ImGui::Separator();
+        ImGui::TextDisabled("Render (saved with the scene)");
+        renderFields(c);
+        ImGui::Separator();
+        debugView(c.ui);
+        fieldErrorLine(c.ui.message);
+    }
+    ImGui::End();
+}
+
+static void helpWindow(UiState& ui) {
+    if (!ui.showHelp) return;
+    if (ImGui::Begin("Controls", &ui.showHelp, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::TextUnformatted(
+            "Left drag            orbit the camera about its target\n"
+            "Wheel                zoom\n"
+            "Middle / Shift drag  pan\n"
+            "W A S D, Q E         fly; 1 toggles an orbit preview\n"
+            "Left click           select the object under the mouse\n"
+            "Right click          edit the object under the mouse\n"
+            "Ctrl drag            move the selected object over the ground\n"
+            "Delete               delete the selection\n"
+            "J                    random velocities for the dynamic spheres\n"
+            "Space                play / pause the simulation\n"
+            "Ctrl+Z, Ctrl+Y       undo, redo (a simulation run is one step)\n"
+            "Ctrl+N, Ctrl+O, Ctrl+S   new, open, save\n"
+            "F12                  screenshot (PNG)\n"
+            "Esc                  quit, asking first about unsaved changes\n"
+            "Drop a .txt file on the window to open it.");
+    }
+    ImGui::End();
+}
+
+static void statsOverlay(UiContext& c) {
+    if (!c.ui.showStats) return;
+    const FrameStats& s = c.stats;
+    ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 10, 30), ImGuiCond_Always, ImVec2(1, 0));
+    ImGui::SetNextWindowBgAlpha(0.6f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+    if (ImGui::Begin("##stats", nullptr, flags)) {
+        float last = s.frameMs[(s.next + FrameStats::kHistory - 1) % FrameStats::kHistory];
+        float worst = *std::max_element(s.frameMs, s.frameMs + FrameStats::kHistory);
+        ImGui::Text("%.1f FPS   %.2f ms", s.fps, last);
+        ImGui::PlotLines("##frames", s.frameMs, FrameStats::kHistory, s.next, "frame ms", 0.0f,
+                         std::max(worst, 1.0f), ImVec2(200, 40));
+        ImGui::Text("%zu objects%s", c.editor.scene().objects.size(),
+                    c.editor.simulation().playing() ? "   playing" : "");
+    }
+    ImGui::End();
+}
+
+static void shaderLogWindow(const std::string& log) {
+    if (log.empty()) return;
+    // Along the bottom, so the scene the last good program draws stays in view above it.
+    ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(10, display.y - 10), ImGuiCond_FirstUseEver, ImVec2(0, 1));
+    ImGui::SetNextWindowSize(ImVec2(std::min(620.0f, display.x - 20), 150), ImGuiCond_FirstUseEver);
+    if (ImGui::Begin("Shader error")) {
+        ImGui::TextUnformatted("The last program that compiled keeps drawing. Fix the file in "
+                               "shaders/ and it reloads.");
+        ImGui::Separator();
+        ImGui::BeginChild("log");
+        ImGui::TextUnformatted(log.c_str());
+        ImGui::EndChild();
+        markItem("Shader error/log");
+    }
+    ImGui::End();
+}
+
+void drawViewWindows(UiContext& c) {
+    viewWindow(c);
+    helpWindow(c.ui);
+    statsOverlay(c);
+    shaderLogWindow(c.shaderLog);
+}
+
+}  // namespace mb

@@ -1,0 +1,99 @@
+// scene_view.cpp — renderer upkeep for the window: uploads, highlight, hot reload, screenshots.
+#include "scene_view.h"
+
+#include "marchbox/editor/events.h"
+#include "marchbox/gl/shader.h"
+#include "marchbox/image.h"
+
+#include <cstdio>
+#include <filesystem>
+
+namespace mb {
+
+SceneView::SceneView() : shaders_(shaderDir()) {}
+
+bool SceneView::init(const Scene& scene, std::string* error) {
+    renderer_ = std::make_unique<Renderer>();
+    if (!renderer_->init(error)) return false;
+    // A scene whose shader fails still opens: the log window says why.
+    if (!renderer_->setScene(scene, options_, &log_)) emitEvent("shader-error");
+    return true;
+}
+
+static bool sameOptions(const RenderOptions& a, const RenderOptions& b) {
+    return a.mode == b.mode && a.uber == b.uber;
+}
+
+void SceneView::sync(const Scene& scene, uint64_t version, const RenderOptions& options,
+                     double now) {
+    if (version == version_ && sameOptions(options, options_)) return;
+    // After a failure, a scene that changes every frame (a running simulation) would recompile
+    // the broken shader every frame: try again at most once a second.
+    if (now < retryAt_ && sameOptions(options, options_)) return;
+    options_ = options;
+    version_ = version;
+    std::string error;
+    if (renderer_->setScene(scene, options_, &error)) return;
+    log_ = error;
+    retryAt_ = now + 1.0;
+    emitEvent("shader-error");
+}
+
+void SceneView::draw(int width, int height, int selectedObject) {
+    if (const Program* p = renderer_->program()) {
+        // lighting.glsl tints object uHighlight - 1; 0, the default, tints nothing.
+        glUseProgram(p->id());
+        glUniform1i(p->uniform("uHighlight"), selectedObject + 1);
+    }
+    renderer_->draw(width, height);
+}
+
+void SceneView::pollShaders(const Scene& scene, double now) {
+    if (now < nextPoll_) return;
+    nextPoll_ = now + 0.5;
+    if (shaders_.changed()) reload(scene);
+}
+
+bool SceneView::reload(const Scene& scene) {
+    auto fresh = std::make_unique<Renderer>();
+    std::string error;
+    if (fresh->init(&error) && fresh->setScene(scene, options_, &error)) {
+        renderer_ = std::move(fresh);
+        log_.clear();
+        retryAt_ = 0.0;
+        emitEvent("shaders reloaded");
+        return true;
+    }
+    log_ = error;
+    version_ = ~0ull;  // the fresh renderer may have rebound buffers: upload the old one again
+    emitEvent("shader-error");
+    return false;
+}
+
+static std::string freeScreenshotName(const std::string& folder) {
+    namespace fs = std::filesystem;
+    for (int i = 1;; ++i) {
+        char name[32];
+        std::snprintf(name, sizeof name, "marchbox-%04d.png", i);
+        fs::path p = fs::path(folder) / name;
+        std::error_code ec;
+        if (!fs::exists(p, ec)) return p.string();
+    }
+}
+
+bool saveScreenshot(int width, int height, const std::string& folder, std::string* path,
+                    std::string* error) {
+    if (width <= 0 || height <= 0) {
+        *error = "nothing to capture: the window has no area";
+        return false;
+    }
+    Image img = makeImage(width, height);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    for (int row = 0; row < height; ++row)  // GL's row 0 is the bottom
+        glReadPixels(0, height - 1 - row, width, 1, GL_RGBA, GL_UNSIGNED_BYTE, img.pixel(0, row));
+    for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;  // the window is opaque
+    *path = freeScreenshotName(folder);
+    return savePng(*path, img, error);
+}
+
+}  // namespace mb

@@ -1,0 +1,66 @@
+// ui.h — the ImGui side of the editor: which windows are open, the dialogs' fields, and one
+// draw function per group of panels (panels_*.cpp).
+#pragma once
+
+#include "marchbox/editor/editor.h"
+#include "marchbox/gl/renderer.h"
+#include "window.h"
+
+#include <string>
+#include <vector>
+
+namespace mb {
+
+// Frame timing for the statistics overlay.
+struct FrameStats {
+    static constexpr int kHistory = 120;
+    float frameMs[kHistory] = {};  // a ring, newest at `next - 1`
+    int next = 0, count = 0;       // count: frames recorded, up to kHistory
+    float fps = 0.0f;              // over the last kHistory / 2 frames
+    void add(double seconds);
+};
+
+struct UiState {
+    // Windows, toggled from the menus.
+    bool showObjects = true, showMaterials = false, showLights = false;
+    bool showSimulation = false, showView = false, showHelp = false, showStats = true;
+
+    // Requests raised by menus and shortcuts, carried out by drawDialogs() this frame.
+    bool wantOpen = false, wantSaveAs = false, wantObjectPopup = false, wantScreenshot = false;
+    std::string pathField;                 // the Open and Save As dialogs' path
+    std::vector<std::string> openErrors;   // FILE:LINE lines of the last failed open
+    bool saveThenLeave = false;            // Save As was asked for by the unsaved-changes prompt
+
+    std::string message;                   // the last refusal or failure, shown in red
+    RenderOptions render;                  // debug view and uber shader
+    bool previewOrbit = false;             // key 1
+    std::string scenesDir;                 // scenes/ of the source tree, for File > Open
+};
+
+// What the panels need from the rest of the window.
+struct UiContext {
+    Editor& editor;
+    UiState& ui;
+    const FrameStats& stats;
+    const std::string& shaderLog;
+};
+
+// [panels_menu.cpp] the main menu bar and the shortcuts that mirror its items.
+void drawMenuBar(UiContext& c);
+void handleShortcuts(UiContext& c, const std::vector<KeyPress>& keys);
+
+// [panels_file.cpp] Open, Save As, the unsaved-changes prompt and load errors.
+void drawDialogs(UiContext& c);
+void openFile(UiContext& c, const std::string& path);  // through the unsaved-changes prompt
+void saveFile(UiContext& c);                           // Save As when the scene has no file
+
+// [panels_edit.cpp] objects, materials, lights, and the right-click popup.
+void drawEditWindows(UiContext& c);
+
+// [panels_sim.cpp] Play, Pause, Step, Reset and the world's settings.
+void drawSimulationWindow(UiContext& c);
+
+// [panels_view.cpp] camera, render settings, debug views, help, statistics, shader log.
+void drawViewWindows(UiContext& c);
+
+}  // namespace mb

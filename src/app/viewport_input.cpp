@@ -1,0 +1,94 @@
+// viewport_input.cpp — orbit, pan, zoom, fly; click to select; right click to edit; Ctrl drag
+// to move over the ground.
+#include "viewport_input.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <glm/common.hpp>
+#include <imgui.h>
+
+namespace mb {
+
+glm::vec2 ViewportInput::pixel(glm::vec2 mouse) const {
+    // The centre of the framebuffer pixel under the mouse, counted from the bottom as GL does.
+    glm::vec2 fb = glm::floor(mouse * scale_);
+    return {fb.x + 0.5f, view_.y - fb.y - 0.5f};
+}
+
+void ViewportInput::update(UiContext& c, glm::vec2 framebufferSize, float seconds) {
+    ImGuiIO& io = ImGui::GetIO();
+    view_ = framebufferSize;
+    scale_ = {io.DisplayFramebufferScale.x, io.DisplayFramebufferScale.y};
+    if (drag_ == Drag::None && !io.WantCaptureMouse) press(c);
+    if (drag_ != Drag::None) hold(c);
+    if (!io.WantCaptureMouse && io.MouseWheel != 0.0f) zoomCamera(c.editor.view(), io.MouseWheel, controls_);
+    keys(c, seconds);
+    if (c.ui.previewOrbit) previewOrbit(c.editor.view(), seconds, controls_);
+}
+
+void ViewportInput::press(UiContext& c) {
+    ImGuiIO& io = ImGui::GetIO();
+    glm::vec2 at = pixel({io.MousePos.x, io.MousePos.y});
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) {
+        if (c.editor.pick(at, view_) >= 0) c.ui.wantObjectPopup = true;
+        return;
+    }
+    moved_ = false;
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Middle)) {
+        drag_ = Drag::Pan;
+        button_ = ImGuiMouseButton_Middle;
+        return;
+    }
+    if (!ImGui::IsMouseClicked(ImGuiMouseButton_Left)) return;
+    button_ = ImGuiMouseButton_Left;
+    drag_ = io.KeyShift ? Drag::Pan : Drag::Orbit;
+    if (io.KeyCtrl) {
+        int hit = c.editor.pick(at, view_);
+        if (hit >= 0 && ground_.begin(c.editor.scene(), hit, at, view_)) {
+            drag_ = Drag::Move;
+            ++moves_;
+        }
+    }
+}
+
+void ViewportInput::hold(UiContext& c) {
+    ImGuiIO& io = ImGui::GetIO();
+    if (!ImGui::IsMouseDown(button_)) return release(c);
+    moved_ = moved_ || ImGui::IsMouseDragging(button_);
+    glm::vec2 delta(io.MouseDelta.x, io.MouseDelta.y);
+    if (!moved_ || delta == glm::vec2(0.0f)) return;
+    switch (drag_) {
+        case Drag::Orbit: orbitCamera(c.editor.view(), delta, controls_); break;
+        case Drag::Pan: panCamera(c.editor.view(), delta * scale_.y, view_.y); break;
+        case Drag::Move: {
+            glm::vec3 pos;
+            if (ground_.follow(c.editor.scene().camera, pixel({io.MousePos.x, io.MousePos.y}), view_, &pos))
+                c.editor.moveObject(ground_.object, pos, 0x4d6f7665ull << 32 | moves_);  // "Move"
+            break;
+        }
+        case Drag::None: break;
+    }
+}
+
+void ViewportInput::release(UiContext& c) {
+    // A left press that never became a drag is a click: select what is under it.
+    if (drag_ == Drag::Orbit && !moved_) {
+        ImGuiIO& io = ImGui::GetIO();
+        c.editor.pick(pixel({io.MousePos.x, io.MousePos.y}), view_);
+    }
+    if (drag_ == Drag::Move) c.editor.endEdit();
+    ground_.end();
+    drag_ = Drag::None;
+}
+
+void ViewportInput::keys(UiContext& c, float seconds) {
+    ImGuiIO& io = ImGui::GetIO();
+    if (io.WantCaptureKeyboard || io.KeyCtrl) return;
+    auto axis = [](int minus, int plus) {
+        return float(ImGui::IsKeyDown(plus)) - float(ImGui::IsKeyDown(minus));
+    };
+    glm::vec3 move(axis(GLFW_KEY_A, GLFW_KEY_D), axis(GLFW_KEY_Q, GLFW_KEY_E), axis(GLFW_KEY_S, GLFW_KEY_W));
+    if (move != glm::vec3(0.0f)) flyCamera(c.editor.view(), move, seconds, controls_);
+}
+
+}  // namespace mb

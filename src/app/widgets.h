@@ -1,0 +1,45 @@
+// widgets.h — ImGui fields that only ever hand back values the scene format allows, and marks
+// that tell the event log where a widget is (end-to-end tests click them like a person would).
+#pragma once
+
+#include "marchbox/editor/fields.h"
+
+#include <glm/vec3.hpp>
+#include <imgui.h>
+#include <string>
+
+namespace mb {
+
+// What a panel's fields did this frame: whether one changed, which widget (its ImGui id keys the
+// undo step, so one drag is one step), and why a typed value was refused.
+struct FieldEdit {
+    bool changed = false;
+    ImGuiID key = 0;
+    std::string* error = nullptr;  // the panel's message line
+};
+
+// Sliders for fields bounded on both sides, drags for the rest; Ctrl+click types a value.
+// Each writes *v only when the new value passes validateField().
+void fieldFloat(const char* label, Field f, float* v, FieldEdit& e);
+void fieldInt(const char* label, Field f, int* v, FieldEdit& e);
+void fieldVec3(const char* label, Field f, glm::vec3* v, FieldEdit& e);
+void fieldColor(const char* label, Field f, glm::vec3* v, FieldEdit& e);  // picker, HDR allowed
+void fieldFlag(const char* label, bool* v, FieldEdit& e);
+void fieldCombo(const char* label, int* v, const char* const names[], int count, FieldEdit& e);
+
+// The refusal of the last typed value, in red, while there is one.
+void fieldErrorLine(const std::string& error);
+
+// With the event log on, writes "widget NAME X Y" (the last item's centre in window pixels)
+// when the item shows up or moves.
+void markItem(const std::string& name);
+
+// With the event log on, writes "typing NAME" when the last item (a text field) takes the
+// keyboard: from then on typed characters reach it.
+void markTyping(const std::string& name);
+
+// Writes "popup NAME open" or "popup NAME closed" when a popup's state changes; call it every
+// frame with what BeginPopup returned.
+void markPopup(const std::string& name, bool open);
+
+}  // namespace mb

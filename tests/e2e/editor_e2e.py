@@ -1,0 +1,328 @@
+#!/usr/bin/env python3
+"""editor_e2e.py — the editor in a real X window, driven with xdotool as a person would.
+
+Usage: editor_e2e.py CASE MARCHBOX SCENE WORKDIR   (run inside xvfb-run; see run_e2e.sh)
+
+The editor runs with MARCHBOX_EVENT_LOG=1: it prints one line per thing it does ("select
+object 0", "save /path") and, for each widget a test clicks, "widget NAME X Y" with the widget's
+centre. Tests read those lines to know where to click and when the editor has acted; what they
+check comes from the editor's own screenshots (F12) and the files it saves.
+"""
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from png import read_png  # noqa: E402
+
+WINDOW = (640, 400)  # small: a software renderer draws it a few times a second
+HOLD = 0.4           # s a key or button stays down: longer than a slow frame
+
+
+class Failure(Exception):
+    pass
+
+
+def check(condition, message):
+    if not condition:
+        raise Failure(message)
+
+
+def xdotool(*args):
+    return subprocess.run(['xdotool', *map(str, args)], check=True, capture_output=True,
+                          text=True).stdout
+
+
+class Editor:
+    """One running marchbox and the person at its keyboard."""
+
+    def __init__(self, binary, scene, workdir, **env_extra):
+        self.workdir = workdir
+        env = dict(os.environ, MARCHBOX_EVENT_LOG='1', MARCHBOX_SCREENSHOT_DIR=workdir,
+                   MARCHBOX_WINDOW_SIZE='%dx%d' % WINDOW, **env_extra)
+        self.log_path = os.path.join(workdir, 'events.log')
+        self.err_path = os.path.join(workdir, 'stderr.log')
+        with open(self.log_path, 'w') as out, open(self.err_path, 'w') as err:
+            self.proc = subprocess.Popen([binary, scene], cwd=workdir, env=env, stdout=out, stderr=err)
+        self.seen = 0  # events consumed by wait()
+        self.wait('ready', timeout=90)
+        self.wid = xdotool('search', '--sync', '--name', '^Marchbox').split()[0]
+        xdotool('windowfocus', '--sync', self.wid)
+        self.move(WINDOW[0] // 2, WINDOW[1] - 20)
+
+    # [events] ---------------------------------------------------------------
+    def events(self):
+        with open(self.log_path) as f:
+            return f.read().splitlines()
+
+    def wait(self, prefix, timeout=30):
+        """The next event starting with prefix, after those already waited for."""
+        deadline = time.time() + timeout
+        while time.time() < deadline:
+            lines = self.events()
+            for i in range(self.seen, len(lines)):
+                if lines[i].startswith(prefix):
+                    self.seen = i + 1
+                    return lines[i]
+            if self.proc.poll() is not None:
+                break
+            time.sleep(0.05)
+        raise Failure('no event "%s" within %ds; events: %s; stderr: %s' % (
+            prefix, timeout, [l for l in self.events() if not l.startswith('widget')][-12:],
+            open(self.err_path).read()[-800:]))
+
+    def widget(self, name, fresh=True, timeout=30):
+        """Centre of a widget as now drawn. fresh: from a mark written after the last event
+        waited for (a popup that opened since); otherwise from any mark (the menu bar)."""
+        deadline = time.time() + timeout
+        while time.time() < deadline:
+            lines = self.events()
+            for line in reversed(lines[self.seen if fresh else 0:]):
+                if line.startswith('widget %s ' % name):
+                    x, y = line.rsplit(' ', 2)[1:]
+                    return int(x), int(y)
+            time.sleep(0.05)
+        raise Failure('widget "%s" never drawn' % name)
+
+    # [hands] ----------------------------------------------------------------
+    def move(self, x, y):
+        xdotool('mousemove', '--window', self.wid, x, y)
+        time.sleep(0.1)
+
+    def click(self, x, y, button=1):
+        self.move(x, y)
+        xdotool('mousedown', button)
+        time.sleep(HOLD)
+        xdotool('mouseup', button)
+        time.sleep(0.1)
+
+    def click_widget(self, name, fresh=True):
+        self.click(*self.widget(name, fresh))
+
+    def menu(self, title, item):
+        """Opens a menu of the menu bar and picks an item, as a person would."""
+        self.click_widget(title, fresh=False)
+        self.wait('popup menu %s open' % title)
+        self.click_widget('%s/%s' % (title, item))
+
+    def key(self, combo):
+        xdotool('keydown', combo)
+        time.sleep(HOLD)
+        xdotool('keyup', combo)
+        time.sleep(0.05)
+
+    def type(self, text):
+        xdotool('type', '--delay', 40, text)
+
+    # [results] --------------------------------------------------------------
+    def screenshot(self):
+        self.key('F12')
+        return read_png(self.wait('screenshot ').split(' ', 1)[1])
+
+    def finish(self, timeout=30):
+        try:
+            return self.proc.wait(timeout)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+            raise Failure('the editor did not exit')
+
+
+# [scene maths] ----------------------------------------------------------------
+def scene_values(path, kind, key):
+    """Each `kind` record's `key` value, as a list of floats, in file order."""
+    out = []
+    for line in open(path):
+        fields = line.split()
+        if fields and fields[0] == kind:
+            for f in fields[1:]:
+                k, _, v = f.partition(':')
+                if k == key:
+                    out.append([float(x) for x in v.split(',')])
+    return out
+
+
+def project(scene, point):
+    """Window pixel (top-left origin) where `point` shows, as src/core/camera.cpp builds rays."""
+    pos, target = scene_values(scene, 'camera', 'pos')[0], scene_values(scene, 'camera', 'target')[0]
+    fov = scene_values(scene, 'camera', 'fov')[0][0]
+    sub = lambda a, b: [a[i] - b[i] for i in range(3)]
+    dot = lambda a, b: sum(a[i] * b[i] for i in range(3))
+    cross = lambda a, b: [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    unit = lambda a: [c / math.sqrt(dot(a, a)) for c in a]
+    forward = unit(sub(target, pos))
+    right = unit(cross(forward, [0, 1, 0]))
+    up = cross(right, forward)
+    d = sub(point, pos)
+    s = math.tan(math.radians(fov) / 2) * dot(d, forward)
+    u, v = dot(d, right) / s, dot(d, up) / s  # uv = (2·pixel − size) / height
+    w, h = WINDOW
+    return int(round((u * h + w) / 2)), int(round(h - (v * h + h) / 2))
+
+
+def is_red(rgb):
+    return rgb[0] > 120 and rgb[1] < 90 and rgb[2] < 90
+
+
+# [cases] ----------------------------------------------------------------------
+def case_startup(app, scene):
+    """The first screenshot shows the menu bar over the scene."""
+    img = app.screenshot()
+    check((img.width, img.height) == WINDOW, 'screenshot is %dx%d' % (img.width, img.height))
+    bar = [img.pixel(x, 9) for x in range(300, 600)]  # past the menu titles
+    dark = sum(1 for p in bar if max(p) < 60 and max(p) - min(p) < 8)
+    check(dark > 0.9 * len(bar), 'no menu bar along the top: %s' % (bar[:3],))
+    sky = img.pixel(390, 60)  # between the Objects panel and the statistics
+    check(sky[2] > sky[0] + 20, 'no sky at the top: %s' % (sky,))
+    x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
+    check(is_red(img.pixel(x, y)), 'no red sphere at %d,%d: %s' % (x, y, img.pixel(x, y)))
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def case_save_as(app, scene):
+    """File > Save As… writes a file under a new name that `marchbox check` accepts."""
+    target = os.path.join(app.workdir, 'saved-as.txt')
+    app.menu('File', 'Save As...')
+    app.wait('typing Save scene as/path')
+    app.type(target)
+    app.key('Return')
+    check(app.wait('save ') == 'save ' + target, 'saved elsewhere')
+    result = subprocess.run([MARCHBOX, 'check', target], capture_output=True, text=True)
+    check(result.returncode == 0 and not result.stdout + result.stderr,
+          'saved file does not load: %s' % result.stderr)
+    check(scene_values(target, 'object', 'pos') == scene_values(scene, 'object', 'pos'),
+          'saved file has other objects')
+    app.key('Escape')  # saved: no question
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def case_select(app, scene):
+    """A click on a sphere selects and highlights it; Delete removes it; Ctrl+Z brings it back."""
+    x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
+    before = app.screenshot().pixel(x, y)
+    app.click(x, y)
+    check(app.wait('select ') == 'select object 0', 'the red sphere was not selected')
+    after = app.screenshot().pixel(x, y)
+    check(after[1] > before[1] + 40, 'no highlight: %s then %s' % (before, after))
+    app.click(390, 60)  # the sky
+    check(app.wait('select ') == 'select none', 'clicking the sky kept a selection')
+    app.click(x, y)
+    app.wait('select object 0')
+    app.key('Delete')
+    app.wait('edit Delete object')
+    check(not is_red(app.screenshot().pixel(x, y)), 'the sphere is still drawn')
+    app.key('ctrl+z')
+    app.wait('undo Delete object')
+    check(is_red(app.screenshot().pixel(x, y)), 'undo did not bring the sphere back')
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def case_simulate(app, scene):
+    """J and Space move the spheres; Ctrl+Z undoes the run; Esc asks about unsaved changes."""
+    start = scene_values(scene, 'object', 'pos')
+    app.key('j')
+    app.wait('edit Random velocities')
+    app.key('space')
+    app.wait('play')
+    time.sleep(1.5)
+    app.key('space')
+    app.wait('pause')
+    app.key('ctrl+s')
+    app.wait('save ')
+    moved = scene_values(scene, 'object', 'pos')
+    check(moved[0] != start[0] and moved[1] != start[1], 'the spheres did not move: %s' % moved)
+    check(moved[2] == start[2], 'the static box moved')
+    app.key('ctrl+z')
+    check(app.wait('undo ') == 'undo Simulation run', 'undo did not undo the run')
+    app.key('ctrl+s')
+    app.wait('save ')
+    check(scene_values(scene, 'object', 'pos') == start, 'undo did not put the spheres back')
+    check(scene_values(scene, 'object', 'vel')[0] != [0, 0, 0], 'J gave no velocity')
+    app.key('ctrl+z')
+    app.wait('undo Random velocities')
+    app.key('Escape')
+    app.wait('ask exit')
+    app.click_widget('Unsaved changes/Cancel')
+    app.wait('popup Unsaved changes closed')
+    check(app.proc.poll() is None, 'Cancel did not keep the editor open')
+    app.key('Escape')
+    app.wait('ask exit')
+    app.click_widget("Unsaved changes/Don't save")
+    check(app.finish() == 0, 'exit status not 0')
+    check(scene_values(scene, 'object', 'vel')[0] != [0, 0, 0], 'Don\'t save saved')
+
+
+def case_open_error(app, scene):
+    """A file that fails to load leaves the open scene as it was."""
+    bad = os.path.join(app.workdir, 'bad.txt')
+    with open(bad, 'w') as f:
+        f.write('material r:1 g:0 b:0\nobject type:sphere pos:0,1\n')
+    app.key('ctrl+o')
+    app.wait('typing Open scene/path')
+    app.type(bad)
+    app.key('Return')
+    app.wait('open-failed ' + bad)
+    app.click_widget('Cannot open/OK')
+    app.wait('popup Cannot open closed')
+    x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
+    check(is_red(app.screenshot().pixel(x, y)), 'the open scene changed')
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0 (was the scene marked changed?)')
+
+
+def case_shader_reload(app, scene):
+    """A shader edited on disk reloads; a broken one keeps the last good program drawing."""
+    shaders = os.environ['MARCHBOX_SHADERS']
+    lighting = os.path.join(shaders, 'lighting.glsl')
+    good = open(lighting).read()
+    x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
+    y -= 30  # the sphere's upper half: the log window sits along the bottom
+    with open(lighting, 'w') as f:
+        f.write(good.replace('vec3 shade(', 'vec3 shade(this is not GLSL'))
+    app.wait('shader-error', timeout=60)
+    app.widget('Shader error/log')
+    check(is_red(app.screenshot().pixel(x, y)), 'the last good program stopped drawing')
+    # The fix: the sphere's shading comes from the file again, now flat blue to prove it.
+    with open(lighting, 'w') as f:
+        f.write(good.replace('return col;\n}', 'return vec3(0.0, 0.0, 1.0);\n}', 1))
+    app.wait('shaders reloaded', timeout=60)
+    check(app.screenshot().pixel(x, y) == (0, 0, 255), 'the reloaded shader is not in use')
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+CASES = {name[5:]: fn for name, fn in globals().items() if name.startswith('case_')}
+
+
+def main():
+    global MARCHBOX
+    name, MARCHBOX, source, workdir = sys.argv[1:5]
+    shutil.rmtree(workdir, ignore_errors=True)
+    os.makedirs(workdir)
+    scene = os.path.join(workdir, 'work.txt')
+    shutil.copy(source, scene)
+    # Each case edits its own copy of the shaders, never the source tree's.
+    shaders = os.path.join(workdir, 'shaders')
+    here = os.path.dirname(os.path.abspath(__file__))
+    shutil.copytree(os.path.join(here, '..', '..', 'shaders'), shaders)
+    os.environ['MARCHBOX_SHADERS'] = shaders
+    app = Editor(MARCHBOX, scene, workdir)
+    try:
+        CASES[name](app, scene)
+    except Failure as e:
+        print('FAIL %s: %s' % (name, e))
+        return 1
+    finally:
+        if app.proc.poll() is None:
+            app.proc.kill()
+    print('ok %s' % name)
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
