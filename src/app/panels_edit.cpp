@@ -201,7 +201,9 @@ static void itemWindow(UiContext& c, ItemKind k, const char* title, bool* open, 
 static void objectPopup(UiContext& c) {
     if (c.ui.wantObjectPopup) ImGui::OpenPopup(kObjectPopup);
     c.ui.wantObjectPopup = false;
-    if (!ImGui::BeginPopup(kObjectPopup)) return;
+    bool open = ImGui::BeginPopup(kObjectPopup);
+    markPopup(kObjectPopup, open);
+    if (!open) return;
     const int i = c.editor.selection().object();
     if (i < 0) {
         ImGui::CloseCurrentPopup();

@@ -89,7 +89,14 @@ void Editor::edit(const std::string& label, const SceneChange& change, uint64_t 
     sim_.commitRun(doc_);
     doc_.apply(label, change, mergeKey);
     edited();
-    if (mergeKey == 0) emitEvent("edit " + label);
+    // A drag sends an edit every frame: it is told once, when it starts.
+    if (mergeKey == 0 || mergeKey != loggedKey_) emitEvent("edit " + label);
+    loggedKey_ = mergeKey;
+}
+
+void Editor::endEdit() {
+    doc_.seal();
+    loggedKey_ = 0;
 }
 
 void Editor::edited() {

@@ -108,6 +108,7 @@ class Editor:
         self.click_widget(title, fresh=False)
         self.wait('popup menu %s open' % title)
         self.click_widget('%s/%s' % (title, item))
+        self.wait('popup menu %s closed' % title)  # the pick is made: the mouse may move on
 
     def key(self, combo):
         xdotool('keydown', combo)
@@ -218,6 +219,40 @@ def case_select(app, scene):
     app.key('ctrl+z')
     app.wait('undo Delete object')
     check(is_red(app.screenshot().pixel(x, y)), 'undo did not bring the sphere back')
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def case_drag(app, scene):
+    """Right click opens the object's popup; Ctrl-drag moves it over the ground, one undo step."""
+    start = scene_values(scene, 'object', 'pos')
+    x, y = project(scene, start[0])
+    app.click(x, y, button=3)
+    app.wait('select object 0')
+    app.wait('popup object popup open')
+    app.click(390, 60)  # the sky: closes the popup, clears the selection
+    app.wait('popup object popup closed')
+    app.move(x, y)
+    xdotool('keydown', 'ctrl')
+    xdotool('mousedown', 1)
+    for step in range(1, 6):
+        time.sleep(HOLD)
+        app.move(x + 12 * step, y + 4 * step)
+    time.sleep(HOLD)
+    xdotool('mouseup', 1)
+    xdotool('keyup', 'ctrl')
+    app.wait('edit Move object')
+    app.key('ctrl+s')
+    app.wait('save ')
+    moved = scene_values(scene, 'object', 'pos')
+    check(moved[0][1] == start[0][1], 'the drag changed the height: %s' % moved[0])
+    check(moved[0][0] < start[0][0] - 0.2, 'the sphere did not follow the mouse right: %s' % moved[0])
+    check(moved[1:] == start[1:], 'other objects moved')
+    app.key('ctrl+z')
+    app.wait('undo Move object')
+    app.key('ctrl+s')
+    app.wait('save ')
+    check(scene_values(scene, 'object', 'pos') == start, 'one undo did not undo the whole drag')
     app.key('Escape')
     check(app.finish() == 0, 'exit status not 0')
 

@@ -46,7 +46,7 @@ public:
     //-------------------------------------------------------------------------
     // A running simulation's progress is recorded first, so the edit is its own undo step.
     void edit(const std::string& label, const SceneChange& change, uint64_t mergeKey = 0);
-    void endEdit() { doc_.seal(); }  // a widget was released: the next change is a new step
+    void endEdit();  // a widget or drag was released: the next change is a new step
     bool undo();
     bool redo();
 
@@ -93,6 +93,7 @@ private:
     std::string pendingPath_;
     bool quit_ = false;
     uint32_t kicks_ = 0;  // seeds J: different each press, the same in every run
+    uint64_t loggedKey_ = 0;  // the merge key of the edit last told to the event log
 };
 
 }  // namespace mb
