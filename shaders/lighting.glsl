@@ -1,17 +1,43 @@
 // lighting.glsl — Phong with point and directional lights, the floor, the sky and fog.
 
-vec3 sky(vec3 rd) {
-    vec3 zenith = vec3(0.30, 0.50, 0.85), horizon = vec3(0.80, 0.86, 0.92);
+// The gradient leans towards the brightest light's colour; each directional light is a sun.
+vec3 skyGradient(vec3 rd) {
+    vec3 zenith = vec3(0.30, 0.50, 0.85), horizon = vec3(0.80, 0.86, 0.92) * mix(vec3(1.0), uSkyTint, 0.35);
     return rd.y >= 0.0 ? mix(horizon, zenith, sqrt(rd.y)) : mix(horizon, vec3(0.35, 0.33, 0.30), sqrt(-rd.y));
 }
 
-vec3 applyFog(vec3 col, float t) {
+vec3 sunGlow(vec3 rd, float discWeight) {
+    vec3 glow = vec3(0.0);
+    for (int i = 0; i < DIR_LIGHTS; ++i) {
+        Light L = uLights[POINT_LIGHTS + i];
+        float c = max(dot(rd, L.vec.xyz), 0.0);
+        glow += L.color.rgb * (discWeight * smoothstep(0.9995, 0.9997, c) + 0.25 * pow(c, 64.0));
+    }
+    return glow;
+}
+
+// Fog takes the colour of the horizon in the ray's direction, sun glow included.
+vec3 fogColor(vec3 rd) {
+    vec3 level = normalize(vec3(rd.x, 0.0, rd.z) + vec3(0.0, 1e-4, 0.0));
+    return skyGradient(level) + sunGlow(rd, 0.0);
+}
+
+vec3 applyFog(vec3 col, vec3 rd, float t) {
 #if HAS_FOG
     float f = exp(-(uFog * t) * (uFog * t));  // exp² fog
-    return mix(sky(vec3(0.0)), col, f);
+    return mix(fogColor(rd), col, f);
 #else
     return col;
 #endif
+}
+
+// The sky is fogged too, as if it hung at kSkyHeight: at the horizon it melts into the fog,
+// so far ground and sky meet without a seam.
+const float kSkyHeight = 200.0;
+
+vec3 sky(vec3 rd) {
+    vec3 col = skyGradient(rd) + sunGlow(rd, 4.0);
+    return applyFog(col, rd, kSkyHeight / max(rd.y, 1e-3));
 }
 
 struct Surface {
@@ -42,22 +68,25 @@ vec3 phong(Surface s, vec3 p, vec3 n, vec3 rd, vec3 l, vec3 color, float maxT) {
     return color * sh * (s.k.y * diff * s.albedo + s.k.z * spec);
 }
 
+// Occlusion dims the ambient term fully and direct light by half: ambient alone (Ka ~ 0.1)
+// would leave contacts looking unoccluded, and full direct dimming would darken lit creases.
 vec3 shade(Surface s, vec3 p, vec3 n, vec3 rd) {
-    vec3 col = s.k.x * s.albedo;
+    float ao = 1.0;
 #if HAS_AO
 #if UBER
     if (uAo)
 #endif
-    col *= calcAO(p, n);
+    ao = calcAO(p, n);
 #endif
+    vec3 direct = vec3(0.0);
     for (int i = 0; i < POINT_LIGHTS; ++i) {
         vec3 toLight = uLights[i].vec.xyz - p;
         float dist = length(toLight);
-        col += phong(s, p, n, rd, toLight / max(dist, 1e-6), uLights[i].color.rgb, dist);
+        direct += phong(s, p, n, rd, toLight / max(dist, 1e-6), uLights[i].color.rgb, dist);
     }
     for (int i = 0; i < DIR_LIGHTS; ++i) {
         Light L = uLights[POINT_LIGHTS + i];
-        col += phong(s, p, n, rd, L.vec.xyz, L.color.rgb, uMaxDist);
+        direct += phong(s, p, n, rd, L.vec.xyz, L.color.rgb, uMaxDist);
     }
-    return col;
+    return s.k.x * s.albedo * ao + direct * (0.5 + 0.5 * ao);
 }

@@ -18,7 +18,7 @@ vec3 render(vec3 ro, vec3 rd) {
         vec3 p = ro + rd * hit.x;
         vec3 n = calcNormal(p);
         Surface s = surfaceAt(p, int(hit.y));
-        vec3 col = applyFog(shade(s, p, n, rd), hit.x);
+        vec3 col = applyFog(shade(s, p, n, rd), rd, hit.x);
         bool last = bounce == REFLECTIONS || s.kr <= 0.0;
 #if UBER
         last = last || bounce >= uReflections;
@@ -68,23 +68,13 @@ vec3 render(vec3 ro, vec3 rd) {
 #endif
 
 vec3 cameraRay(vec2 pixel) {
-    vec2 uv = (2.0 * pixel - uViewport.zw) / uViewport.w;  // y in [-1, 1], x by aspect
+    vec2 uv = (2.0 * pixel - uResolution) / uResolution.y;  // y in [-1, 1], x by aspect
     return normalize(uCamForward + uv.x * uCamRight + uv.y * uCamUp);
 }
 
+// Supersampling runs as passes, one sample each, added up by blending: a loop here would
+// multiply every march of the pixel inside one invocation.
 void main() {
-    vec2 pixel = gl_FragCoord.xy + uViewport.xy;
-#if UBER
-    int aa = uAA;
-#else
-    const int aa = AA;
-#endif
-    vec3 col = vec3(0.0);
-    for (int j = 0; j < AA; ++j)
-        for (int i = 0; i < AA; ++i) {
-            if (i >= aa || j >= aa) continue;
-            vec2 offset = (vec2(i, j) + 0.5) / float(aa) - 0.5;
-            col += render(uCamPos, cameraRay(pixel + offset));
-        }
-    fragColor = vec4(clamp(col / float(aa * aa), 0.0, 1.0), 1.0);
+    vec3 col = render(uCamPos, cameraRay(floor(gl_FragCoord.xy) + uSubpixel));
+    fragColor = vec4(clamp(col, 0.0, 1.0), 1.0) * uSampleWeight;
 }

@@ -81,7 +81,7 @@ float hardShadow(vec3 ro, vec3 rd, float maxT) {
 // Penumbra from the nearest miss, with the improved estimate that uses the previous step to
 // place the closest approach between samples (Quilez 2018); the sqrt argument is clamped.
 float softShadow(vec3 ro, vec3 rd, float maxT) {
-    const float k = 8.0;
+    float k = uSoftness;
     float res = 1.0, t = 0.0, ph = 1e10;
     for (int i = 0; i < SHADOW_STEPS; ++i) {
         vec3 m = mapAlong(ro + rd * t, rd);

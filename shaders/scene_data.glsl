@@ -36,15 +36,19 @@ uniform vec3 uCamPos;
 uniform vec3 uCamRight;     // scaled by tan(fov/2)
 uniform vec3 uCamUp;        // scaled by tan(fov/2)
 uniform vec3 uCamForward;
-uniform vec4 uViewport;     // this draw's pixel offset xy in the whole image, image size zw
+uniform vec2 uResolution;      // the whole image, in pixels
+uniform vec2 uSubpixel;        // this pass's sample position inside the pixel, 0..1
+uniform float uSampleWeight;   // 1 / samples: the passes add up in the accumulation target
 uniform float uEpsilon;
 uniform float uPixelRadius;  // half a pixel's footprint per metre along a primary ray
 uniform float uMaxDist;
 uniform float uFloor;
 uniform float uFog;
+uniform vec3 uSkyTint;      // the brightest light's colour, largest channel 1
+uniform float uSoftness;    // soft-shadow sharpness k: larger is harder
 
 #if UBER
-uniform int uObjectCount, uPointLights, uDirLights, uSteps, uShadows, uReflections, uAA;
+uniform int uObjectCount, uPointLights, uDirLights, uSteps, uShadows, uReflections;
 uniform bool uGround, uAo, uUseGrid;
 #define OBJECT_COUNT uObjectCount
 #define POINT_LIGHTS uPointLights

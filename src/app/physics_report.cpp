@@ -2,7 +2,7 @@
 #include "physics_report.h"
 
 #include "physics_report_cases.h"
-#include "physics_report_plot.h"
+#include "report_plot.h"
 
 #include <cctype>
 #include <cstdio>
@@ -24,23 +24,10 @@ std::string fmt(const char* format, double v) {
     return buf;
 }
 
-std::string cpuName() {
-    std::ifstream in("/proc/cpuinfo");
-    for (std::string line; std::getline(in, line);)
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    return "unknown CPU";
-}
-
 std::string slug(const std::string& name) {
     std::string s;
     for (char c : name) s += std::isalnum(static_cast<unsigned char>(c)) ? char(std::tolower(c)) : '-';
     return s;
-}
-
-bool writeFile(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    return bool(out);
 }
 
 // One analytic case: a table row per variant and a plot with one line per sweep.
@@ -60,7 +47,7 @@ std::string workPrecision(const AnalyticCase& c, const std::string& docs) {
     }
     std::vector<PlotSeries> plot;
     for (const std::string& name : order) plot.push_back(series[name]);
-    writeFile(docs + "/physics-" + slug(c.name) + ".svg",
+    writeTextFile(docs + "/physics-" + slug(c.name) + ".svg",
               logLogPlotSvg(c.name, "run time per simulated second (s)", "error", plot));
     return md.str() + "\n";
 }
@@ -104,7 +91,7 @@ int runPhysicsReport(const std::string& repoRoot) {
     std::ostringstream md;
     md << "# Physics report\n\nReproduce: `build/marchbox report physics` (RelWithDebInfo build). "
           "Every number below was measured in one run on one core.\n\n"
-       << "Machine: " << cpuName() << ", " << std::thread::hardware_concurrency() << " hardware threads; "
+       << "Machine: " << machineDescription() << "; "
        << "compiler " << __VERSION__ << ".\n\n"
        << "## Work precision\n\nEach analytic case runs under every step size (4 substeps, 1 iteration), "
           "every substep count and iteration count (at dt = 1/120), and both integrators: "
@@ -119,7 +106,7 @@ int runPhysicsReport(const std::string& repoRoot) {
        << extremeTable() << "\n## Bullet\n\n";
     std::cerr << "physics report: Bullet\n";
     md << bulletSection();
-    if (!writeFile(docs + "/physics-report.md", md.str())) {
+    if (!writeTextFile(docs + "/physics-report.md", md.str())) {
         std::cerr << "cannot write " << docs << "/physics-report.md\n";
         return 1;
     }

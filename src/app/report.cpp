@@ -1,6 +1,7 @@
 // report.cpp — `marchbox report physics|render`: benchmarks that write docs/*.md.
 #include "commands.h"
 #include "physics_report.h"
+#include "render_report.h"
 
 #include <iostream>
 
@@ -8,7 +9,8 @@ namespace mb {
 
 int runReport(const Args& a) {
     if (a.positional.size() == 1 && a.positional[0] == "physics") return runPhysicsReport(MARCHBOX_SOURCE_DIR);
-    std::cerr << "usage: marchbox report physics\n";
+    if (a.positional.size() == 1 && a.positional[0] == "render") return runRenderReport(MARCHBOX_SOURCE_DIR);
+    std::cerr << "usage: marchbox report physics|render\n";
     return kExitUsage;
 }
 

@@ -80,21 +80,12 @@ void Renderer::upload(const Scene& scene, const ShaderFeatures& f) {
     uploadPadded(lights_, g.lights, f.pointLights + f.dirLights, kLightsBinding);
 }
 
-static void setUniform(const Program& p, const char* name, glm::vec3 v) {
-    if (GLint loc = p.uniform(name); loc >= 0) glUniform3f(loc, v.x, v.y, v.z);
-}
-static void setUniform(const Program& p, const char* name, float v) {
-    if (GLint loc = p.uniform(name); loc >= 0) glUniform1f(loc, v);
-}
-static void setUniform(const Program& p, const char* name, int v) {
-    if (GLint loc = p.uniform(name); loc >= 0) glUniform1i(loc, v);
-}
 
 static void setCamera(const Program& p, const CameraBasis& b) {
-    setUniform(p, "uCamPos", b.pos);
-    setUniform(p, "uCamForward", b.forward);
-    setUniform(p, "uCamRight", b.right);
-    setUniform(p, "uCamUp", b.up);
+    p.set("uCamPos", b.pos);
+    p.set("uCamForward", b.forward);
+    p.set("uCamRight", b.right);
+    p.set("uCamUp", b.up);
 }
 
 void Renderer::uploadGrid(const Scene& scene) {
@@ -104,37 +95,50 @@ void Renderer::uploadGrid(const Scene& scene) {
     gridCells_.bind(kGridCellsUnit);
     gridItems_.bind(kGridItemsUnit);
     const Program& p = *current_;
-    setUniform(p, "uGridCells", int(kGridCellsUnit));
-    setUniform(p, "uGridItems", int(kGridItemsUnit));
-    setUniform(p, "uGridOrigin", grid.origin);
-    setUniform(p, "uGridCell", grid.cellSize);
+    p.set("uGridCells", int(kGridCellsUnit));
+    p.set("uGridItems", int(kGridItemsUnit));
+    p.set("uGridOrigin", grid.origin);
+    p.set("uGridCell", grid.cellSize);
     if (GLint loc = p.uniform("uGridDims"); loc >= 0) glUniform3i(loc, grid.dims.x, grid.dims.y, grid.dims.z);
 }
 
-void Renderer::setUniforms(const Scene& scene, const ShaderFeatures& f) {
+// The colour of the brightest light, scaled so its largest channel is 1: it tints the sky.
+static glm::vec3 skyTint(const Scene& scene) {
+    glm::vec3 best(1.0f);
+    float bestPower = -1.0f;
+    for (const Light& l : scene.lights) {
+        glm::vec3 c = l.color * l.intensity;
+        float power = std::max(c.r, std::max(c.g, c.b));
+        if (power > bestPower && power > 0.0f) bestPower = power, best = c / power;
+    }
+    return best;
+}
+
+void Renderer::setUniforms(const Scene& scene, const ShaderFeatures& f, const RenderQuality& q) {
     const Program& p = *current_;
     glUseProgram(p.id());
     CameraBasis basis = cameraBasis(scene.camera);
     setCamera(p, basis);
     tanHalfFov_ = glm::length(basis.up);
-    setUniform(p, "uEpsilon", scene.render.epsilon);
-    setUniform(p, "uMaxDist", maxRayDistance(scene));
-    setUniform(p, "uFloor", scene.world.floor);
-    setUniform(p, "uFog", scene.render.fog);
+    p.set("uEpsilon", scene.render.epsilon);
+    p.set("uMaxDist", maxRayDistance(scene));
+    p.set("uFloor", scene.world.floor);
+    p.set("uFog", scene.render.fog);
+    p.set("uSkyTint", skyTint(scene));
+    p.set("uSoftness", q.softness);
     bool useGrid = f.grid && (!f.uber || int(scene.objects.size()) > kGridMinObjects);
     if (useGrid) uploadGrid(scene);
     if (!f.uber) return;
-    setUniform(p, "uUseGrid", int(useGrid));
+    p.set("uUseGrid", int(useGrid));
     GpuScene counts = packScene(scene);
-    setUniform(p, "uObjectCount", int(scene.objects.size()));
-    setUniform(p, "uPointLights", counts.pointLights);
-    setUniform(p, "uDirLights", counts.dirLights);
-    setUniform(p, "uSteps", scene.render.steps);
-    setUniform(p, "uShadows", scene.lights.empty() ? 0 : scene.render.shadows);
-    setUniform(p, "uReflections", scene.render.reflections);
-    setUniform(p, "uAA", f.mode == RenderMode::ObjectId ? 1 : scene.render.aa);
-    setUniform(p, "uGround", int(scene.world.ground));
-    setUniform(p, "uAo", int(scene.render.ao));
+    p.set("uObjectCount", int(scene.objects.size()));
+    p.set("uPointLights", counts.pointLights);
+    p.set("uDirLights", counts.dirLights);
+    p.set("uSteps", scene.render.steps);
+    p.set("uShadows", scene.lights.empty() ? 0 : scene.render.shadows);
+    p.set("uReflections", scene.render.reflections);
+    p.set("uGround", int(scene.world.ground));
+    p.set("uAo", int(scene.render.ao));
 }
 
 bool Renderer::setScene(const Scene& scene, const RenderOptions& options, std::string* error) {
@@ -147,39 +151,10 @@ bool Renderer::setScene(const Scene& scene, const RenderOptions& options, std::s
     if (!p) return false;
     current_ = p;
     currentFeatures_ = f;
+    samples_ = options.mode == RenderMode::ObjectId ? 1 : scene.render.aa;  // ids do not average
+    post_ = options.mode == RenderMode::ObjectId ? PostMode::None : options.post;
     upload(scene, f);
-    setUniforms(scene, f);
-    return true;
-}
-
-void Renderer::draw(int x, int y, int w, int h, int fullW, int fullH) {
-    if (!current_ || w <= 0 || h <= 0) return;
-    glUseProgram(current_->id());
-    if (GLint loc = current_->uniform("uViewport"); loc >= 0) glUniform4f(loc, float(x), float(y), float(fullW), float(fullH));
-    // Half a pixel's footprint per metre of distance: the cone epsilon's slope.
-    setUniform(*current_, "uPixelRadius", tanHalfFov_ / float(fullH));
-    glViewport(0, 0, w, h);
-    quad_.bind();
-    glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_INT, nullptr);
-}
-
-bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width, int height,
-                     Image* out, std::string* error) {
-    OffscreenContext context;
-    if (!context.create(width, height, error)) return false;
-    Renderer renderer;
-    if (!renderer.init(error) || !renderer.setScene(scene, options, error)) return false;
-    renderer.draw(width, height);
-    Image img = makeImage(width, height);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glFinish();
-    for (int row = 0; row < height; ++row)  // GL's row 0 is the bottom
-        glReadPixels(0, height - 1 - row, width, 1, GL_RGBA, GL_UNSIGNED_BYTE, img.pixel(0, row));
-    if (GLenum e = glGetError()) {
-        *error = "OpenGL error " + std::to_string(e) + " while rendering";
-        return false;
-    }
-    *out = std::move(img);
+    setUniforms(scene, f, options.quality);
     return true;
 }
 

@@ -120,6 +120,19 @@ GLint Program::uniform(const char* name) const {
     return it == uniforms_.end() ? -1 : it->second;
 }
 
+void Program::set(const char* name, int v) const {
+    if (GLint loc = uniform(name); loc >= 0) glUniform1i(loc, v);
+}
+void Program::set(const char* name, float v) const {
+    if (GLint loc = uniform(name); loc >= 0) glUniform1f(loc, v);
+}
+void Program::set(const char* name, glm::vec2 v) const {
+    if (GLint loc = uniform(name); loc >= 0) glUniform2f(loc, v.x, v.y);
+}
+void Program::set(const char* name, glm::vec3 v) const {
+    if (GLint loc = uniform(name); loc >= 0) glUniform3f(loc, v.x, v.y, v.z);
+}
+
 void Program::bindBlock(const char* blockName, GLuint bindingPoint) const {
     GLuint index = glGetUniformBlockIndex(id_, blockName);
     if (index != GL_INVALID_INDEX) glUniformBlockBinding(id_, index, bindingPoint);

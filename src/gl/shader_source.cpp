@@ -32,7 +32,7 @@ bool ShaderFeatures::operator==(const ShaderFeatures& o) const {
            intersect == o.intersect && blend == o.blend && objects == o.objects &&
            materials == o.materials && pointLights == o.pointLights && dirLights == o.dirLights &&
            ground == o.ground && steps == o.steps && shadows == o.shadows &&
-           reflections == o.reflections && fog == o.fog && ao == o.ao && aa == o.aa &&
+           reflections == o.reflections && fog == o.fog && ao == o.ao &&
            objectsInStorage == o.objectsInStorage && grid == o.grid &&
            relaxPercent == o.relaxPercent && coneEpsilon == o.coneEpsilon && shadowSteps == o.shadowSteps;
 }
@@ -54,7 +54,6 @@ static ShaderFeatures uberFeatures(RenderMode mode, int uniformObjects) {
     f.shadows = 2;
     f.reflections = 8;
     f.fog = f.ao = true;
-    f.aa = 4;
     f.grid = true;
     return f;
 }
@@ -93,7 +92,6 @@ ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int ma
     f.reflections = anyMirror(s) ? s.render.reflections : 0;
     f.fog = s.render.fog > 0;
     f.ao = s.render.ao;
-    f.aa = mode == RenderMode::ObjectId ? 1 : s.render.aa;
     applyQuality(&f, quality);
     return f;
 }
@@ -110,7 +108,7 @@ static std::vector<std::pair<const char*, long>> featureDefines(const ShaderFeat
                        {"NUM_DIR_LIGHTS", f.dirLights}, {"OBJECTS_IN_STORAGE", f.objectsInStorage},
                        {"HAS_GROUND", f.ground}, {"MAX_STEPS", f.steps}, {"SHADOWS", f.shadows},
                        {"REFLECTIONS", f.reflections}, {"HAS_FOG", f.fog}, {"HAS_AO", f.ao},
-                       {"AA", f.aa}, {"USE_GRID", f.grid},
+                       {"USE_GRID", f.grid},
                        {"RELAX_PERCENT", f.relaxPercent}, {"CONE_EPSILON", f.coneEpsilon},
                        {"SHADOW_STEPS", f.shadowSteps}});
     return d;

@@ -16,5 +16,5 @@ TEST_P(Golden, MatchesCommittedImage) {
 INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
                          ::testing::Values("default", "primitives", "csg", "shadows_hard",
                                            "shadows_soft", "reflections", "lights", "legacy",
-                                           "extremes", "inside", "pile"),
+                                           "extremes", "inside", "pile", "fog", "ao_aa"),
                          [](const auto& info) { return std::string(info.param); });

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "marchbox/gl/buffers.h"
+#include "marchbox/gl/framebuffer.h"
 #include "marchbox/gl/shader.h"
 #include "marchbox/gl/shader_source.h"
 #include "marchbox/image.h"
@@ -13,10 +14,15 @@
 
 namespace mb {
 
+// What the post pass does after the supersamples are added up.
+enum class PostMode : int { None = 0, Fxaa = 1, FxaaEdges = 2, FxaaDirection = 3 };
+constexpr int kPostModeCount = 4;
+
 struct RenderOptions {
     RenderMode mode = RenderMode::Shaded;
     bool uber = false;  // the general shader with every feature behind uniforms
     RenderQuality quality;
+    PostMode post = PostMode::None;
 };
 
 class Renderer {
@@ -29,9 +35,15 @@ public:
     // the log.
     bool setScene(const Scene& scene, const RenderOptions& options, std::string* error);
 
-    // Draws the region [x, x+w) × [y, y+h) of a fullW × fullH image into the viewport's origin.
-    void draw(int x, int y, int w, int h, int fullW, int fullH);
-    void draw(int width, int height) { draw(0, 0, width, height, width, height); }
+    // Draws the whole width × height image, every supersample, into the framebuffer bound now.
+    void draw(int width, int height);
+
+    // A frame in pieces (tiles of a large render). beginFrame remembers the bound framebuffer;
+    // with `accumulate`, or when the scene supersamples or post-processes, the samples go to a
+    // float target first and endFrame resolves them into `into` (or the remembered framebuffer).
+    bool beginFrame(int width, int height, bool accumulate, std::string* error);
+    void drawRegion(int x, int y, int w, int h);  // pixels from the bottom-left corner
+    void endFrame(const ColorTarget* into = nullptr);
 
     const Program* program() const { return current_; }
     int maxUniformBlockBytes() const { return maxUniformBlock_; }
@@ -43,8 +55,9 @@ private:
     };
     Program* programFor(const ShaderFeatures& f, std::string* error);
     void upload(const Scene& scene, const ShaderFeatures& f);
-    void setUniforms(const Scene& scene, const ShaderFeatures& f);
+    void setUniforms(const Scene& scene, const ShaderFeatures& f, const RenderQuality& q);
     void uploadGrid(const Scene& scene);
+    const Program* postProgram(std::string* error);
 
     std::vector<Cached> cache_;
     Program* current_ = nullptr;
@@ -57,10 +70,42 @@ private:
     TextureBuffer gridCells_, gridItems_;
     int maxUniformBlock_ = 16384;
     float tanHalfFov_ = 0.0f;
+    int samples_ = 1;                // supersamples per axis
+    PostMode post_ = PostMode::None;
+    std::unique_ptr<Program> postPrograms_[kPostModeCount];
+    ColorTarget accum_;
+    int frameWidth_ = 0, frameHeight_ = 0;
+    GLint frameTarget_ = 0;          // the framebuffer bound at beginFrame
+    bool accumulating_ = false;
 };
 
-// Creates an OSMesa context, renders one width × height frame and reads it back (row 0 at top).
+// Reads the bound framebuffer's bottom-left width × height pixels into an image, top row first.
+Image readFramebuffer(int width, int height);
+
+// A large image drawn a tile at a time, so no single draw stalls the driver and the caller can
+// show progress and cancel between tiles. Leaves the framebuffer that was bound alone.
+class TiledRender {
+public:
+    TiledRender(Renderer& renderer, int width, int height, int tileSize = 256);
+    bool start(std::string* error);
+    bool done() const { return next_ >= tileCount(); }
+    void step();                       // draws the next tile
+    float progress() const { return tileCount() ? float(next_) / float(tileCount()) : 1.0f; }
+    Image finish();                    // resolves and reads back; row 0 at the top
+
+private:
+    int tileCount() const { return tilesX_ * tilesY_; }
+    Renderer& renderer_;
+    int width_, height_, tile_, tilesX_, tilesY_, next_ = 0;
+    ColorTarget result_;
+};
+
+// Called between tiles with the fraction done; returning false cancels the render.
+using RenderProgress = bool (*)(float done, void* user);
+
+// Creates an OSMesa context, renders one width × height frame in tiles and reads it back.
 bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width, int height,
-                     Image* out, std::string* error);
+                     Image* out, std::string* error, RenderProgress progress = nullptr,
+                     void* user = nullptr);
 
 }  // namespace mb

@@ -3,6 +3,8 @@
 
 #include "marchbox/gl/gl.h"
 
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <string>
 #include <unordered_map>
 
@@ -50,6 +52,11 @@ public:
     GLuint id() const { return id_; }
     const std::string& log() const { return log_; }
     GLint uniform(const char* name) const;  // -1 if inactive; no GL call
+    // Set a uniform of the program in use; names the linker dropped are ignored.
+    void set(const char* name, int v) const;
+    void set(const char* name, float v) const;
+    void set(const char* name, glm::vec2 v) const;
+    void set(const char* name, glm::vec3 v) const;
     void bindBlock(const char* blockName, GLuint bindingPoint) const;
 
 private:

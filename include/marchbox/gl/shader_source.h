@@ -23,6 +23,7 @@ struct RenderQuality {
     bool coneEpsilon = false;  // the hit distance grows to half a pixel's footprint far away
     int shadowSteps = 128;     // march steps of each shadow ray
     int grid = -1;             // object grid: -1 when it pays (kGridMinObjects), 0 never, 1 always
+    float softness = 8.0f;     // soft-shadow k (Quilez): penumbra width ~ distance / k; a uniform
 };
 
 struct ShaderFeatures {
@@ -36,7 +37,6 @@ struct ShaderFeatures {
     int shadows = 0;            // 0 none, 1 hard, 2 soft
     int reflections = 0;        // bounces actually possible: 0 when nothing reflects
     bool fog = false, ao = false;
-    int aa = 1;
     bool objectsInStorage = false;  // past the uniform-block limit objects go in an SSBO
     bool grid = false;              // steps visit one cell of the object grid, not every object
     int relaxPercent = 100;         // applies without the grid only: cell caps are not radii

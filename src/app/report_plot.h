@@ -1,4 +1,4 @@
-// physics_report_plot.h — log-log line plots as standalone SVG, for the physics report.
+// report_plot.h — what the benchmark reports share: log-log SVG plots, the machine, files.
 #pragma once
 
 #include <string>
@@ -10,10 +10,14 @@ namespace mb {
 struct PlotSeries {
     std::string name;
     std::vector<std::pair<double, double>> points;  // (x, y), both > 0; others are dropped
+    bool line = true;                                // false: markers only (a scatter)
 };
 
 // An SVG document: axes at whole decades, one coloured polyline with markers per series, legend.
 std::string logLogPlotSvg(const std::string& title, const std::string& xLabel, const std::string& yLabel,
                           const std::vector<PlotSeries>& series);
+
+std::string machineDescription();  // CPU model and core count, for "measured on"
+bool writeTextFile(const std::string& path, const std::string& text);
 
 }  // namespace mb

@@ -1,9 +1,11 @@
-// physics_report_plot.cpp — a small log-log SVG plotter.
-#include "physics_report_plot.h"
+// report_plot.cpp — a small log-log SVG plotter.
+#include "report_plot.h"
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <sstream>
+#include <thread>
 
 namespace mb {
 
@@ -61,7 +63,7 @@ void drawSeries(std::ostringstream& svg, const PlotSeries& s, const char* colour
         line << px << ',' << py << ' ';
         svg << "<circle cx='" << px << "' cy='" << py << "' r='3.5' fill='" << colour << "'/>\n";
     }
-    svg << "<polyline points='" << line.str() << "' fill='none' stroke='" << colour << "'/>\n";
+    if (s.line) svg << "<polyline points='" << line.str() << "' fill='none' stroke='" << colour << "'/>\n";
     const double ly = kTop + 16 + 20 * index;
     svg << "<line x1='" << x1 + 12 << "' y1='" << ly - 4 << "' x2='" << x1 + 32 << "' y2='" << ly - 4
         << "' stroke='" << colour << "' stroke-width='2'/><text x='" << x1 + 38 << "' y='" << ly << "'>"
@@ -85,6 +87,23 @@ std::string logLogPlotSvg(const std::string& title, const std::string& xLabel, c
     svg << "<text transform='translate(20," << (kTop + kHeight - kBottom) / 2
         << ") rotate(-90)' text-anchor='middle'>" << yLabel << "</text>\n</svg>\n";
     return svg.str();
+}
+
+std::string machineDescription() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string cpu = "unknown CPU";
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind("model name", 0) == 0) {
+            cpu = line.substr(line.find(':') + 2);
+            break;
+        }
+    return cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads";
+}
+
+bool writeTextFile(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    return bool(out.flush());
 }
 
 }  // namespace mb

@@ -1,0 +1,156 @@
+// render_passes.cpp — one frame: supersample passes, accumulation, the post pass, tiles.
+#include "marchbox/gl/renderer.h"
+
+#include "marchbox/gl/offscreen_context.h"
+
+#include <algorithm>
+
+namespace mb {
+
+enum : GLuint { kAccumUnit = 2 };  // units 0 and 1 hold the object grid
+
+const Program* Renderer::postProgram(std::string* error) {
+    std::unique_ptr<Program>& slot = postPrograms_[int(post_)];
+    if (slot) return slot.get();
+    Shader vs, fs;
+    std::string prefix = "#version 330 core\n#define POST_MODE " + std::to_string(int(post_)) + "\n";
+    if (!vs.compileFile(GL_VERTEX_SHADER, shaderDir() + "/fullscreen.vert") ||
+        !fs.compileFile(GL_FRAGMENT_SHADER, shaderDir() + "/post.frag", prefix)) {
+        *error = "post.frag: " + fs.log() + vs.log();
+        return nullptr;
+    }
+    auto program = std::make_unique<Program>();
+    if (!program->link(vs, fs)) {
+        *error = "post.frag link: " + program->log();
+        return nullptr;
+    }
+    slot = std::move(program);
+    return slot.get();
+}
+
+bool Renderer::beginFrame(int width, int height, bool accumulate, std::string* error) {
+    frameWidth_ = width;
+    frameHeight_ = height;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &frameTarget_);
+    accumulating_ = accumulate || samples_ > 1 || post_ != PostMode::None;
+    if (!accumulating_) return true;
+    if (!accum_.resize(width, height) || !postProgram(error)) {
+        if (error->empty()) *error = "cannot create a " + std::to_string(width) + "x" + std::to_string(height) + " float target";
+        accumulating_ = false;
+        return false;
+    }
+    accum_.bind();
+    glViewport(0, 0, width, height);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    return true;
+}
+
+void Renderer::drawRegion(int x, int y, int w, int h) {
+    if (!current_ || w <= 0 || h <= 0) return;
+    const Program& p = *current_;
+    glUseProgram(p.id());
+    p.set("uResolution", glm::vec2(frameWidth_, frameHeight_));
+    p.set("uPixelRadius", tanHalfFov_ / float(frameHeight_));  // half a pixel per metre away
+    p.set("uSampleWeight", 1.0f / float(samples_ * samples_));
+    glViewport(0, 0, frameWidth_, frameHeight_);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x, y, w, h);
+    if (accumulating_) {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE);
+    }
+    quad_.bind();
+    for (int j = 0; j < samples_; ++j)
+        for (int i = 0; i < samples_; ++i) {
+            p.set("uSubpixel", glm::vec2((i + 0.5f) / float(samples_), (j + 0.5f) / float(samples_)));
+            glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_INT, nullptr);
+        }
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+void Renderer::endFrame(const ColorTarget* into) {
+    if (!accumulating_) return;
+    std::string error;
+    const Program* post = postProgram(&error);
+    into ? into->bind() : glBindFramebuffer(GL_FRAMEBUFFER, GLuint(frameTarget_));
+    glViewport(0, 0, frameWidth_, frameHeight_);
+    glUseProgram(post->id());
+    accum_.bindTexture(kAccumUnit);
+    post->set("uImage", int(kAccumUnit));
+    quad_.bind();
+    glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_INT, nullptr);
+    accumulating_ = false;
+}
+
+void Renderer::draw(int width, int height) {
+    std::string error;
+    beginFrame(width, height, false, &error);
+    drawRegion(0, 0, width, height);
+    endFrame();
+}
+
+Image readFramebuffer(int width, int height) {
+    Image img = makeImage(width, height);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glFinish();
+    for (int row = 0; row < height; ++row)  // GL's row 0 is the bottom
+        glReadPixels(0, height - 1 - row, width, 1, GL_RGBA, GL_UNSIGNED_BYTE, img.pixel(0, row));
+    return img;
+}
+
+TiledRender::TiledRender(Renderer& renderer, int width, int height, int tileSize)
+    : renderer_(renderer), width_(width), height_(height), tile_(std::max(16, tileSize)),
+      tilesX_((width + tile_ - 1) / tile_), tilesY_((height + tile_ - 1) / tile_) {}
+
+bool TiledRender::start(std::string* error) {
+    if (!result_.resize(width_, height_, GL_RGBA8)) {
+        *error = "cannot create a " + std::to_string(width_) + "x" + std::to_string(height_) + " image target";
+        return false;
+    }
+    return renderer_.beginFrame(width_, height_, true, error);
+}
+
+void TiledRender::step() {
+    if (done()) return;
+    int x = (next_ % tilesX_) * tile_, y = (next_ / tilesX_) * tile_;
+    renderer_.drawRegion(x, y, std::min(tile_, width_ - x), std::min(tile_, height_ - y));
+    glFinish();  // one tile at a time: the driver never holds a whole large frame
+    ++next_;
+}
+
+Image TiledRender::finish() {
+    GLint previous = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
+    renderer_.endFrame(&result_);
+    Image img = readFramebuffer(width_, height_);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+    return img;
+}
+
+bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width, int height,
+                     Image* out, std::string* error, RenderProgress progress, void* user) {
+    OffscreenContext context;
+    if (!context.create(1, 1, error)) return false;  // every pixel goes to the renderer's targets
+    Renderer renderer;
+    if (!renderer.init(error) || !renderer.setScene(scene, options, error)) return false;
+    TiledRender tiles(renderer, width, height);
+    if (!tiles.start(error)) return false;
+    while (!tiles.done()) {
+        tiles.step();
+        if (progress && !progress(tiles.progress(), user)) {
+            *error = "cancelled";
+            return false;
+        }
+    }
+    Image img = tiles.finish();
+    if (GLenum e = glGetError()) {
+        *error = "OpenGL error " + std::to_string(e) + " while rendering";
+        return false;
+    }
+    *out = std::move(img);
+    return true;
+}
+
+}  // namespace mb
