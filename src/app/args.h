@@ -16,6 +16,7 @@ struct Args {
     int frames = 20;                  // --frames
     bool uber = false;                // --uber
     std::string mode = "shaded";      // --mode
+    std::string post = "none";        // --post none|fxaa|fxaa-edges|fxaa-direction
 };
 
 // Parses argv[first..argc). Returns false with *error set on an unknown option, a missing or

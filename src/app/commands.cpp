@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <unistd.h>
 
 namespace mb {
 
@@ -60,16 +61,33 @@ static int flushStdout() {
     return kExitBadInput;
 }
 
+static bool parsePost(const std::string& s, PostMode* out) {
+    static const char* names[kPostModeCount] = {"none", "fxaa", "fxaa-edges", "fxaa-direction"};
+    for (int i = 0; i < kPostModeCount; ++i)
+        if (s == names[i]) return *out = PostMode(i), true;
+    return false;
+}
+
 static bool renderOptions(const Args& a, RenderOptions* o) {
     o->uber = a.uber;
+    if (!parsePost(a.post, &o->post)) {
+        std::cerr << "unknown post pass " << quoteArg(a.post) << ": expected none, fxaa, fxaa-edges or fxaa-direction\n";
+        return false;
+    }
     if (parseRenderMode(a.mode, &o->mode)) return true;
     std::cerr << "unknown mode " << quoteArg(a.mode) << ": expected shaded, normals, depth, steps, ao, shadow or id\n";
     return false;
 }
 
+// Large renders report progress on a terminal; scripts reading stderr see only errors.
+static bool printProgress(float done, void*) {
+    std::fprintf(stderr, "\rrendering %3d%%%s", int(done * 100.0f + 0.5f), done >= 1.0f ? "\n" : "");
+    return true;
+}
+
 int runRender(const Args& a) {
     RenderOptions options;
-    if (!needOne(a, "marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M]") ||
+    if (!needOne(a, "marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M] [--post P]") ||
         !needOutput(a, "render", "OUT.png") || !renderOptions(a, &options))
         return kExitUsage;
     Scene scene;
@@ -77,7 +95,9 @@ int runRender(const Args& a) {
     simulate(scene, a.seconds);
     Image img;
     std::string error;
-    if (!renderOffscreen(scene, options, a.width, a.height, &img, &error)) return cannotRender(error);
+    bool large = a.width * a.height > 1024 * 1024 && isatty(STDERR_FILENO);
+    if (!renderOffscreen(scene, options, a.width, a.height, &img, &error, large ? printProgress : nullptr))
+        return cannotRender(error);
     if (!savePng(a.output, img, &error)) {
         std::cerr << error << '\n';
         return kExitBadInput;
