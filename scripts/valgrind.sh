@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Runs an off-screen render and a simulate under valgrind --leak-check=full and fails on any
+# memory error or definite leak not allocated by the OpenGL driver (tests/valgrind/mesa.supp).
+# Slow (a render takes about 1.5 minutes under valgrind), so not part of CI.
+# Usage: scripts/valgrind.sh [BUILD_DIR]   (default build; builds marchbox there if needed)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build}
+[[ -f $build/CMakeCache.txt ]] || cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build "$build" -j"$(nproc)" --target marchbox >/dev/null
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+status=0
+# check NAME ARGS...: one marchbox run under memcheck; its log goes to BUILD/valgrind-NAME.log.
+check() {
+  local name=$1 log=$build/valgrind-$1.log
+  shift
+  local start=$SECONDS
+  if valgrind --leak-check=full --show-leak-kinds=definite,indirect \
+       --errors-for-leak-kinds=definite,indirect --suppressions=tests/valgrind/mesa.supp \
+       --num-callers=40 --error-exitcode=99 --log-file="$log" "$build/marchbox" "$@" >/dev/null; then
+    echo "valgrind $name: clean ($((SECONDS - start)) s)"
+  else
+    echo "valgrind $name: FAILED, see $log" >&2
+    status=1
+  fi
+  grep -E "definitely lost|indirectly lost|possibly lost|suppressed:|no leaks are possible|ERROR SUMMARY" "$log" |
+    sed 's/^==[0-9]*== */  /'
+}
+check render render scenes/primitives.txt -o "$tmp/x.png" --size 64x36
+check simulate simulate scenes/pile.txt --seconds 2 -o "$tmp/after.txt"
+exit "$status"
