@@ -2,8 +2,10 @@
 //
 // Each sphere, grown by its speculative margin, has an extent e (a radius). The cell size is twice
 // the 95th-percentile extent, so a typical sphere fits in one cell and two that overlap lie in the
-// same or adjacent cells. The few larger ones (fast spheres, a boulder among pebbles) are tested
-// against everyone. The cell list stays sorted between steps, so re-sorting is near linear.
+// same or adjacent cells. The few larger ones (fast spheres, a boulder among pebbles) look up the
+// block of cells their reach covers, and each other by brute force. The cell list stays sorted
+// between steps, so re-sorting is near linear, and neighbour cells are found by cursors that only
+// move forward through it, so pairing is linear too: no per-cell searches.
 #pragma once
 
 #include <cstdint>
@@ -24,18 +26,27 @@ private:
         std::int64_t x, y, z;  // cell
         int body;
     };
+    struct Sphere {            // a body's centre and extent, stored in cell order for locality
+        glm::dvec3 centre;
+        double extent;
+        bool large;
+    };
+    using Pairs = std::vector<std::pair<int, int>>;
     void buildCells(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents);
-    void pairCells(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents,
-                   std::vector<std::pair<int, int>>& pairs) const;
+    void pairCells(Pairs& pairs) const;
+    // Entries [i0, i1) against [j0, j1); `self` when they are the same run (each pair once).
+    void pairRuns(int i0, int i1, int j0, int j1, bool self, Pairs& pairs) const;
     int cellEnd(int begin) const;                           // one past the run of cells_[begin]
-    int findCell(std::int64_t x, std::int64_t y, std::int64_t z) const;  // first entry, or -1
-    void pairLarge(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents,
-                   std::vector<std::pair<int, int>>& pairs) const;
+    // First entry at or after cell (x, y, z), searching [from, end).
+    int lowerBound(int from, std::int64_t x, std::int64_t y, std::int64_t z) const;
+    void pairLarge(Pairs& pairs) const;
+    void pairBlock(int entry, Pairs& pairs) const;         // a large sphere against the small
 
     std::vector<Entry> cells_;  // sorted by (x, y, z, body)
-    std::vector<int> large_;    // bodies too big for the grid, ascending
-    std::vector<char> isLarge_;
+    std::vector<Sphere> spheres_;  // spheres_[i] is body cells_[i].body
+    std::vector<int> large_;    // entries of bodies too big for the grid, by body
     std::vector<double> scratch_;
+    double cell_ = 1.0;         // edge of a grid cell, this step
 };
 
 }  // namespace mb

@@ -15,6 +15,11 @@
 
 namespace mb {
 
+// Effective masses of a contact's rows: 1/K_n, 1/K_t, 1/K_roll.
+struct RowMasses {
+    double normal = 0.0, tangent = 0.0, roll = 0.0;
+};
+
 struct Contact {
     int a = 0, b = 0;                    // bodies; a is the static body for a static surface
     int feature = -1;                    // StaticHit::feature, or -1 between two spheres
@@ -22,7 +27,9 @@ struct Contact {
     double separation = 0.0;             // at the start of the step; < 0 overlaps
     double armA = 0.0, armB = 0.0;       // centre to contact point, along ±normal
     double slop = 0.0;                   // overlap left alone, m
-    double normalMass = 0.0, tangentMass = 0.0, rollMass = 0.0;
+    RowMasses mass;
+    RowMasses shockMass;                 // with the lower body held fixed (shock propagation)
+    bool shock = false;                  // the relax pass holds the lower body fixed
     double rollRadius = 0.0;             // lever of rolling resistance
     double relativeVelocity = 0.0;       // normal velocity at the start of the step, for bounce
     double normalImpulse = 0.0;          // accumulated per substep, warm started across steps

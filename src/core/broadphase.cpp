@@ -10,9 +10,23 @@ namespace mb {
 
 namespace {
 
-bool overlaps(const std::vector<glm::dvec3>& c, const std::vector<double>& e, int i, int j) {
-    glm::dvec3 d = c[j] - c[i];
-    double reach = e[i] + e[j];
+// The 13 neighbours that follow a cell (x, y, z) in (x, y, z) order, as runs of one column
+// (constant x, y) each: its own column at z + 1, then the columns (x, y+1), (x+1, y−1), (x+1, y)
+// and (x+1, y+1) from z − 1 to z + 1. Pairing each cell with itself and these visits every
+// adjacent pair of cells once.
+struct Column {
+    int dx, dy, dz;  // offset of the column, and the first z in it
+};
+constexpr Column kColumns[5] = {{0, 0, 1}, {0, 1, -1}, {1, -1, -1}, {1, 0, -1}, {1, 1, -1}};
+
+template <class Entry>
+bool cellLess(const Entry& e, std::int64_t x, std::int64_t y, std::int64_t z) {
+    return std::tie(e.x, e.y, e.z) < std::tie(x, y, z);
+}
+
+bool overlaps(const glm::dvec3& ci, double ei, const glm::dvec3& cj, double ej) {
+    const glm::dvec3 d = cj - ci;
+    const double reach = ei + ej;
     return glm::dot(d, d) < reach * reach;
 }
 
@@ -27,8 +41,8 @@ void Broadphase::findPairs(const std::vector<glm::dvec3>& centres, const std::ve
     pairs.clear();
     if (centres.empty()) return;
     buildCells(centres, extents);
-    pairCells(centres, extents, pairs);
-    pairLarge(centres, extents, pairs);
+    pairCells(pairs);
+    pairLarge(pairs);
 }
 
 void Broadphase::buildCells(const std::vector<glm::dvec3>& centres,
@@ -38,23 +52,18 @@ void Broadphase::buildCells(const std::vector<glm::dvec3>& centres,
     auto p95 = scratch_.begin() + (n - 1) * 95 / 100;
     std::nth_element(scratch_.begin(), p95, scratch_.end());
     // A sphere of extent <= cell/2 overlaps only spheres whose centres are within one cell.
-    const double cell = 2.0 * *p95;
+    cell_ = 2.0 * *p95;
     const bool fresh = int(cells_.size()) != n;
     if (fresh) {
         cells_.assign(n, Entry{0, 0, 0, 0});
         for (int i = 0; i < n; ++i) cells_[i].body = i;
     }
-    large_.clear();
-    isLarge_.assign(n, 0);
     for (Entry& e : cells_) {
         const glm::dvec3& c = centres[e.body];
-        e.x = std::int64_t(std::floor(c.x / cell));
-        e.y = std::int64_t(std::floor(c.y / cell));
-        e.z = std::int64_t(std::floor(c.z / cell));
-        if (extents[e.body] > 0.5 * cell) isLarge_[e.body] = 1;
+        e.x = std::int64_t(std::floor(c.x / cell_));
+        e.y = std::int64_t(std::floor(c.y / cell_));
+        e.z = std::int64_t(std::floor(c.z / cell_));
     }
-    for (int i = 0; i < n; ++i)
-        if (isLarge_[i]) large_.push_back(i);
     // (x, y, z, body) is a total order, so the sorted list does not depend on the previous one
     // and determinism holds. Between steps few bodies change cell: insertion sort is then linear.
     auto less = [](const Entry& a, const Entry& b) {
@@ -62,13 +71,20 @@ void Broadphase::buildCells(const std::vector<glm::dvec3>& centres,
     };
     if (fresh) {
         std::sort(cells_.begin(), cells_.end(), less);
-        return;
+    } else {
+        for (int i = 1; i < n; ++i) {
+            Entry e = cells_[i];
+            int j = i;
+            for (; j > 0 && less(e, cells_[j - 1]); --j) cells_[j] = cells_[j - 1];
+            cells_[j] = e;
+        }
     }
-    for (int i = 1; i < n; ++i) {
-        Entry e = cells_[i];
-        int j = i;
-        for (; j > 0 && less(e, cells_[j - 1]); --j) cells_[j] = cells_[j - 1];
-        cells_[j] = e;
+    spheres_.resize(n);
+    large_.clear();
+    for (int i = 0; i < n; ++i) {
+        const int body = cells_[i].body;
+        spheres_[i] = {centres[body], extents[body], extents[body] > 0.5 * cell_};
+        if (spheres_[i].large) large_.push_back(i);
     }
 }
 
@@ -81,50 +97,84 @@ int Broadphase::cellEnd(int begin) const {
     return end;
 }
 
-int Broadphase::findCell(std::int64_t x, std::int64_t y, std::int64_t z) const {
-    auto it = std::lower_bound(cells_.begin(), cells_.end(), std::make_tuple(x, y, z),
-                               [](const Entry& a, const std::tuple<std::int64_t, std::int64_t,
-                                                                   std::int64_t>& b) {
-                                   return std::tie(a.x, a.y, a.z) < b;
-                               });
-    if (it == cells_.end() || it->x != x || it->y != y || it->z != z) return -1;
+int Broadphase::lowerBound(int from, std::int64_t x, std::int64_t y, std::int64_t z) const {
+    auto it = std::lower_bound(cells_.begin() + from, cells_.end(), 0,
+                               [&](const Entry& e, int) { return cellLess(e, x, y, z); });
     return int(it - cells_.begin());
 }
 
-// Each cell pairs with itself and with the 13 neighbours that come after it in (x, y, z) order,
-// so every adjacent pair of cells is visited once.
-void Broadphase::pairCells(const std::vector<glm::dvec3>& centres,
-                           const std::vector<double>& extents,
-                           std::vector<std::pair<int, int>>& pairs) const {
-    const int n = int(cells_.size());
-    for (int begin = 0, end; begin < n; begin = end) {
-        end = cellEnd(begin);
-        const Entry& c = cells_[begin];
-        for (int dx = 0; dx <= 1; ++dx)
-            for (int dy = dx ? -1 : 0; dy <= 1; ++dy)
-                for (int dz = (dx || dy) ? -1 : 0; dz <= 1; ++dz) {
-                    const bool self = !dx && !dy && !dz;
-                    const int other = self ? begin : findCell(c.x + dx, c.y + dy, c.z + dz);
-                    if (other < 0) continue;
-                    const int otherEnd = self ? end : cellEnd(other);
-                    for (int i = begin; i < end; ++i)
-                        for (int j = self ? i + 1 : other; j < otherEnd; ++j) {
-                            const int a = cells_[i].body, b = cells_[j].body;
-                            if (!isLarge_[a] && !isLarge_[b] && overlaps(centres, extents, a, b))
-                                addPair(pairs, a, b);
-                        }
-                }
+void Broadphase::pairRuns(int i0, int i1, int j0, int j1, bool self, Pairs& pairs) const {
+    for (int i = i0; i < i1; ++i) {
+        const Sphere& a = spheres_[i];
+        if (a.large) continue;
+        for (int j = self ? i + 1 : j0; j < j1; ++j) {
+            const Sphere& b = spheres_[j];
+            if (!b.large && overlaps(a.centre, a.extent, b.centre, b.extent))
+                addPair(pairs, cells_[i].body, cells_[j].body);
+        }
     }
 }
 
-void Broadphase::pairLarge(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents,
-                           std::vector<std::pair<int, int>>& pairs) const {
-    const int n = int(centres.size());
-    for (int big : large_)
-        for (int j = 0; j < n; ++j) {
-            // Large–large pairs once: from the lower index only.
-            if (j == big || (isLarge_[j] && j < big)) continue;
-            if (overlaps(centres, extents, big, j)) addPair(pairs, big, j);
+// Cells are visited in increasing (x, y, z) order, and so, the order being translation
+// invariant, is the start of each neighbour column: one cursor per column only moves forward.
+void Broadphase::pairCells(Pairs& pairs) const {
+    const int n = int(cells_.size());
+    int cursor[5] = {0, 0, 0, 0, 0};
+    for (int begin = 0, end; begin < n; begin = end) {
+        end = cellEnd(begin);
+        const Entry& c = cells_[begin];
+        pairRuns(begin, end, begin, end, true, pairs);
+        for (int k = 0; k < 5; ++k) {
+            const std::int64_t x = c.x + kColumns[k].dx, y = c.y + kColumns[k].dy;
+            int& j = cursor[k];
+            while (j < n && cellLess(cells_[j], x, y, c.z + kColumns[k].dz)) ++j;
+            int last = j;
+            while (last < n && cells_[last].x == x && cells_[last].y == y && cells_[last].z <= c.z + 1)
+                ++last;
+            pairRuns(begin, end, j, last, false, pairs);
+        }
+    }
+}
+
+// Large against large by brute force (they are few: at most 5 % by the cell size's choice),
+// large against small through the grid.
+void Broadphase::pairLarge(Pairs& pairs) const {
+    for (size_t a = 0; a < large_.size(); ++a) {
+        const Sphere& big = spheres_[large_[a]];
+        for (size_t b = a + 1; b < large_.size(); ++b) {
+            const Sphere& other = spheres_[large_[b]];
+            if (overlaps(big.centre, big.extent, other.centre, other.extent))
+                addPair(pairs, cells_[large_[a]].body, cells_[large_[b]].body);
+        }
+        pairBlock(large_[a], pairs);
+    }
+}
+
+// A small sphere's extent is at most cell/2, so one that overlaps `big` has its centre within
+// e_big + cell/2 of big's on every axis: a block of cells, scanned column by column in the sorted
+// order. A block with more columns than there are spheres (a boulder among pebbles) is cheaper
+// tested sphere by sphere.
+void Broadphase::pairBlock(int entry, Pairs& pairs) const {
+    const Sphere& big = spheres_[entry];
+    const int n = int(cells_.size());
+    const double reach = big.extent + 0.5 * cell_;
+    const glm::dvec3 lo = glm::floor((big.centre - reach) / cell_);
+    const glm::dvec3 hi = glm::floor((big.centre + reach) / cell_);
+    auto test = [&](int j) {
+        const Sphere& s = spheres_[j];
+        if (!s.large && overlaps(big.centre, big.extent, s.centre, s.extent))
+            addPair(pairs, cells_[entry].body, cells_[j].body);
+    };
+    if ((hi.x - lo.x + 1) * (hi.y - lo.y + 1) > double(n)) {
+        for (int j = 0; j < n; ++j) test(j);
+        return;
+    }
+    const std::int64_t z0 = std::int64_t(lo.z), z1 = std::int64_t(hi.z);
+    int from = 0;
+    for (auto x = std::int64_t(lo.x); x <= std::int64_t(hi.x); ++x)
+        for (auto y = std::int64_t(lo.y); y <= std::int64_t(hi.y); ++y) {
+            int j = from = lowerBound(from, x, y, z0);
+            for (; j < n && cells_[j].x == x && cells_[j].y == y && cells_[j].z <= z1; ++j) test(j);
         }
 }
 

@@ -13,27 +13,45 @@ namespace {
 
 double inverseOrZero(double k) { return k > 0.0 ? 1.0 / k : 0.0; }
 
-// Linear impulse p at the contact point: −p on a, +p on b.
-void applyImpulse(PhysicsBody& a, PhysicsBody& b, const Contact& c, const dvec3& p) {
-    a.vel -= a.invMass * p;
-    a.spin -= a.invInertia * glm::cross(c.normal * c.armA, p);
-    b.vel += b.invMass * p;
-    b.spin += b.invInertia * glm::cross(-c.normal * c.armB, p);
+// The inverse mass and inertia impulses are applied with: the bodies' own, or zero for a body
+// held fixed (the lower body under shock propagation).
+struct Inverse {
+    double massA, inertiaA, massB, inertiaB;
+};
+
+Inverse inverseOf(const PhysicsBody& a, const PhysicsBody& b) {
+    return {a.invMass, a.invInertia, b.invMass, b.invInertia};
 }
 
-void applyAngular(PhysicsBody& a, PhysicsBody& b, const dvec3& l) {
-    a.spin -= a.invInertia * l;
-    b.spin += b.invInertia * l;
+// Linear impulse p at the contact point: −p on a, +p on b.
+void applyImpulse(PhysicsBody& a, PhysicsBody& b, const Contact& c, const Inverse& w, const dvec3& p) {
+    a.vel -= w.massA * p;
+    a.spin -= w.inertiaA * glm::cross(c.normal * c.armA, p);
+    b.vel += w.massB * p;
+    b.spin += w.inertiaB * glm::cross(-c.normal * c.armB, p);
+}
+
+// An impulse along the normal: both arms are parallel to it, so it exerts no torque (the cross
+// products would only add rounding noise).
+void applyNormal(PhysicsBody& a, PhysicsBody& b, const Inverse& w, const dvec3& p) {
+    a.vel -= w.massA * p;
+    b.vel += w.massB * p;
+}
+
+void applyAngular(PhysicsBody& a, PhysicsBody& b, const Inverse& w, const dvec3& l) {
+    a.spin -= w.inertiaA * l;
+    b.spin += w.inertiaB * l;
 }
 
 // Clamp an accumulated vector impulse to a disc: the isotropic Coulomb cone.
 dvec3 clampLength(const dvec3& v, double maxLength) {
-    const double len = glm::length(v);
-    return len > maxLength ? v * (maxLength / len) : v;
+    const double len2 = glm::dot(v, v);
+    return len2 > maxLength * maxLength ? v * (maxLength / std::sqrt(len2)) : v;
 }
 
-void solveNormal(Contact& c, PhysicsBody& a, PhysicsBody& b, const SolverContext& ctx, bool useBias) {
-    const double s = contactSeparation(c, ctx.bodies);
+void solveNormal(Contact& c, PhysicsBody& a, PhysicsBody& b, const SolverContext& ctx, const Inverse& w,
+                 double normalMass, bool useBias) {
+    const double s = c.separation + glm::dot(b.delta - a.delta, c.normal);
     double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
     if (s > 0.0) {
         bias = s / ctx.h;  // speculative: close at most the gap this substep
@@ -43,47 +61,54 @@ void solveNormal(Contact& c, PhysicsBody& a, PhysicsBody& b, const SolverContext
         impulseScale = ctx.soft.impulseScale;
     }
     const double vn = glm::dot(b.vel - a.vel, c.normal);
-    const double impulse = -c.normalMass * massScale * (vn + bias) - impulseScale * c.normalImpulse;
+    const double impulse = -normalMass * massScale * (vn + bias) - impulseScale * c.normalImpulse;
     const double total = std::max(c.normalImpulse + impulse, 0.0);
-    applyImpulse(a, b, c, (total - c.normalImpulse) * c.normal);
+    if (total == c.normalImpulse) return;  // an open speculative contact stays open: nothing to do
+    applyNormal(a, b, w, (total - c.normalImpulse) * c.normal);
     c.normalImpulse = total;
     c.maxNormalImpulse = std::max(c.maxNormalImpulse, total);
 }
 
-void solveFriction(Contact& c, PhysicsBody& a, PhysicsBody& b, double friction) {
+void solveFriction(Contact& c, PhysicsBody& a, PhysicsBody& b, const Inverse& w, double tangentMass,
+                   double friction) {
     const dvec3 va = a.vel + glm::cross(a.spin, c.normal * c.armA);
     const dvec3 vb = b.vel + glm::cross(b.spin, -c.normal * c.armB);
     dvec3 vt = vb - va;
     vt -= glm::dot(vt, c.normal) * c.normal;
-    const dvec3 total = clampLength(c.tangentImpulse - c.tangentMass * vt, friction * c.normalImpulse);
-    applyImpulse(a, b, c, total - c.tangentImpulse);
+    const dvec3 total = clampLength(c.tangentImpulse - tangentMass * vt, friction * c.normalImpulse);
+    applyImpulse(a, b, c, w, total - c.tangentImpulse);
     c.tangentImpulse = total;
 }
 
-void solveRolling(Contact& c, PhysicsBody& a, PhysicsBody& b, double resistance) {
+void solveRolling(Contact& c, PhysicsBody& a, PhysicsBody& b, const Inverse& w, double rollMass,
+                  double resistance) {
     if (resistance <= 0.0) return;
     const dvec3 relative = b.spin - a.spin;
     const double limit = resistance * c.rollRadius * c.normalImpulse;
-    const dvec3 total = clampLength(c.rollImpulse - c.rollMass * relative, limit);
-    applyAngular(a, b, total - c.rollImpulse);
+    const dvec3 total = clampLength(c.rollImpulse - rollMass * relative, limit);
+    applyAngular(a, b, w, total - c.rollImpulse);
     c.rollImpulse = total;
+}
+
+bool idle(const Contact& c) {
+    return c.normalImpulse == 0.0 && c.tangentImpulse == dvec3(0.0) && c.rollImpulse == dvec3(0.0);
 }
 
 // The rows of one contact, in Box2D's order: normal, then friction limited by the normal
 // impulse just found, then rolling resistance.
-void solveRows(Contact& c, PhysicsBody& a, PhysicsBody& b, const SolverContext& ctx, bool useBias) {
-    solveNormal(c, a, b, ctx, useBias);
+void solveRows(Contact& c, PhysicsBody& a, PhysicsBody& b, const SolverContext& ctx, const RowMasses& m,
+               const Inverse& w, bool useBias) {
+    solveNormal(c, a, b, ctx, w, m.normal, useBias);
     // A speculative contact that stays open carries no friction: skip the rows that would find 0.
-    if (c.normalImpulse == 0.0 && c.tangentImpulse == dvec3(0.0) && c.rollImpulse == dvec3(0.0)) return;
-    solveFriction(c, a, b, ctx.friction);
-    solveRolling(c, a, b, ctx.settings.rollingResistance);
+    if (idle(c)) return;
+    solveFriction(c, a, b, w, m.tangent, ctx.friction);
+    solveRolling(c, a, b, w, m.roll, ctx.settings.rollingResistance);
 }
 
-void setMasses(Contact& c, const PhysicsBody& a, const PhysicsBody& b) {
-    const double kn = a.invMass + b.invMass;
-    c.normalMass = inverseOrZero(kn);
-    c.tangentMass = inverseOrZero(kn + a.invInertia * c.armA * c.armA + b.invInertia * c.armB * c.armB);
-    c.rollMass = inverseOrZero(a.invInertia + b.invInertia);
+RowMasses rowMasses(const Contact& c, const Inverse& w) {
+    const double kn = w.massA + w.massB;
+    return {inverseOrZero(kn), inverseOrZero(kn + w.inertiaA * c.armA * c.armA + w.inertiaB * c.armB * c.armB),
+            inverseOrZero(w.inertiaA + w.inertiaB)};
 }
 
 // Shock propagation (Guendelman et al. 2003) in the relax pass. A light sphere under a heavy one
@@ -96,16 +121,9 @@ bool shockPropagates(const Contact& c, const SolverContext& ctx) {
            std::abs(c.relativeVelocity) < ctx.settings.restitutionThreshold && std::abs(c.normal.y) > 0.5;
 }
 
-void solveFixingLower(Contact& c, PhysicsBody& a, PhysicsBody& b, const SolverContext& ctx) {
+Inverse fixingLower(const Contact& c, const PhysicsBody& a, const PhysicsBody& b) {
     const bool aIsLower = c.normal.y > 0.0;  // the normal points from a to b
-    PhysicsBody lower = aIsLower ? a : b;
-    lower.invMass = lower.invInertia = 0.0;
-    Contact fixed = c;
-    setMasses(fixed, aIsLower ? lower : a, aIsLower ? b : lower);
-    solveRows(fixed, aIsLower ? lower : a, aIsLower ? b : lower, ctx, false);
-    c.normalImpulse = fixed.normalImpulse;
-    c.tangentImpulse = fixed.tangentImpulse;
-    c.rollImpulse = fixed.rollImpulse;
+    return aIsLower ? Inverse{0.0, 0.0, b.invMass, b.invInertia} : Inverse{a.invMass, a.invInertia, 0.0, 0.0};
 }
 
 }  // namespace
@@ -127,19 +145,23 @@ void prepareContacts(SolverContext& ctx) {
     for (Contact& c : ctx.contacts) {
         const PhysicsBody& a = ctx.bodies[c.a];
         const PhysicsBody& b = ctx.bodies[c.b];
-        setMasses(c, a, b);
+        c.mass = rowMasses(c, inverseOf(a, b));
         c.relativeVelocity = glm::dot(b.vel - a.vel, c.normal);
         c.maxNormalImpulse = 0.0;
+        c.shock = shockPropagates(c, ctx);
+        if (c.shock) c.shockMass = rowMasses(c, fixingLower(c, a, b));
     }
 }
 
 void warmStartContacts(SolverContext& ctx) {
     for (Contact& c : ctx.contacts) {
-        if (c.normalImpulse == 0.0 && c.tangentImpulse == dvec3(0.0) && c.rollImpulse == dvec3(0.0)) continue;
+        if (idle(c)) continue;
         PhysicsBody& a = ctx.bodies[c.a];
         PhysicsBody& b = ctx.bodies[c.b];
-        applyImpulse(a, b, c, c.normalImpulse * c.normal + c.tangentImpulse);
-        applyAngular(a, b, c.rollImpulse);
+        const Inverse w = inverseOf(a, b);
+        applyNormal(a, b, w, c.normalImpulse * c.normal);
+        applyImpulse(a, b, c, w, c.tangentImpulse);
+        applyAngular(a, b, w, c.rollImpulse);
     }
 }
 
@@ -147,10 +169,10 @@ void solveContacts(SolverContext& ctx, bool useBias) {
     for (Contact& c : ctx.contacts) {
         PhysicsBody& a = ctx.bodies[c.a];
         PhysicsBody& b = ctx.bodies[c.b];
-        if (!useBias && shockPropagates(c, ctx))
-            solveFixingLower(c, a, b, ctx);
+        if (!useBias && c.shock)
+            solveRows(c, a, b, ctx, c.shockMass, fixingLower(c, a, b), false);
         else
-            solveRows(c, a, b, ctx, useBias);
+            solveRows(c, a, b, ctx, c.mass, inverseOf(a, b), useBias);
     }
 }
 
@@ -164,9 +186,9 @@ void applyRestitution(SolverContext& ctx) {
         PhysicsBody& a = ctx.bodies[c.a];
         PhysicsBody& b = ctx.bodies[c.b];
         const double vn = glm::dot(b.vel - a.vel, c.normal);
-        const double impulse = -c.normalMass * (vn + ctx.restitution * c.relativeVelocity);
+        const double impulse = -c.mass.normal * (vn + ctx.restitution * c.relativeVelocity);
         const double total = std::max(c.normalImpulse + impulse, 0.0);
-        applyImpulse(a, b, c, (total - c.normalImpulse) * c.normal);
+        applyNormal(a, b, inverseOf(a, b), (total - c.normalImpulse) * c.normal);
         c.normalImpulse = total;
         c.maxNormalImpulse = std::max(c.maxNormalImpulse, total);
     }

@@ -33,7 +33,6 @@ struct PhysicsWorld::Impl {
         std::uint64_t key;
         double normal;
         dvec3 tangent, roll;
-        bool operator<(const Warm& o) const { return key < o.key; }
     };
 
     StaticCollider statics;
@@ -41,7 +40,18 @@ struct PhysicsWorld::Impl {
     double gravity, friction, restitution;
     std::vector<Contact> contacts, sorted;
     std::vector<Order> order;
-    std::vector<Warm> warm;  // by key
+    // Last step's impulses grouped by the contact's first dynamic body (the key's top bits):
+    // body i's are warm[warmBegin[i] .. warmBegin[i + 1]), a handful, searched linearly.
+    std::vector<Warm> warm;
+    std::vector<int> warmBegin;
+
+    const Warm* findWarm(std::uint64_t key) const {  // last step's impulses, or null
+        const auto first = size_t(key >> 40);
+        if (first + 1 >= warmBegin.size()) return nullptr;
+        for (int i = warmBegin[first]; i < warmBegin[first + 1]; ++i)
+            if (warm[size_t(i)].key == key) return &warm[size_t(i)];
+        return nullptr;
+    }
     std::vector<dvec3> centres;
     std::vector<double> extents, margins;
     std::vector<std::pair<int, int>> pairs;
@@ -194,26 +204,31 @@ void PhysicsWorld::orderAndWarmStart() {
     for (size_t i = 0; i < w.contacts.size(); ++i)
         w.order.push_back({contactHeight(w.contacts[i], bodies_), contactKey(w.contacts[i], staticBody), int(i)});
     std::sort(w.order.begin(), w.order.end());
-    w.sorted.clear();
-    for (const Impl::Order& o : w.order) {
-        Contact c = w.contacts[size_t(o.index)];
-        auto old = std::lower_bound(w.warm.begin(), w.warm.end(), Impl::Warm{o.key, 0.0, {}, {}});
-        if (old != w.warm.end() && old->key == o.key) {
+    w.sorted.resize(w.contacts.size());
+    for (size_t i = 0; i < w.order.size(); ++i) {
+        Contact& c = w.sorted[i] = w.contacts[size_t(w.order[i].index)];
+        if (const Impl::Warm* old = w.findWarm(w.order[i].key)) {
             c.normalImpulse = old->normal;
             c.tangentImpulse = old->tangent;
             c.rollImpulse = old->roll;
         }
-        w.sorted.push_back(c);
     }
     w.contacts.swap(w.sorted);
 }
 
+// A counting sort by first body: linear, where a sort by key was O(n log n) with cache misses.
 void PhysicsWorld::keepImpulses() {
     Impl& w = *impl_;
-    w.warm.clear();
-    for (const Contact& c : w.contacts)
-        w.warm.push_back({contactKey(c, bodyCount()), c.normalImpulse, c.tangentImpulse, c.rollImpulse});
-    std::sort(w.warm.begin(), w.warm.end());
+    const int n = bodyCount();
+    w.warmBegin.assign(size_t(n) + 2, 0);
+    for (const Contact& c : w.contacts) ++w.warmBegin[size_t(contactKey(c, n) >> 40) + 2];
+    for (int i = 2; i <= n + 1; ++i) w.warmBegin[i] += w.warmBegin[i - 1];
+    w.warm.resize(w.contacts.size());
+    // warmBegin[f + 1] is the next free slot of body f's group; once filled it is group f + 1's start.
+    for (const Contact& c : w.contacts) {
+        const std::uint64_t key = contactKey(c, n);
+        w.warm[size_t(w.warmBegin[size_t(key >> 40) + 1]++)] = {key, c.normalImpulse, c.tangentImpulse, c.rollImpulse};
+    }
 }
 
 void PhysicsWorld::collideStatic(int body) {
