@@ -61,6 +61,7 @@ struct SolverContext {
 void prepareContacts(SolverContext& ctx);
 void warmStartContacts(SolverContext& ctx);
 // Contacts in order; they must be sorted bottom-up for shock propagation (see the .cpp).
+// The solve pass (useBias) also sets PhysicsBody::supported: pushed by a contact after it.
 void solveContacts(SolverContext& ctx, bool useBias);  // useBias false: the relax pass
 void applyRestitution(SolverContext& ctx);
 double contactSeparation(const Contact& c, const std::vector<PhysicsBody>& bodies);  // now

@@ -12,9 +12,11 @@
 
 namespace mb {
 
-// Advances each awake body's sleep timer by dt and puts settled islands to sleep.
+// Advances each awake body's sleep timer by dt and puts settled islands to sleep. `parent` and
+// `islandTime` are scratch, kept by the caller so that a step allocates nothing.
 void updateSleep(std::vector<PhysicsBody>& bodies, const std::vector<Contact>& contacts,
-                 const PhysicsSettings& settings, std::vector<int>& scratch);
+                 const PhysicsSettings& settings, std::vector<int>& parent,
+                 std::vector<double>& islandTime);
 
 // Wakes every body of the given sleeping islands (ids may repeat).
 void wakeIslands(std::vector<PhysicsBody>& bodies, std::vector<int>& islands);

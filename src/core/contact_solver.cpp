@@ -166,13 +166,18 @@ void warmStartContacts(SolverContext& ctx) {
 }
 
 void solveContacts(SolverContext& ctx, bool useBias) {
+    if (useBias)
+        for (PhysicsBody& b : ctx.bodies) b.supported = false;
     for (Contact& c : ctx.contacts) {
         PhysicsBody& a = ctx.bodies[c.a];
         PhysicsBody& b = ctx.bodies[c.b];
-        if (!useBias && c.shock)
+        if (!useBias && c.shock) {
             solveRows(c, a, b, ctx, c.shockMass, fixingLower(c, a, b), false);
-        else
+        } else {
             solveRows(c, a, b, ctx, c.mass, inverseOf(a, b), useBias);
+            // Marked here, while the bodies are in cache, rather than in a pass of its own.
+            if (useBias && c.normalImpulse > 0.0) a.supported = b.supported = true;
+        }
     }
 }
 

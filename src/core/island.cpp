@@ -21,7 +21,8 @@ bool slow(const PhysicsBody& b, double speed) {
 }  // namespace
 
 void updateSleep(std::vector<PhysicsBody>& bodies, const std::vector<Contact>& contacts,
-                 const PhysicsSettings& settings, std::vector<int>& parent) {
+                 const PhysicsSettings& settings, std::vector<int>& parent,
+                 std::vector<double>& islandTime) {
     const int n = int(bodies.size()) - 1;  // the static body joins no island
     for (int i = 0; i < n; ++i)
         if (bodies[i].awake)
@@ -36,7 +37,7 @@ void updateSleep(std::vector<PhysicsBody>& bodies, const std::vector<Contact>& c
     for (const Contact& c : contacts)
         if (c.a < n) parent[findRoot(parent, c.a)] = findRoot(parent, c.b);
     // The island's readiness is its least settled body: the minimum timer, kept at the root.
-    std::vector<double> islandTime(n, std::numeric_limits<double>::infinity());
+    islandTime.assign(size_t(n), std::numeric_limits<double>::infinity());
     for (int i = 0; i < n; ++i) {
         double& t = islandTime[findRoot(parent, i)];
         t = std::min(t, bodies[i].awake ? bodies[i].sleepTime : 0.0);

@@ -57,6 +57,7 @@ struct PhysicsWorld::Impl {
     std::vector<std::pair<int, int>> pairs;
     std::vector<StaticHit> hits;
     std::vector<int> islands, scratch;
+    std::vector<double> islandTime;
 };
 
 namespace {
@@ -148,7 +149,7 @@ void PhysicsWorld::step() {
     for (int i = 0; i < settings_.restitutionIterations; ++i) applyRestitution(ctx);
     keepImpulses();
     if (settings_.continuous) sweepFast();
-    updateSleep(bodies_, w.contacts, settings_, w.scratch);
+    updateSleep(bodies_, w.contacts, settings_, w.scratch, w.islandTime);
     updateStats();
     ++steps_;
 }
@@ -261,11 +262,9 @@ void PhysicsWorld::integrateVelocities(double h) {
 
 // Symplectic Euler moves by v_new·h, which trails the exact free flight x + v·h + ½·a·h² by
 // ½·g·h² each substep. ExactGravity adds that back, but only while no contact pushed the body:
-// a resting sphere must not be nudged into its support every substep.
+// a resting sphere must not be nudged into its support every substep. The solve pass just before
+// marked the bodies a contact pushes (PhysicsBody::supported).
 void PhysicsWorld::integratePositions(double h) {
-    for (PhysicsBody& b : bodies_) b.supported = false;
-    for (const Contact& c : impl_->contacts)
-        if (c.normalImpulse > 0.0) bodies_[c.a].supported = bodies_[c.b].supported = true;
     const bool exact = settings_.integrator == Integrator::ExactGravity;
     for (int i = 0; i < bodyCount(); ++i) {
         PhysicsBody& b = bodies_[i];
