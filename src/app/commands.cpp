@@ -50,8 +50,9 @@ static std::string firstErrorLine(const std::string& text) {
     return first;
 }
 
-static int cannotRender(const std::string& error) {
-    std::cerr << "cannot render: " << firstErrorLine(error) << '\n';
+// `doing` is what failed: "render", "build the shader".
+static int glFailure(const char* doing, const std::string& error) {
+    std::cerr << "cannot " << doing << ": " << firstErrorLine(error) << '\n';
     return kExitNoGl;
 }
 
@@ -97,7 +98,7 @@ int runRender(const Args& a) {
     std::string error;
     bool large = a.width * a.height > 1024 * 1024 && isatty(STDERR_FILENO);
     if (!renderOffscreen(scene, options, a.width, a.height, &img, &error, large ? printProgress : nullptr))
-        return cannotRender(error);
+        return glFailure("render", error);
     if (!savePng(a.output, img, &error)) {
         std::cerr << error << '\n';
         return kExitBadInput;
@@ -149,7 +150,7 @@ int runShader(const Args& a) {
     if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
     ShaderFeatures f = shaderFeatures(scene, options.mode, options.uber, driverUniformBlockBytes());
     std::string source, error;
-    if (!fragmentSource(f, &source, &error)) return cannotRender(error);
+    if (!fragmentSource(f, &source, &error)) return glFailure("build the shader", error);
     std::cout << source;
     return flushStdout();
 }
@@ -165,7 +166,7 @@ int runBench(const Args& a) {
     std::string error;
     if (!context.create(a.width, a.height, &error) || !renderer.init(&error) ||
         !renderer.setScene(scene, options, &error))
-        return cannotRender(error);
+        return glFailure("render", error);
     std::vector<double> ms;
     for (int i = 0; i <= a.frames; ++i) {  // frame 0 warms up: shader JIT, caches
         auto t0 = std::chrono::steady_clock::now();

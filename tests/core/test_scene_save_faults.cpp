@@ -147,6 +147,9 @@ struct StepCase {
     const char* name;
 };
 
+// Names the case in CTest's list instead of a dump of the struct's bytes.
+void PrintTo(const StepCase& c, std::ostream* os) { *os << c.name; }
+
 class EachStepFails : public SaveFaults, public ::testing::WithParamInterface<StepCase> {};
 
 TEST_P(EachStepFails, OldFileWholeSceneIntactOneLineError) {
