@@ -6,6 +6,7 @@
 #include "marchbox/editor/events.h"
 #include "marchbox/editor/files.h"
 #include "marchbox/gl/gl.h"
+#include "render_dialog.h"
 #include "scene_view.h"
 #include "ui.h"
 #include "viewport_input.h"
@@ -51,6 +52,7 @@ private:
     SceneView view_;
     Editor editor_;
     UiState ui_;
+    RenderDialog renderDialog_;
     FrameStats stats_;
     ViewportInput input_;
     bool imgui_ = false;
@@ -135,6 +137,7 @@ void App::buildUi(UiContext& c, int width, int height, double seconds) {
     drawSimulationWindow(c);
     drawViewWindows(c);
     drawDialogs(c);
+    renderDialog_.draw(c);
     // A released widget or drag ends its undo step; the next change starts a new one.
     if (!ImGui::IsAnyItemActive() && !input_.dragging()) editor_.endEdit();
 }
@@ -154,6 +157,7 @@ void App::present(int width, int height) {
     double now = glfwGetTime();
     view_.pollShaders(editor_.scene(), now);
     view_.sync(editor_.scene(), editor_.document().version(), ui_.render, now);
+    renderDialog_.work(0.03);  // a few tiles a frame keep the window responsive
     glViewport(0, 0, width, height);
     glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);

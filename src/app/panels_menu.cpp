@@ -34,6 +34,7 @@ static void fileMenu(UiContext& c) {
     if (menuItem("File", "Open...", "Ctrl+O")) c.ui.wantOpen = true;
     if (menuItem("File", "Save", "Ctrl+S")) saveFile(c);
     if (menuItem("File", "Save As...")) c.ui.wantSaveAs = true;
+    if (menuItem("File", "Render...", nullptr, c.ui.showRender)) c.ui.showRender = !c.ui.showRender;
     ImGui::Separator();
     if (menuItem("File", "Exit", "Esc")) request(c, Leave::Exit);
 }
@@ -63,6 +64,10 @@ static void simulationMenu(UiContext& c) {
         c.ui.showSimulation = !c.ui.showSimulation;
 }
 
+static void togglePost(RenderOptions& o, PostMode mode) {
+    o.post = o.post == PostMode::None ? mode : PostMode::None;
+}
+
 static void viewMenu(UiContext& c) {
     UiState& ui = c.ui;
     if (menuItem("View", "Camera and render", nullptr, ui.showView)) ui.showView = !ui.showView;
@@ -72,6 +77,8 @@ static void viewMenu(UiContext& c) {
                 ui.render.mode = RenderMode(m);
         ImGui::EndMenu();
     }
+    if (menuItem("View", "Fog", "F", ui.render.fog)) ui.render.fog = !ui.render.fog;
+    if (menuItem("View", "FXAA", "P", ui.render.post != PostMode::None)) togglePost(ui.render, PostMode::Fxaa);
     if (menuItem("View", "Orbit preview", "1", ui.previewOrbit)) ui.previewOrbit = !ui.previewOrbit;
     if (menuItem("View", "Statistics", nullptr, ui.showStats)) ui.showStats = !ui.showStats;
     if (menuItem("View", "Screenshot", "F12")) ui.wantScreenshot = true;
@@ -109,6 +116,8 @@ static void plainShortcut(UiContext& c, const KeyPress& k) {
         case GLFW_KEY_DELETE: e.removeSelected(&c.ui.message); break;
         case GLFW_KEY_J: e.kick(); break;
         case GLFW_KEY_1: c.ui.previewOrbit = !c.ui.previewOrbit; break;
+        case GLFW_KEY_F: c.ui.render.fog = !c.ui.render.fog; break;
+        case GLFW_KEY_P: togglePost(c.ui.render, PostMode::Fxaa); break;
         case GLFW_KEY_ESCAPE: request(c, Leave::Exit); break;
         default: break;
     }

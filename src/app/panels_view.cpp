@@ -50,6 +50,16 @@ static void debugView(UiState& ui) {
     int mode = int(ui.render.mode);
     if (ImGui::Combo("debug view", &mode, names, kRenderModeCount)) ui.render.mode = RenderMode(mode);
     ImGui::Checkbox("uber shader", &ui.render.uber);
+    ImGui::Checkbox("fog (F)", &ui.render.fog);
+    postModeCombo(ui);
+    ImGui::SliderFloat("shadow softness", &ui.render.quality.softness, 2.0f, 64.0f, "k = %.1f",
+                       ImGuiSliderFlags_Logarithmic);
+}
+
+void postModeCombo(UiState& ui) {
+    const char* names[kPostModeCount] = {"none", "FXAA (P)", "FXAA edge mask", "FXAA direction"};
+    int post = int(ui.render.post);
+    if (ImGui::Combo("post pass", &post, names, kPostModeCount)) ui.render.post = PostMode(post);
 }
 
 static void viewWindow(UiContext& c) {

@@ -20,16 +20,12 @@ bool SceneView::init(const Scene& scene, std::string* error) {
     return true;
 }
 
-static bool sameOptions(const RenderOptions& a, const RenderOptions& b) {
-    return a.mode == b.mode && a.uber == b.uber;
-}
-
 void SceneView::sync(const Scene& scene, uint64_t version, const RenderOptions& options,
                      double now) {
-    if (version == version_ && sameOptions(options, options_)) return;
+    if (version == version_ && options == options_) return;
     // After a failure, a scene that changes every frame (a running simulation) would recompile
     // the broken shader every frame: try again at most once a second.
-    if (now < retryAt_ && sameOptions(options, options_)) return;
+    if (now < retryAt_ && options == options_) return;
     options_ = options;
     version_ = version;
     std::string error;

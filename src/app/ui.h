@@ -24,6 +24,7 @@ struct UiState {
     // Windows, toggled from the menus.
     bool showObjects = true, showMaterials = false, showLights = false;
     bool showSimulation = false, showView = false, showHelp = false, showStats = true;
+    bool showRender = false;
 
     // Requests raised by menus and shortcuts, carried out by drawDialogs() this frame.
     bool wantOpen = false, wantSaveAs = false, wantObjectPopup = false, wantScreenshot = false;
@@ -62,5 +63,6 @@ void drawSimulationWindow(UiContext& c);
 
 // [panels_view.cpp] camera, render settings, debug views, help, statistics, shader log.
 void drawViewWindows(UiContext& c);
+void postModeCombo(UiState& ui);  // FXAA and its debug views
 
 }  // namespace mb

@@ -46,6 +46,10 @@ bool Renderer::beginFrame(int width, int height, bool accumulate, std::string* e
     return true;
 }
 
+void Renderer::resumeFrame() {
+    if (accumulating_) accum_.bind();
+}
+
 void Renderer::drawRegion(int x, int y, int w, int h) {
     if (!current_ || w <= 0 || h <= 0) return;
     const Program& p = *current_;
@@ -104,7 +108,19 @@ TiledRender::TiledRender(Renderer& renderer, int width, int height, int tileSize
     : renderer_(renderer), width_(width), height_(height), tile_(std::max(16, tileSize)),
       tilesX_((width + tile_ - 1) / tile_), tilesY_((height + tile_ - 1) / tile_) {}
 
+// Tiles may interleave with other drawing (the editor's window): each call leaves the
+// framebuffer that was bound as it found it.
+class FramebufferGuard {
+public:
+    FramebufferGuard() { glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_); }
+    ~FramebufferGuard() { glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_)); }
+
+private:
+    GLint previous_ = 0;
+};
+
 bool TiledRender::start(std::string* error) {
+    FramebufferGuard guard;
     if (!result_.resize(width_, height_, GL_RGBA8)) {
         *error = "cannot create a " + std::to_string(width_) + "x" + std::to_string(height_) + " image target";
         return false;
@@ -114,6 +130,8 @@ bool TiledRender::start(std::string* error) {
 
 void TiledRender::step() {
     if (done()) return;
+    FramebufferGuard guard;
+    renderer_.resumeFrame();
     int x = (next_ % tilesX_) * tile_, y = (next_ / tilesX_) * tile_;
     renderer_.drawRegion(x, y, std::min(tile_, width_ - x), std::min(tile_, height_ - y));
     glFinish();  // one tile at a time: the driver never holds a whole large frame
@@ -121,12 +139,9 @@ void TiledRender::step() {
 }
 
 Image TiledRender::finish() {
-    GLint previous = 0;
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
+    FramebufferGuard guard;
     renderer_.endFrame(&result_);
-    Image img = readFramebuffer(width_, height_);
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
-    return img;
+    return readFramebuffer(width_, height_);
 }
 
 bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width, int height,

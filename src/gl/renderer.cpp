@@ -141,7 +141,17 @@ void Renderer::setUniforms(const Scene& scene, const ShaderFeatures& f, const Re
     p.set("uAo", int(scene.render.ao));
 }
 
-bool Renderer::setScene(const Scene& scene, const RenderOptions& options, std::string* error) {
+bool operator==(const RenderOptions& a, const RenderOptions& b) {
+    const RenderQuality &p = a.quality, &q = b.quality;
+    return a.mode == b.mode && a.uber == b.uber && a.post == b.post && a.fog == b.fog &&
+           p.relaxPercent == q.relaxPercent && p.coneEpsilon == q.coneEpsilon &&
+           p.shadowSteps == q.shadowSteps && p.grid == q.grid && p.softness == q.softness;
+}
+
+bool Renderer::setScene(const Scene& original, const RenderOptions& options, std::string* error) {
+    Scene fogless;
+    if (!options.fog) fogless = original, fogless.render.fog = 0.0f;
+    const Scene& scene = options.fog ? original : fogless;
     ShaderFeatures f = shaderFeatures(scene, options.mode, options.uber, maxUniformBlock_, options.quality);
     if (f.uber && int(scene.objects.size()) > f.objects) {
         *error = "the uber shader holds at most " + std::to_string(f.objects) + " objects";

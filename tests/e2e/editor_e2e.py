@@ -324,9 +324,29 @@ def case_shader_reload(app, scene):
     check(is_red(app.screenshot().pixel(x, y)), 'the last good program stopped drawing')
     # The fix: the sphere's shading comes from the file again, now flat blue to prove it.
     with open(lighting, 'w') as f:
-        f.write(good.replace('return col;\n}', 'return vec3(0.0, 0.0, 1.0);\n}', 1))
+        flat = 'vec3 shade(Surface s, vec3 p, vec3 n, vec3 rd) {\n    return vec3(0.0, 0.0, 1.0);'
+        check(flat.split('\n')[0] in good, 'lighting.glsl has no shade() to replace')
+        f.write(good.replace(flat.split('\n')[0], flat, 1))
     app.wait('shaders reloaded', timeout=60)
     check(app.screenshot().pixel(x, y) == (0, 0, 255), 'the reloaded shader is not in use')
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def case_render(app, scene):
+    """File > Render… draws a PNG of the asked size tile by tile while the window stays live."""
+    app.menu('File', 'Render...')
+    for field, value in (('render/width', '300'), ('render/height', '200')):
+        app.click_widget(field)
+        app.key('ctrl+a')
+        app.type(value)
+    app.click_widget('render/start')
+    check(app.wait('render started ') == 'render started 300x200', 'the size typed was not used')
+    saved = app.wait('saved ', timeout=90).split(' ', 1)[1]
+    img = read_png(os.path.join(app.workdir, saved))
+    check((img.width, img.height) == (300, 200), 'the PNG is %dx%d' % (img.width, img.height))
+    check(len({img.pixel(x, y) for x in range(0, 300, 15) for y in range(0, 200, 15)}) > 10,
+          'the render is nearly uniform')
     app.key('Escape')
     check(app.finish() == 0, 'exit status not 0')
 

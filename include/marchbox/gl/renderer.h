@@ -23,7 +23,10 @@ struct RenderOptions {
     bool uber = false;  // the general shader with every feature behind uniforms
     RenderQuality quality;
     PostMode post = PostMode::None;
+    bool fog = true;    // false draws the scene's fog as 0 (the editor's F key); the file keeps it
 };
+bool operator==(const RenderOptions& a, const RenderOptions& b);
+inline bool operator!=(const RenderOptions& a, const RenderOptions& b) { return !(a == b); }
 
 class Renderer {
 public:
@@ -42,6 +45,7 @@ public:
     // with `accumulate`, or when the scene supersamples or post-processes, the samples go to a
     // float target first and endFrame resolves them into `into` (or the remembered framebuffer).
     bool beginFrame(int width, int height, bool accumulate, std::string* error);
+    void resumeFrame();                           // binds the frame's target again
     void drawRegion(int x, int y, int w, int h);  // pixels from the bottom-left corner
     void endFrame(const ColorTarget* into = nullptr);
 
