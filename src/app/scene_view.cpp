@@ -17,6 +17,7 @@ bool SceneView::init(const Scene& scene, std::string* error) {
     if (!renderer_->init(error)) return false;
     // A scene whose shader fails still opens: the log window says why.
     if (!renderer_->setScene(scene, options_, &log_)) emitEvent("shader-error");
+    renderer_->prepareUber(scene, options_);  // the stand-in while later edits compile
     return true;
 }
 
@@ -29,13 +30,18 @@ void SceneView::sync(const Scene& scene, uint64_t version, const RenderOptions& 
     options_ = options;
     version_ = version;
     std::string error;
-    if (renderer_->setScene(scene, options_, &error)) return;
+    if (renderer_->requestScene(scene, options_, &error)) return;
     log_ = error;
     retryAt_ = now + 1.0;
     emitEvent("shader-error");
 }
 
 void SceneView::draw(int width, int height, int selectedObject) {
+    std::string error;
+    if (!renderer_->poll(&error)) {
+        log_ = error;
+        emitEvent("shader-error");
+    }
     if (const Program* p = renderer_->program()) {
         // lighting.glsl tints object uHighlight - 1; 0, the default, tints nothing.
         glUseProgram(p->id());

@@ -31,32 +31,42 @@ bool Renderer::init(std::string* error) {
     return true;
 }
 
-Program* Renderer::programFor(const ShaderFeatures& f, std::string* error) {
+Renderer::Cached* Renderer::cached(const ShaderFeatures& f) {
     for (Cached& c : cache_)
-        if (c.features == f) return c.program.get();
+        if (c.features == f) return &c;
+    return nullptr;
+}
+
+bool Renderer::startBuild(const ShaderFeatures& f, Build* b, std::string* error) {
     std::string source;
-    if (!fragmentSource(f, &source, error)) return nullptr;
-    Shader vs, fs;
-    if (!vs.compileFile(GL_VERTEX_SHADER, shaderDir() + "/fullscreen.vert")) {
-        *error = "vertex shader: " + vs.log();
-        return nullptr;
-    }
-    if (!fs.compile(GL_FRAGMENT_SHADER, source)) {
-        *error = "fragment shader: " + fs.log();
-        return nullptr;
-    }
-    auto program = std::make_unique<Program>();
-    if (!program->link(vs, fs)) {
-        *error = "link: " + program->log();
-        return nullptr;
-    }
-    program->bindBlock("Objects", kObjectsBinding);
-    program->bindBlock("Materials", kMaterialsBinding);
-    program->bindBlock("Lights", kLightsBinding);
-    GLuint store = glGetProgramResourceIndex ? glGetProgramResourceIndex(program->id(), GL_SHADER_STORAGE_BLOCK, "ObjectStore") : GL_INVALID_INDEX;
-    if (store != GL_INVALID_INDEX) glShaderStorageBlockBinding(program->id(), store, kObjectsBinding);
-    cache_.push_back({f, std::move(program)});
+    if (!fragmentSource(f, &source, error) || !readShaderSource(shaderDir() + "/fullscreen.vert", &b->vertexSource, error))
+        return false;
+    b->features = f;
+    b->vs.start(GL_VERTEX_SHADER, b->vertexSource);
+    b->fs.start(GL_FRAGMENT_SHADER, source);
+    b->program = std::make_unique<Program>();
+    b->program->startLink(b->vs, b->fs);
+    return true;
+}
+
+Program* Renderer::finishBuild(Build* b, std::string* error) {
+    if (!b->vs.finish()) return *error = "vertex shader: " + b->vs.log(), nullptr;
+    if (!b->fs.finish()) return *error = "fragment shader: " + b->fs.log(), nullptr;
+    if (!b->program->finishLink()) return *error = "link: " + b->program->log(), nullptr;
+    Program& p = *b->program;
+    p.bindBlock("Objects", kObjectsBinding);
+    p.bindBlock("Materials", kMaterialsBinding);
+    p.bindBlock("Lights", kLightsBinding);
+    GLuint store = glGetProgramResourceIndex ? glGetProgramResourceIndex(p.id(), GL_SHADER_STORAGE_BLOCK, "ObjectStore") : GL_INVALID_INDEX;
+    if (store != GL_INVALID_INDEX) glShaderStorageBlockBinding(p.id(), store, kObjectsBinding);
+    cache_.push_back({b->features, std::move(b->program)});
     return cache_.back().program.get();
+}
+
+Program* Renderer::programFor(const ShaderFeatures& f, std::string* error) {
+    if (Cached* c = cached(f)) return c->program.get();
+    Build b;
+    return startBuild(f, &b, error) ? finishBuild(&b, error) : nullptr;
 }
 
 // Uniform arrays are sized to their capacity in the shader, so the upload is padded to it.
@@ -148,24 +158,98 @@ bool operator==(const RenderOptions& a, const RenderOptions& b) {
            p.shadowSteps == q.shadowSteps && p.grid == q.grid && p.softness == q.softness;
 }
 
-bool Renderer::setScene(const Scene& original, const RenderOptions& options, std::string* error) {
-    Scene fogless;
-    if (!options.fog) fogless = original, fogless.render.fog = 0.0f;
-    const Scene& scene = options.fog ? original : fogless;
-    ShaderFeatures f = shaderFeatures(scene, options.mode, options.uber, maxUniformBlock_, options.quality);
-    if (f.uber && int(scene.objects.size()) > f.objects) {
-        *error = "the uber shader holds at most " + std::to_string(f.objects) + " objects";
+// The scene as drawn: the editor's F key hides fog without touching the file's value.
+static Scene viewedScene(const Scene& scene, const RenderOptions& options) {
+    Scene viewed = scene;
+    if (!options.fog) viewed.render.fog = 0.0f;
+    return viewed;
+}
+
+bool Renderer::featuresFor(const Scene& scene, const RenderOptions& options, ShaderFeatures* f,
+                           std::string* error) const {
+    *f = shaderFeatures(scene, options.mode, options.uber, maxUniformBlock_, options.quality);
+    if (f->uber && int(scene.objects.size()) > f->objects) {
+        *error = "the uber shader holds at most " + std::to_string(f->objects) + " objects";
         return false;
     }
-    Program* p = programFor(f, error);
-    if (!p) return false;
+    return true;
+}
+
+void Renderer::use(Program* p, const ShaderFeatures& f, const Scene& scene, const RenderOptions& options) {
     current_ = p;
     currentFeatures_ = f;
     samples_ = options.mode == RenderMode::ObjectId ? 1 : scene.render.aa;  // ids do not average
     post_ = options.mode == RenderMode::ObjectId ? PostMode::None : options.post;
     upload(scene, f);
     setUniforms(scene, f, options.quality);
+}
+
+bool Renderer::setScene(const Scene& original, const RenderOptions& options, std::string* error) {
+    Scene scene = viewedScene(original, options);
+    ShaderFeatures f;
+    if (!featuresFor(scene, options, &f, error)) return false;
+    Program* p = programFor(f, error);
+    if (!p) return false;
+    use(p, f, scene, options);
     return true;
+}
+
+bool Renderer::requestScene(const Scene& original, const RenderOptions& options, std::string* error) {
+    Scene scene = viewedScene(original, options);
+    ShaderFeatures f;
+    if (!featuresFor(scene, options, &f, error)) return false;
+    if (Cached* c = cached(f)) {
+        pending_.reset();
+        use(c->program.get(), f, scene, options);
+        return true;
+    }
+    if (failed_ && failed_->features == f) {  // a running simulation asks every frame
+        *error = failed_->log;
+        return false;
+    }
+    if (!pending_ || !(pending_->features == f)) {
+        auto build = std::make_unique<Build>();
+        if (!startBuild(f, build.get(), error)) return false;
+        pending_ = std::move(build);
+    }
+    pending_->scene = scene;
+    pending_->options = options;
+    // Meanwhile the uber shader, if it is built, draws the new scene; else the old program
+    // keeps drawing the old one.
+    RenderOptions uber = options;
+    uber.uber = true;
+    ShaderFeatures u;
+    std::string ignored;
+    if (featuresFor(scene, uber, &u, &ignored))
+        if (Cached* c = cached(u)) use(c->program.get(), u, scene, uber);
+    return true;
+}
+
+bool Renderer::poll(std::string* error) {
+    if (uberBuild_ && uberBuild_->program->linkDone()) {
+        std::string ignored;  // a broken uber shader only means no stand-in
+        finishBuild(uberBuild_.get(), &ignored);
+        uberBuild_.reset();
+    }
+    if (!pending_ || !pending_->program->linkDone()) return true;
+    std::unique_ptr<Build> b = std::move(pending_);
+    Program* p = finishBuild(b.get(), error);
+    if (!p) {
+        failed_ = Failure{b->features, *error};
+        return false;
+    }
+    use(p, b->features, b->scene, b->options);
+    return true;
+}
+
+void Renderer::prepareUber(const Scene& scene, const RenderOptions& options) {
+    RenderOptions uber = options;
+    uber.uber = true;
+    ShaderFeatures u;
+    std::string ignored;
+    if (uberBuild_ || !featuresFor(viewedScene(scene, uber), uber, &u, &ignored) || cached(u)) return;
+    auto build = std::make_unique<Build>();
+    if (startBuild(u, build.get(), &ignored)) uberBuild_ = std::move(build);
 }
 
 }  // namespace mb

@@ -62,10 +62,18 @@ static std::string infoLog(GLuint id, bool program) {
 }
 
 bool Shader::compile(GLenum type, const std::string& source) {
+    start(type, source);
+    return finish();
+}
+
+void Shader::start(GLenum type, const std::string& source) {
     if (!id_) id_ = glCreateShader(type);
     const char* src = source.c_str();
     glShaderSource(id_, 1, &src, nullptr);
     glCompileShader(id_);
+}
+
+bool Shader::finish() {
     GLint ok = 0;
     glGetShaderiv(id_, GL_COMPILE_STATUS, &ok);
     log_ = infoLog(id_, false);
@@ -91,12 +99,29 @@ Program& Program::operator=(Program&& o) noexcept {
 }
 
 bool Program::link(const Shader& vertex, const Shader& fragment) {
+    startLink(vertex, fragment);
+    return finishLink();
+}
+
+void Program::startLink(const Shader& vertex, const Shader& fragment) {
     if (!id_) id_ = glCreateProgram();
     glAttachShader(id_, vertex.id());
     glAttachShader(id_, fragment.id());
     glLinkProgram(id_);
     glDetachShader(id_, vertex.id());
     glDetachShader(id_, fragment.id());
+}
+
+// With GL_KHR_parallel_shader_compile the driver compiles and links on its own threads; asking
+// for the status before GL_COMPLETION_STATUS_KHR says so would wait for it.
+bool Program::linkDone() const {
+    if (!GLEW_KHR_parallel_shader_compile) return true;
+    GLint done = GL_TRUE;
+    glGetProgramiv(id_, GL_COMPLETION_STATUS_KHR, &done);
+    return done == GL_TRUE;
+}
+
+bool Program::finishLink() {
     GLint ok = 0;
     glGetProgramiv(id_, GL_LINK_STATUS, &ok);
     log_ = infoLog(id_, true);

@@ -113,7 +113,8 @@ class Editor:
     def key(self, combo):
         xdotool('keydown', combo)
         time.sleep(HOLD)
-        xdotool('keyup', combo)
+        # Esc may already have closed the window: then there is nothing left to release.
+        subprocess.run(['xdotool', 'keyup', combo], capture_output=True)
         time.sleep(0.05)
 
     def type(self, text):

@@ -9,6 +9,7 @@
 #include "marchbox/scene.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,15 @@ public:
     // the log.
     bool setScene(const Scene& scene, const RenderOptions& options, std::string* error);
 
+    // The same without waiting for a compile: a program not yet built starts compiling (on the
+    // driver's threads where it offers GL_KHR_parallel_shader_compile) and the uber program, if
+    // built, draws the scene meanwhile; else the old program keeps drawing the old scene.
+    // poll() swaps the new program in once linked; false with the log if it failed.
+    bool requestScene(const Scene& scene, const RenderOptions& options, std::string* error);
+    bool poll(std::string* error);
+    bool compiling() const { return pending_ || uberBuild_; }  // poll() has work left
+    void prepareUber(const Scene& scene, const RenderOptions& options);  // builds the stand-in
+
     // Draws the whole width × height image, every supersample, into the framebuffer bound now.
     void draw(int width, int height);
 
@@ -57,13 +67,33 @@ private:
         ShaderFeatures features;
         std::unique_ptr<Program> program;
     };
+    struct Build {  // a program on its way: shaders compiling, link started
+        ShaderFeatures features;
+        std::string vertexSource;
+        Shader vs, fs;
+        std::unique_ptr<Program> program;
+        Scene scene;               // what to draw once it links
+        RenderOptions options;
+    };
+    Cached* cached(const ShaderFeatures& f);
+    bool startBuild(const ShaderFeatures& f, Build* b, std::string* error);
+    Program* finishBuild(Build* b, std::string* error);
     Program* programFor(const ShaderFeatures& f, std::string* error);
+    bool featuresFor(const Scene& scene, const RenderOptions& options, ShaderFeatures* f,
+                     std::string* error) const;
+    void use(Program* p, const ShaderFeatures& f, const Scene& scene, const RenderOptions& options);
     void upload(const Scene& scene, const ShaderFeatures& f);
     void setUniforms(const Scene& scene, const ShaderFeatures& f, const RenderQuality& q);
     void uploadGrid(const Scene& scene);
     const Program* postProgram(std::string* error);
 
     std::vector<Cached> cache_;
+    std::unique_ptr<Build> pending_, uberBuild_;
+    struct Failure {
+        ShaderFeatures features;
+        std::string log;
+    };
+    std::optional<Failure> failed_;  // not built again until the shaders reload
     Program* current_ = nullptr;
     ShaderFeatures currentFeatures_;
     VertexArray quad_;

@@ -27,6 +27,8 @@ public:
     Shader& operator=(const Shader&) = delete;
 
     bool compile(GLenum type, const std::string& source);  // keeps the info log either way
+    void start(GLenum type, const std::string& source);    // compile without waiting
+    bool finish();                                         // wait, keep the log, say if it built
     bool compileFile(GLenum type, const std::string& path, const std::string& prefix = "");
 
     GLuint id() const { return id_; }
@@ -48,6 +50,9 @@ public:
 
     // Links, keeps the log, and caches every active uniform's location.
     bool link(const Shader& vertex, const Shader& fragment);
+    void startLink(const Shader& vertex, const Shader& fragment);  // the shaders may be compiling
+    bool linkDone() const;  // true once finishLink() would not wait
+    bool finishLink();
 
     GLuint id() const { return id_; }
     const std::string& log() const { return log_; }

@@ -1,0 +1,77 @@
+// test_async_compile.cpp — a feature change does not wait for the compiler: the uber program
+// stands in until the scene's own program links, then takes over.
+#include "golden.h"
+
+#include "marchbox/gl/offscreen_context.h"
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <thread>
+
+using namespace mb;
+
+TEST(AsyncCompile, UberStandsInUntilTheNewProgramLinks) {
+    OffscreenContext context;
+    Renderer r;
+    std::string error;
+    ASSERT_TRUE(context.create(1, 1, &error)) << error;
+    ASSERT_TRUE(r.init(&error)) << error;
+    Scene s = test::loadSceneOrDie("scenes/primitives.txt");
+    ASSERT_TRUE(r.setScene(s, {}, &error)) << error;
+    r.prepareUber(s, {});
+    for (int i = 0; i < 6000 && r.compiling(); ++i) {  // up to a minute on a loaded llvmpipe
+        ASSERT_TRUE(r.poll(&error)) << error;
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    const Program* first = r.program();
+
+    s.render.shadows = 2;  // a new feature set: soft shadows
+    ASSERT_TRUE(r.requestScene(s, {}, &error)) << error;
+    const Program* standIn = r.program();
+    EXPECT_NE(standIn, first) << "the old program cannot draw soft shadows";
+    bool linked = false;
+    for (int i = 0; i < 6000 && !linked; ++i) {
+        ASSERT_TRUE(r.poll(&error)) << error;
+        linked = !r.compiling();
+        if (!linked) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    ASSERT_TRUE(linked);
+    EXPECT_NE(r.program(), standIn) << "the scene's own program takes over once linked";
+    EXPECT_NE(r.program(), first);
+}
+
+// Soft shadows are only compiled once a scene asks for them: break that code in a copy of
+// shaders/ after the first program is built.
+TEST(AsyncCompile, ABrokenShaderKeepsTheLastGoodProgramAndSaysWhy) {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::path(test::outputPath("broken-shaders"));
+    fs::remove_all(dir);
+    fs::copy(test::sourcePath("shaders"), dir);
+    setenv("MARCHBOX_SHADERS", dir.c_str(), 1);
+    OffscreenContext context;
+    Renderer r;
+    std::string error;
+    ASSERT_TRUE(context.create(1, 1, &error)) << error;
+    ASSERT_TRUE(r.init(&error)) << error;
+    Scene s = test::loadSceneOrDie("scenes/shadows_hard.txt");
+    ASSERT_TRUE(r.setScene(s, {}, &error)) << error;
+    const Program* good = r.program();
+    std::ifstream in(dir / "raymarch.glsl");
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    text.replace(text.find("float softShadow("), 17, "float softShadow(not glsl ");
+    std::ofstream(dir / "raymarch.glsl") << text;
+
+    s.render.shadows = 2;
+    bool started = r.requestScene(s, {}, &error), failed = false;
+    for (int i = 0; started && i < 6000 && r.compiling(); ++i) failed = !r.poll(&error);
+    unsetenv("MARCHBOX_SHADERS");
+    EXPECT_TRUE(failed || !started) << "the broken shader must be reported";
+    EXPECT_NE(error.find("error"), std::string::npos) << error;
+    EXPECT_EQ(r.program(), good) << "the last good program keeps drawing";
+    std::string again;
+    EXPECT_FALSE(r.requestScene(s, {}, &again)) << "the same broken features are not rebuilt";
+    EXPECT_EQ(again, error);
+}
