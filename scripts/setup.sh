@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 PACKAGES=(g++ cmake pkg-config libglfw3-dev libglew-dev libglm-dev libimgui-dev
-          libosmesa6-dev libgtest-dev libstb-dev xvfb xauth xdotool x11-utils python3)
+          libosmesa6-dev libegl-dev libgtest-dev libstb-dev xvfb xauth xdotool x11-utils python3)
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -17,6 +17,7 @@ struct Args {
     bool uber = false;                // --uber
     std::string mode = "shaded";      // --mode
     std::string post = "none";        // --post none|fxaa|fxaa-edges|fxaa-direction
+    std::string backend = "osmesa";   // --backend osmesa|egl
 };
 
 // Parses argv[first..argc). Returns false with *error set on an unknown option, a missing or

@@ -69,6 +69,12 @@ static bool parsePost(const std::string& s, PostMode* out) {
     return false;
 }
 
+bool offscreenBackend(const Args& a, OffscreenBackend* out) {
+    if (parseBackend(a.backend, out)) return true;
+    std::cerr << "unknown backend " << quoteArg(a.backend) << ": expected osmesa or egl\n";
+    return false;
+}
+
 static bool renderOptions(const Args& a, RenderOptions* o) {
     o->uber = a.uber;
     if (!parsePost(a.post, &o->post)) {
@@ -88,7 +94,7 @@ static bool printProgress(float done, void*) {
 
 int runRender(const Args& a) {
     RenderOptions options;
-    if (!needOne(a, "marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M] [--post P]") ||
+    if (!needOne(a, "marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M] [--post P] [--backend B]") ||
         !needOutput(a, "render", "OUT.png") || !renderOptions(a, &options))
         return kExitUsage;
     Scene scene;
@@ -96,9 +102,10 @@ int runRender(const Args& a) {
     simulate(scene, a.seconds);
     Image img;
     std::string error;
-    bool large = a.width * a.height > 1024 * 1024 && isatty(STDERR_FILENO);
-    if (!renderOffscreen(scene, options, a.width, a.height, &img, &error, large ? printProgress : nullptr))
-        return glFailure("render", error);
+    OffscreenRun run;
+    if (!offscreenBackend(a, &run.backend)) return kExitUsage;
+    if (a.width * a.height > 1024 * 1024 && isatty(STDERR_FILENO)) run.progress = printProgress;
+    if (!renderOffscreen(scene, options, a.width, a.height, &img, &error, run)) return glFailure("render", error);
     if (!savePng(a.output, img, &error)) {
         std::cerr << error << '\n';
         return kExitBadInput;
@@ -157,16 +164,22 @@ int runShader(const Args& a) {
 
 int runBench(const Args& a) {
     RenderOptions options;
-    if (!needOne(a, "marchbox bench SCENE [--uber] [--size WxH] [--frames N]") || !renderOptions(a, &options))
+    OffscreenBackend backend;
+    if (!needOne(a, "marchbox bench SCENE [--uber] [--size WxH] [--frames N] [--backend osmesa|egl]") ||
+        !renderOptions(a, &options) || !offscreenBackend(a, &backend))
         return kExitUsage;
     Scene scene;
     if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
     OffscreenContext context;
     Renderer renderer;
+    ColorTarget target;  // EGL has no default framebuffer: draw where both backends can
     std::string error;
-    if (!context.create(a.width, a.height, &error) || !renderer.init(&error) ||
+    if (!context.create(1, 1, &error, backend) || !renderer.init(&error) ||
         !renderer.setScene(scene, options, &error))
         return glFailure("render", error);
+    if (!target.resize(a.width, a.height, GL_RGBA8)) return glFailure("render", "cannot create the target");
+    target.bind();
+    std::printf("device: %s, %s\n", context.platform().c_str(), reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
     std::vector<double> ms;
     for (int i = 0; i <= a.frames; ++i) {  // frame 0 warms up: shader JIT, caches
         auto t0 = std::chrono::steady_clock::now();

@@ -3,6 +3,8 @@
 
 #include "args.h"
 
+#include "marchbox/gl/offscreen_context.h"
+
 namespace mb {
 
 int runRender(const Args& a);
@@ -12,5 +14,7 @@ int runShader(const Args& a);
 int runBench(const Args& a);
 int runReport(const Args& a);
 int runEditor(const Args& a);
+
+bool offscreenBackend(const Args& a, OffscreenBackend* out);  // --backend, or a usage error
 
 }  // namespace mb

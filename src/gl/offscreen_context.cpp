@@ -3,10 +3,13 @@
 
 #include "marchbox/gl/gl.h"
 
+#include "egl_context.h"
+
 #ifndef GLAPI
 #define GLAPI extern  // glew.h undefines it; osmesa.h declares with it
 #endif
 #include <GL/osmesa.h>
+#include <cstring>
 #include <dlfcn.h>
 #include <utility>
 
@@ -54,19 +57,31 @@ bool openOsMesa(std::string* error) {
 }  // namespace
 
 void* offscreenProcAddress(const char* name) {
-    if (!g_osmesa.lib || !g_osmesa.getCurrentContext()) return nullptr;
-    return reinterpret_cast<void*>(g_osmesa.getProcAddress(name));
+    // GLEW asks for GLX entry points too; EGL would hand back a stub for any name, so those
+    // go to the real GLX, which reports no display and leaves GLEW's GL part loaded.
+    if (std::strncmp(name, "glX", 3) == 0) return nullptr;
+    if (g_osmesa.lib && g_osmesa.getCurrentContext()) return reinterpret_cast<void*>(g_osmesa.getProcAddress(name));
+    return egl::procAddress(name);
+}
+
+bool parseBackend(const std::string& s, OffscreenBackend* out) {
+    if (s == "osmesa") return *out = OffscreenBackend::OsMesa, true;
+    if (s == "egl") return *out = OffscreenBackend::Egl, true;
+    return false;
 }
 
 OffscreenContext::~OffscreenContext() { destroy(); }
 
 OffscreenContext::OffscreenContext(OffscreenContext&& o) noexcept
-    : context_(std::exchange(o.context_, nullptr)), buffer_(std::move(o.buffer_)) {}
+    : context_(std::exchange(o.context_, nullptr)), backend_(o.backend_), platform_(std::move(o.platform_)),
+      buffer_(std::move(o.buffer_)) {}
 
 OffscreenContext& OffscreenContext::operator=(OffscreenContext&& o) noexcept {
     if (this != &o) {
         destroy();
         context_ = std::exchange(o.context_, nullptr);
+        backend_ = o.backend_;
+        platform_ = std::move(o.platform_);
         buffer_ = std::move(o.buffer_);
     }
     return *this;
@@ -74,12 +89,21 @@ OffscreenContext& OffscreenContext::operator=(OffscreenContext&& o) noexcept {
 
 void OffscreenContext::destroy() {
     if (!context_) return;
-    g_osmesa.destroyContext(static_cast<OSMesaContext>(context_));
+    if (backend_ == OffscreenBackend::Egl) egl::destroy(context_);
+    else g_osmesa.destroyContext(static_cast<OSMesaContext>(context_));
     context_ = nullptr;
 }
 
-bool OffscreenContext::create(int width, int height, std::string* error) {
+bool OffscreenContext::create(int width, int height, std::string* error, OffscreenBackend backend) {
     destroy();
+    backend_ = backend;
+    if (backend == OffscreenBackend::Egl) {
+        if (!egl::create(&context_, &platform_, error)) return false;
+        if (loadGl(true, error)) return true;
+        destroy();
+        return false;
+    }
+    platform_ = "OSMesa";
     if (!openOsMesa(error)) return false;
     const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0,
                            OSMESA_PROFILE, OSMESA_CORE_PROFILE,

@@ -145,16 +145,16 @@ Image TiledRender::finish() {
 }
 
 bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width, int height,
-                     Image* out, std::string* error, RenderProgress progress, void* user) {
+                     Image* out, std::string* error, const OffscreenRun& run) {
     OffscreenContext context;
-    if (!context.create(1, 1, error)) return false;  // every pixel goes to the renderer's targets
+    if (!context.create(1, 1, error, run.backend)) return false;  // pixels go to the renderer's targets
     Renderer renderer;
     if (!renderer.init(error) || !renderer.setScene(scene, options, error)) return false;
     TiledRender tiles(renderer, width, height);
     if (!tiles.start(error)) return false;
     while (!tiles.done()) {
         tiles.step();
-        if (progress && !progress(tiles.progress(), user)) {
+        if (run.progress && !run.progress(tiles.progress(), run.user)) {
             *error = "cancelled";
             return false;
         }

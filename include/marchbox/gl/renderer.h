@@ -3,6 +3,7 @@
 
 #include "marchbox/gl/buffers.h"
 #include "marchbox/gl/framebuffer.h"
+#include "marchbox/gl/offscreen_context.h"
 #include "marchbox/gl/shader.h"
 #include "marchbox/gl/shader_source.h"
 #include "marchbox/image.h"
@@ -137,9 +138,14 @@ private:
 // Called between tiles with the fraction done; returning false cancels the render.
 using RenderProgress = bool (*)(float done, void* user);
 
-// Creates an OSMesa context, renders one width × height frame in tiles and reads it back.
+struct OffscreenRun {
+    OffscreenBackend backend = OffscreenBackend::OsMesa;
+    RenderProgress progress = nullptr;
+    void* user = nullptr;
+};
+
+// Creates an off-screen context, renders one width × height frame in tiles and reads it back.
 bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width, int height,
-                     Image* out, std::string* error, RenderProgress progress = nullptr,
-                     void* user = nullptr);
+                     Image* out, std::string* error, const OffscreenRun& run = {});
 
 }  // namespace mb
