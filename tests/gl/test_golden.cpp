@@ -16,5 +16,12 @@ TEST_P(Golden, MatchesCommittedImage) {
 INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
                          ::testing::Values("default", "primitives", "csg", "shadows_hard",
                                            "shadows_soft", "reflections", "lights", "legacy",
-                                           "extremes", "inside", "pile", "fog", "ao_aa"),
+                                           "extremes", "inside", "pile", "fog", "ao_aa", "sun"),
                          [](const auto& info) { return std::string(info.param); });
+
+// FXAA is a view setting, not a scene key: its golden is the default scene with the post pass.
+TEST(GoldenPost, FxaaOnTheDefaultScene) {
+    RenderOptions o;
+    o.post = PostMode::Fxaa;
+    test::expectMatchesGolden(test::renderOrDie(test::loadSceneOrDie("scenes/default.txt"), o), "default_fxaa");
+}
