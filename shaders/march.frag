@@ -9,16 +9,32 @@
 out vec4 fragColor;
 
 #if MODE == 0
+// The colour where a ray stops, fogged by its distance; s, p and n feed the next bounce.
+vec3 surfaceColor(vec3 ro, vec3 rd, vec3 hit, out Surface s, out vec3 p, out vec3 n) {
+    p = ro + rd * hit.x;
+    n = calcNormal(p);
+    s = surfaceAt(p, int(hit.y));
+    return applyFog(shade(s, p, n, rd), rd, hit.x);
+}
+
+#if REFLECTIONS == 0
+vec3 render(vec3 ro, vec3 rd) {
+    vec3 hit = castRay(ro, rd);
+    if (hit.y < -1.5) return sky(rd);
+    Surface s;
+    vec3 p, n;
+    return surfaceColor(ro, rd, hit, s, p, n);
+}
+#else
 // Mirror bounces: each surface keeps (1 - Kr) of its own colour and passes Kr on.
 vec3 render(vec3 ro, vec3 rd) {
     vec3 acc = vec3(0.0), weight = vec3(1.0);
     for (int bounce = 0; bounce <= REFLECTIONS; ++bounce) {
         vec3 hit = castRay(ro, rd);
         if (hit.y < -1.5) return acc + weight * sky(rd);
-        vec3 p = ro + rd * hit.x;
-        vec3 n = calcNormal(p);
-        Surface s = surfaceAt(p, int(hit.y));
-        vec3 col = applyFog(shade(s, p, n, rd), rd, hit.x);
+        Surface s;
+        vec3 p, n;
+        vec3 col = surfaceColor(ro, rd, hit, s, p, n);
         bool last = bounce == REFLECTIONS || s.kr <= 0.0;
 #if UBER
         last = last || bounce >= uReflections;
@@ -31,6 +47,7 @@ vec3 render(vec3 ro, vec3 rd) {
     }
     return acc;
 }
+#endif
 #else
 // Debug views of the primary hit.
 vec3 render(vec3 ro, vec3 rd) {

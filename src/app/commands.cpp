@@ -51,7 +51,7 @@ static std::string firstErrorLine(const std::string& text) {
 }
 
 // `doing` is what failed: "render", "build the shader".
-static int glFailure(const char* doing, const std::string& error) {
+int glFailure(const char* doing, const std::string& error) {
     std::cerr << "cannot " << doing << ": " << firstErrorLine(error) << '\n';
     return kExitNoGl;
 }

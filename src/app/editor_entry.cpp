@@ -38,10 +38,7 @@ static int renderPreview(const std::string& scenePath) {
     std::string error;
     std::cout << "no display: rendering " << scenePath << " to " << out << " instead\n";
     Image img;
-    if (!renderOffscreen(scene, RenderOptions{}, 640, 360, &img, &error)) {
-        std::cerr << "cannot render: " << error << '\n';
-        return kExitNoGl;
-    }
+    if (!renderOffscreen(scene, RenderOptions{}, 640, 360, &img, &error)) return glFailure("render", error);
     if (!savePng(out, img, &error)) {
         std::cerr << error << '\n';
         return kExitBadInput;

@@ -1,10 +1,16 @@
 // image.cpp — PNG I/O through Debian's stb (libstb), and image differences.
 #include "marchbox/image.h"
 
+#include "marchbox/atomic_file.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <stb_image.h>
 #include <stb_image_write.h>
+
+// libstb exports it, but stb_image_write.h declares it only in its implementation section.
+extern "C" unsigned char* stbi_write_png_to_mem(const unsigned char* pixels, int strideBytes, int x, int y,
+                                                int n, int* outLength);
 
 namespace mb {
 
@@ -16,12 +22,15 @@ Image makeImage(int width, int height) {
     return img;
 }
 
+// Encoded in memory, then written like a scene: a full disk never leaves half a PNG.
 bool savePng(const std::string& path, const Image& img, std::string* error) {
-    if (!stbi_write_png(path.c_str(), img.width, img.height, 4, img.rgba.data(), img.width * 4)) {
-        *error = "cannot write PNG '" + path + "'";
-        return false;
-    }
-    return true;
+    int size = 0;
+    unsigned char* png = stbi_write_png_to_mem(img.rgba.data(), img.width * 4, img.width, img.height, 4, &size);
+    std::string why = png ? replaceFile(path, std::string_view(reinterpret_cast<char*>(png), size_t(size)))
+                          : "cannot encode PNG";
+    std::free(png);  // stb allocates with malloc
+    if (!why.empty()) *error = "cannot write '" + path + "': " + why;
+    return why.empty();
 }
 
 bool loadPng(const std::string& path, Image* out, std::string* error) {

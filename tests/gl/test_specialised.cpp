@@ -52,6 +52,7 @@ TEST(Specialised, LeavesOutWhatTheSceneDoesNotUse) {
                                "opIntersect(", "hardShadow(", "softShadow(", "calcAO(", "uShadows"})
         EXPECT_EQ(src.find(absent), std::string::npos) << absent << " should be left out";
     EXPECT_NE(src.find("#define REFLECTIONS 0"), std::string::npos) << "no material reflects";
+    EXPECT_EQ(src.find("REFLECTIONS;"), std::string::npos) << "no reflection loop";
 }
 
 TEST(Specialised, KeepsOnlyTheShadowKindInUse) {

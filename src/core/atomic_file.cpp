@@ -1,0 +1,104 @@
+// atomic_file.cpp — the temporary-and-rename write. Every call goes through fileOps()
+// (file_ops.h), so tests can make each one fail in turn.
+#include "marchbox/atomic_file.h"
+
+#include "file_ops.h"
+
+#include <atomic>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <memory>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace mb {
+
+FileOps& fileOps() {
+    static FileOps ops = posixOps();
+    return ops;
+}
+
+const FileOps& posixOps() {
+    // ::open is variadic; the table's fixed signature needs a wrapper.
+    static const FileOps ops{
+        [](const char* path, int flags, mode_t mode) { return ::open(path, flags, mode); },
+        ::write, ::fsync, ::close, ::rename, ::unlink};
+    return ops;
+}
+
+namespace {
+
+// Creates a new, empty file beside `path` with a name no one else uses (pid + counter, and
+// O_EXCL for anything left over). Returns the descriptor, or -1 with errno set.
+int createTemp(const std::string& path, std::string* tmp) {
+    static std::atomic<unsigned> counter{0};
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        std::string name = path + ".tmp" + std::to_string(::getpid()) + "." +
+                           std::to_string(counter++);
+        int fd = fileOps().open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0) *tmp = name;
+        if (fd >= 0 || errno != EEXIST) return fd;
+    }
+    errno = EEXIST;
+    return -1;
+}
+
+// Returns 0 or an errno. A write that takes nothing would loop for ever, so it is an error.
+int writeAll(int fd, std::string_view text) {
+    while (!text.empty()) {
+        ssize_t n = fileOps().write(fd, text.data(), text.size());
+        if (n == 0) return EIO;
+        if (n < 0 && errno != EINTR) return errno;
+        if (n > 0) text.remove_prefix(size_t(n));
+    }
+    return 0;
+}
+
+// Writes `text` to a new temporary file beside `path` and flushes it to disk; no stdio
+// buffer is involved, so fsync is the flush. Returns 0 or an errno. *tmp names the file as
+// soon as it exists, so the caller can remove it whatever happens next.
+int writeTemp(const std::string& path, std::string_view text, std::string* tmp) {
+    int fd = createTemp(path, tmp);
+    if (fd < 0) return errno;
+    int err = writeAll(fd, text);
+    if (err == 0 && fileOps().fsync(fd) != 0) err = errno;
+    // Closed whatever happened, and checked: NFS may report a failed write only here.
+    if (fileOps().close(fd) != 0 && err == 0) err = errno;
+    return err;
+}
+
+// The file a save replaces: `path`, or the file a symbolic link there points to, so the link
+// survives. Returns "" or why `path` cannot be saved to. A device, pipe or folder is refused:
+// the rename would replace it (as root, /dev/stdout itself) rather than write into it.
+std::string saveTarget(const std::string& path, std::string* target) {
+    *target = path;
+    struct stat st;
+    if (::stat(path.c_str(), &st) != 0) return "";  // nothing there yet: the save creates it
+    if (S_ISDIR(st.st_mode)) return "is a directory";
+    if (!S_ISREG(st.st_mode)) return "not a regular file";
+    if (::lstat(path.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return "";
+    std::unique_ptr<char, decltype(&std::free)> real(::realpath(path.c_str(), nullptr), std::free);
+    if (real) *target = real.get();
+    return "";
+}
+
+}  // namespace
+
+// The directory is not fsynced after the rename: after a crash the rename may be lost, but
+// the file left behind is then the old one, whole, which is the promise.
+std::string replaceFile(const std::string& path, std::string_view bytes) {
+    std::string target, tmp;
+    std::string why = saveTarget(path, &target);
+    if (why.empty()) {
+        int err = writeTemp(target, bytes, &tmp);
+        if (err == 0 && fileOps().rename(tmp.c_str(), target.c_str()) != 0) err = errno;
+        if (err == 0) return "";
+        why = std::strerror(err);
+    }
+    if (!tmp.empty()) fileOps().unlink(tmp.c_str());
+    return why;
+}
+
+}  // namespace mb
