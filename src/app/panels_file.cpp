@@ -1,9 +1,12 @@
 // panels_file.cpp — File > Open and Save As dialogs, the unsaved-changes prompt, load errors.
 #include "ui.h"
+
+#include "marchbox/editor/events.h"
 #include "widgets.h"
 
 #include "marchbox/editor/files.h"
 
+#include <filesystem>
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -87,16 +90,33 @@ static void finishSaveAs(UiContext& c, bool saved) {
     else c.editor.cancelLeave();
 }
 
+// Saving over another existing file takes a second Save: the first one only warns.
+static bool confirmedTarget(UiContext& c, bool go) {
+    std::error_code ec;
+    const std::string& path = c.ui.pathField;
+    bool other = path != c.editor.document().path() && std::filesystem::exists(path, ec);
+    if (other && go && c.ui.replacePath != path) {
+        c.ui.replacePath = path;
+        emitEvent("confirm replace " + path);
+        return false;
+    }
+    if (other && c.ui.replacePath == path)
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s exists: Save again to replace it.", path.c_str());
+    return go;
+}
+
 static void saveAsDialog(UiContext& c) {
     if (!beginModal(kSaveAsPopup)) return;
     bool go = pathField(kSaveAsPopup, &c.ui.pathField);
     go |= button(kSaveAsPopup, "Save");
     ImGui::SameLine();
     bool cancel = button(kSaveAsPopup, "Cancel");
+    go = confirmedTarget(c, go);
     fieldErrorLine(c.ui.message);
     bool saved = go && c.editor.saveAs(c.ui.pathField, &c.ui.message);
     if (saved) c.ui.message.clear();
     if (saved || cancel) {
+        c.ui.replacePath.clear();
         ImGui::CloseCurrentPopup();
         finishSaveAs(c, saved);
     }

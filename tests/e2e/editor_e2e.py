@@ -334,6 +334,26 @@ def case_shader_reload(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+def case_save_replace(app, scene):
+    """Save As onto another existing file warns first and replaces it only on a second Save."""
+    target = os.path.join(app.workdir, 'other.txt')
+    with open(target, 'w') as f:
+        f.write('scene version:1\n')
+    app.menu('File', 'Save As...')
+    app.wait('typing Save scene as/path')
+    app.type(target)
+    app.key('Return')
+    check(app.wait('confirm replace ') == 'confirm replace ' + target, 'no warning before replacing')
+    with open(target) as f:
+        check(f.read() == 'scene version:1\n', 'replaced before the second Save')
+    app.click_widget('Save scene as/Save', fresh=False)
+    check(app.wait('save ') == 'save ' + target, 'the second Save did not replace the file')
+    check(scene_values(target, 'object', 'pos') == scene_values(scene, 'object', 'pos'),
+          'the replaced file does not hold the scene')
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
 def case_render(app, scene):
     """File > Render… draws a PNG of the asked size tile by tile while the window stays live."""
     app.menu('File', 'Render...')
