@@ -13,14 +13,31 @@
 
 using namespace mb;
 
-TEST(AsyncCompile, UberStandsInUntilTheNewProgramLinks) {
+namespace {
+
+// A context and a renderer already drawing `scene` with its own program.
+struct Drawing {
     OffscreenContext context;
     Renderer r;
+    Scene s;
     std::string error;
-    ASSERT_TRUE(context.create(1, 1, &error)) << error;
-    ASSERT_TRUE(r.init(&error)) << error;
-    Scene s = test::loadSceneOrDie("scenes/primitives.txt");
-    ASSERT_TRUE(r.setScene(s, {}, &error)) << error;
+
+    void start(const char* scene) {
+        ASSERT_TRUE(context.create(1, 1, &error)) << error;
+        ASSERT_TRUE(r.init(&error)) << error;
+        s = test::loadSceneOrDie(scene);
+        ASSERT_TRUE(r.setScene(s, {}, &error)) << error;
+    }
+};
+
+}  // namespace
+
+TEST(AsyncCompile, UberStandsInUntilTheNewProgramLinks) {
+    Drawing d;
+    ASSERT_NO_FATAL_FAILURE(d.start("scenes/primitives.txt"));
+    Renderer& r = d.r;
+    Scene& s = d.s;
+    std::string& error = d.error;
     r.prepareUber(s, {});
     for (int i = 0; i < 6000 && r.compiling(); ++i) {  // up to a minute on a loaded llvmpipe
         ASSERT_TRUE(r.poll(&error)) << error;
@@ -51,13 +68,11 @@ TEST(AsyncCompile, ABrokenShaderKeepsTheLastGoodProgramAndSaysWhy) {
     fs::remove_all(dir);
     fs::copy(test::sourcePath("shaders"), dir);
     setenv("MARCHBOX_SHADERS", dir.c_str(), 1);
-    OffscreenContext context;
-    Renderer r;
-    std::string error;
-    ASSERT_TRUE(context.create(1, 1, &error)) << error;
-    ASSERT_TRUE(r.init(&error)) << error;
-    Scene s = test::loadSceneOrDie("scenes/shadows_hard.txt");
-    ASSERT_TRUE(r.setScene(s, {}, &error)) << error;
+    Drawing d;
+    ASSERT_NO_FATAL_FAILURE(d.start("scenes/shadows_hard.txt"));
+    Renderer& r = d.r;
+    Scene& s = d.s;
+    std::string& error = d.error;
     const Program* good = r.program();
     std::ifstream in(dir / "raymarch.glsl");
     std::string text((std::istreambuf_iterator<char>(in)), {});
