@@ -354,6 +354,37 @@ def case_save_replace(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+def view_region(img):
+    """Pixels of the 3D view clear of the panels and the statistics overlay."""
+    return [img.pixel(x, y) for x in range(420, 620, 4) for y in range(140, 340, 4)]
+
+
+def changed(a, b):
+    return sum(1 for p, q in zip(view_region(a), view_region(b))
+               if max(abs(p[i] - q[i]) for i in range(3)) > 8)
+
+
+def case_camera(app, scene):
+    """The orbit preview (1), flying (W) and FXAA (P) each change the view, one after another."""
+    check(changed(app.screenshot(), app.screenshot()) == 0, 'the view moves by itself')
+    app.key('1')
+    time.sleep(1.0)
+    a = app.screenshot()
+    time.sleep(0.5)
+    check(changed(a, app.screenshot()) > 20, 'the orbit preview does not turn the camera')
+    app.key('1')
+    time.sleep(0.5)
+    still = app.screenshot()
+    check(changed(still, app.screenshot()) == 0, 'key 1 did not stop the orbit preview')
+    app.key('w')  # held for HOLD seconds: the camera flies forward
+    flown = app.screenshot()
+    check(changed(still, flown) > 20, 'W did not fly the camera')
+    app.key('p')
+    check(changed(flown, app.screenshot()) > 0, 'P (FXAA) left every edge as it was')
+    app.key('Escape')  # moving the view is not an edit: nothing to ask about
+    check(app.finish() == 0, 'exit status not 0')
+
+
 def case_render(app, scene):
     """File > Render… draws a PNG of the asked size tile by tile while the window stays live."""
     app.menu('File', 'Render...')
