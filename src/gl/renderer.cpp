@@ -78,8 +78,7 @@ static void uploadPadded(UniformBuffer& ub, const std::vector<T>& items, int cap
     ub.bindBase(point);
 }
 
-void Renderer::upload(const Scene& scene, const ShaderFeatures& f) {
-    GpuScene g = packScene(scene);
+void Renderer::upload(const GpuScene& g, const ShaderFeatures& f) {
     if (f.objectsInStorage) {
         objectStore_.upload(g.objects.data(), g.objects.size() * sizeof(GpuObject), GL_DYNAMIC_DRAW);
         objectStore_.bindBase(kObjectsBinding);
@@ -124,7 +123,8 @@ static glm::vec3 skyTint(const Scene& scene) {
     return best;
 }
 
-void Renderer::setUniforms(const Scene& scene, const ShaderFeatures& f, const RenderQuality& q) {
+void Renderer::setUniforms(const Scene& scene, const GpuScene& g, const ShaderFeatures& f,
+                           const RenderQuality& q) {
     const Program& p = *current_;
     glUseProgram(p.id());
     CameraBasis basis = cameraBasis(scene.camera);
@@ -140,10 +140,9 @@ void Renderer::setUniforms(const Scene& scene, const ShaderFeatures& f, const Re
     if (useGrid) uploadGrid(scene);
     if (!f.uber) return;
     p.set("uUseGrid", int(useGrid));
-    GpuScene counts = packScene(scene);
     p.set("uObjectCount", int(scene.objects.size()));
-    p.set("uPointLights", counts.pointLights);
-    p.set("uDirLights", counts.dirLights);
+    p.set("uPointLights", g.pointLights);
+    p.set("uDirLights", g.dirLights);
     p.set("uSteps", scene.render.steps);
     p.set("uShadows", scene.lights.empty() ? 0 : scene.render.shadows);
     p.set("uReflections", scene.render.reflections);
@@ -159,10 +158,12 @@ bool operator==(const RenderOptions& a, const RenderOptions& b) {
 }
 
 // The scene as drawn: the editor's F key hides fog without touching the file's value.
-static Scene viewedScene(const Scene& scene, const RenderOptions& options) {
-    Scene viewed = scene;
-    if (!options.fog) viewed.render.fog = 0.0f;
-    return viewed;
+// Copies only when fog is hidden: a running simulation asks for a scene every frame.
+static const Scene& viewedScene(const Scene& scene, const RenderOptions& options, Scene* fogless) {
+    if (options.fog) return scene;
+    *fogless = scene;
+    fogless->render.fog = 0.0f;
+    return *fogless;
 }
 
 bool Renderer::featuresFor(const Scene& scene, const RenderOptions& options, ShaderFeatures* f,
@@ -180,12 +181,14 @@ void Renderer::use(Program* p, const ShaderFeatures& f, const Scene& scene, cons
     currentFeatures_ = f;
     samples_ = options.mode == RenderMode::ObjectId ? 1 : scene.render.aa;  // ids do not average
     post_ = options.mode == RenderMode::ObjectId ? PostMode::None : options.post;
-    upload(scene, f);
-    setUniforms(scene, f, options.quality);
+    GpuScene g = packScene(scene);
+    upload(g, f);
+    setUniforms(scene, g, f, options.quality);
 }
 
 bool Renderer::setScene(const Scene& original, const RenderOptions& options, std::string* error) {
-    Scene scene = viewedScene(original, options);
+    Scene fogless;
+    const Scene& scene = viewedScene(original, options, &fogless);
     ShaderFeatures f;
     if (!featuresFor(scene, options, &f, error)) return false;
     Program* p = programFor(f, error);
@@ -195,7 +198,8 @@ bool Renderer::setScene(const Scene& original, const RenderOptions& options, std
 }
 
 bool Renderer::requestScene(const Scene& original, const RenderOptions& options, std::string* error) {
-    Scene scene = viewedScene(original, options);
+    Scene fogless;
+    const Scene& scene = viewedScene(original, options, &fogless);
     ShaderFeatures f;
     if (!featuresFor(scene, options, &f, error)) return false;
     if (Cached* c = cached(f)) {
@@ -247,7 +251,8 @@ void Renderer::prepareUber(const Scene& scene, const RenderOptions& options) {
     uber.uber = true;
     ShaderFeatures u;
     std::string ignored;
-    if (uberBuild_ || !featuresFor(viewedScene(scene, uber), uber, &u, &ignored) || cached(u)) return;
+    Scene fogless;
+    if (uberBuild_ || !featuresFor(viewedScene(scene, uber, &fogless), uber, &u, &ignored) || cached(u)) return;
     auto build = std::make_unique<Build>();
     if (startBuild(u, build.get(), &ignored)) uberBuild_ = std::move(build);
 }

@@ -3,6 +3,7 @@
 
 #include "marchbox/gl/buffers.h"
 #include "marchbox/gl/framebuffer.h"
+#include "marchbox/gl/gpu_scene.h"
 #include "marchbox/gl/offscreen_context.h"
 #include "marchbox/gl/shader.h"
 #include "marchbox/gl/shader_source.h"
@@ -83,8 +84,8 @@ private:
     bool featuresFor(const Scene& scene, const RenderOptions& options, ShaderFeatures* f,
                      std::string* error) const;
     void use(Program* p, const ShaderFeatures& f, const Scene& scene, const RenderOptions& options);
-    void upload(const Scene& scene, const ShaderFeatures& f);
-    void setUniforms(const Scene& scene, const ShaderFeatures& f, const RenderQuality& q);
+    void upload(const GpuScene& g, const ShaderFeatures& f);
+    void setUniforms(const Scene& scene, const GpuScene& g, const ShaderFeatures& f, const RenderQuality& q);
     void uploadGrid(const Scene& scene);
     const Program* postProgram(std::string* error);
 
