@@ -126,7 +126,6 @@ int simulate(Scene& scene, double seconds, const PhysicsSettings& settings = {})
 struct StepAccumulator {
     double acc = 0.0;  // simulated time owed, s, in [0, dt)
     int advance(double frameSeconds, const PhysicsSettings& settings);  // steps to take now
-    double alpha(const PhysicsSettings& settings) const { return acc / settings.dt; }  // for blending
 };
 
 }  // namespace mb

@@ -136,7 +136,7 @@ void Renderer::setUniforms(const Scene& scene, const GpuScene& g, const ShaderFe
     p.set("uFog", scene.render.fog);
     p.set("uSkyTint", skyTint(scene));
     p.set("uSoftness", q.softness);
-    bool useGrid = f.grid && (!f.uber || int(scene.objects.size()) > kGridMinObjects);
+    bool useGrid = f.grid && usesGrid(scene, q);  // the uber shader has the grid code, maybe unused
     if (useGrid) uploadGrid(scene);
     if (!f.uber) return;
     p.set("uUseGrid", int(useGrid));
@@ -144,17 +144,10 @@ void Renderer::setUniforms(const Scene& scene, const GpuScene& g, const ShaderFe
     p.set("uPointLights", g.pointLights);
     p.set("uDirLights", g.dirLights);
     p.set("uSteps", scene.render.steps);
-    p.set("uShadows", scene.lights.empty() ? 0 : scene.render.shadows);
+    p.set("uShadows", shadowKind(scene));
     p.set("uReflections", scene.render.reflections);
     p.set("uGround", int(scene.world.ground));
     p.set("uAo", int(scene.render.ao));
-}
-
-bool operator==(const RenderOptions& a, const RenderOptions& b) {
-    const RenderQuality &p = a.quality, &q = b.quality;
-    return a.mode == b.mode && a.uber == b.uber && a.post == b.post && a.fog == b.fog &&
-           p.relaxPercent == q.relaxPercent && p.coneEpsilon == q.coneEpsilon &&
-           p.shadowSteps == q.shadowSteps && p.grid == q.grid && p.softness == q.softness;
 }
 
 // The scene as drawn: the editor's F key hides fog without touching the file's value.
@@ -178,7 +171,6 @@ bool Renderer::featuresFor(const Scene& scene, const RenderOptions& options, Sha
 
 void Renderer::use(Program* p, const ShaderFeatures& f, const Scene& scene, const RenderOptions& options) {
     current_ = p;
-    currentFeatures_ = f;
     samples_ = options.mode == RenderMode::ObjectId ? 1 : scene.render.aa;  // ids do not average
     post_ = options.mode == RenderMode::ObjectId ? PostMode::None : options.post;
     GpuScene g = packScene(scene);

@@ -27,16 +27,6 @@ bool parseRenderMode(const std::string& s, RenderMode* out) {
     return false;
 }
 
-bool ShaderFeatures::operator==(const ShaderFeatures& o) const {
-    return uber == o.uber && mode == o.mode && shapes == o.shapes && subtract == o.subtract &&
-           intersect == o.intersect && blend == o.blend && objects == o.objects &&
-           materials == o.materials && pointLights == o.pointLights && dirLights == o.dirLights &&
-           ground == o.ground && steps == o.steps && shadows == o.shadows &&
-           reflections == o.reflections && fog == o.fog && ao == o.ao &&
-           objectsInStorage == o.objectsInStorage && grid == o.grid &&
-           relaxPercent == o.relaxPercent && coneEpsilon == o.coneEpsilon && shadowSteps == o.shadowSteps;
-}
-
 static bool anyMirror(const Scene& s) {
     return std::any_of(s.materials.begin(), s.materials.end(), [](const Material& m) { return m.Kr > 0; });
 }
@@ -64,6 +54,13 @@ static void applyQuality(ShaderFeatures* f, const RenderQuality& q) {
     f->shadowSteps = q.shadowSteps;
 }
 
+int shadowKind(const Scene& s) { return s.lights.empty() ? 0 : s.render.shadows; }
+
+bool usesGrid(const Scene& s, const RenderQuality& q) {
+    int n = int(s.objects.size());
+    return q.grid < 0 ? n > kGridMinObjects : q.grid == 1 && n > 0;
+}
+
 ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int maxUniformBlockBytes,
                               const RenderQuality& quality) {
     int blockBytes = maxUniformBlockBytes > 0 ? maxUniformBlockBytes : 16384;
@@ -83,12 +80,12 @@ ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int ma
     }
     f.objects = int(s.objects.size());
     f.objectsInStorage = f.objects > uniformObjects;
-    f.grid = quality.grid < 0 ? f.objects > kGridMinObjects : quality.grid == 1 && f.objects > 0;
+    f.grid = usesGrid(s, quality);
     f.materials = int(s.materials.size());
     for (const Light& l : s.lights) (l.directional ? f.dirLights : f.pointLights)++;
     f.ground = s.world.ground;
     f.steps = s.render.steps;
-    f.shadows = s.lights.empty() ? 0 : s.render.shadows;
+    f.shadows = shadowKind(s);
     f.reflections = anyMirror(s) ? s.render.reflections : 0;
     f.fog = s.render.fog > 0;
     f.ao = s.render.ao;

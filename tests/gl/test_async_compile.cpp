@@ -1,11 +1,11 @@
 // test_async_compile.cpp — a feature change does not wait for the compiler: the uber program
 // stands in until the scene's own program links, then takes over.
 #include "golden.h"
+#include "../scoped_env.h"
 
 #include "marchbox/gl/offscreen_context.h"
 
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -67,7 +67,7 @@ TEST(AsyncCompile, ABrokenShaderKeepsTheLastGoodProgramAndSaysWhy) {
     fs::path dir = fs::path(test::outputPath("broken-shaders"));
     fs::remove_all(dir);
     fs::copy(test::sourcePath("shaders"), dir);
-    setenv("MARCHBOX_SHADERS", dir.c_str(), 1);
+    test::ScopedEnv shaders("MARCHBOX_SHADERS", dir.c_str());
     Drawing d;
     ASSERT_NO_FATAL_FAILURE(d.start("scenes/shadows_hard.txt"));
     Renderer& r = d.r;
@@ -82,7 +82,6 @@ TEST(AsyncCompile, ABrokenShaderKeepsTheLastGoodProgramAndSaysWhy) {
     s.render.shadows = 2;
     bool started = r.requestScene(s, {}, &error), failed = false;
     for (int i = 0; started && i < 6000 && r.compiling(); ++i) failed = !r.poll(&error);
-    unsetenv("MARCHBOX_SHADERS");
     EXPECT_TRUE(failed || !started) << "the broken shader must be reported";
     EXPECT_NE(error.find("error"), std::string::npos) << error;
     EXPECT_EQ(r.program(), good) << "the last good program keeps drawing";

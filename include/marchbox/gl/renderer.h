@@ -27,9 +27,9 @@ struct RenderOptions {
     RenderQuality quality;
     PostMode post = PostMode::None;
     bool fog = true;    // false draws the scene's fog as 0 (the editor's F key); the file keeps it
+
+    bool operator==(const RenderOptions&) const = default;
 };
-bool operator==(const RenderOptions& a, const RenderOptions& b);
-inline bool operator!=(const RenderOptions& a, const RenderOptions& b) { return !(a == b); }
 
 class Renderer {
 public:
@@ -97,7 +97,6 @@ private:
     };
     std::optional<Failure> failed_;  // not built again until the shaders reload
     Program* current_ = nullptr;
-    ShaderFeatures currentFeatures_;
     VertexArray quad_;
     VertexBuffer quadVertices_;
     IndexBuffer quadIndices_;

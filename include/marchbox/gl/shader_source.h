@@ -24,6 +24,8 @@ struct RenderQuality {
     int shadowSteps = 128;     // march steps of each shadow ray
     int grid = -1;             // object grid: -1 when it pays (kGridMinObjects), 0 never, 1 always
     float softness = 8.0f;     // soft-shadow k (Quilez): penumbra width ~ distance / k; a uniform
+
+    bool operator==(const RenderQuality&) const = default;
 };
 
 struct ShaderFeatures {
@@ -43,12 +45,16 @@ struct ShaderFeatures {
     bool coneEpsilon = false;
     int shadowSteps = 128;
 
-    bool operator==(const ShaderFeatures& o) const;
+    bool operator==(const ShaderFeatures&) const = default;  // every field: no stale program
 };
 
 // Above this many objects a step looks only at its grid cell. Below it the whole list is cheaper
 // than the cell lookups (docs/render-report.md).
 constexpr int kGridMinObjects = 8;
+
+// The rules both the specialised and the uber shader follow, each written once.
+int shadowKind(const Scene& scene);                              // 0 without lights
+bool usesGrid(const Scene& scene, const RenderQuality& quality);  // see RenderQuality::grid
 
 // maxUniformBlockBytes is GL_MAX_UNIFORM_BLOCK_SIZE; 0 means "assume the GL minimum, 16 KiB".
 ShaderFeatures shaderFeatures(const Scene& scene, RenderMode mode, bool uber,
