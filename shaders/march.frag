@@ -92,6 +92,9 @@ vec3 cameraRay(vec2 pixel) {
 // Supersampling runs as passes, one sample each, added up by blending: a loop here would
 // multiply every march of the pixel inside one invocation.
 void main() {
+#if COMPILED
+    loadObjects();
+#endif
     vec3 col = render(uCamPos, cameraRay(floor(gl_FragCoord.xy) + uSubpixel));
     fragColor = vec4(clamp(col, 0.0, 1.0), 1.0) * uSampleWeight;
 }

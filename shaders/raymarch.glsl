@@ -8,17 +8,40 @@ float hitEpsilon(float t) {
 #endif
 }
 
-// x: distance along rd; y: object index (-1 ground, -2 miss); z: steps taken.
+// Where the ray comes within epsilon of the ground plane, as a march would stop: 0 when it
+// starts there, past any end if never.
+float groundHit(vec3 ro, vec3 rd) {
+#if HAS_GROUND
+    float above = ro.y - uFloor - uEpsilon;
+    if (GROUND_ON && (above <= 0.0 || rd.y < 0.0)) return max(above, 0.0) / max(-rd.y, 1e-30);
+#endif
+    return 1e30;
+}
+
+// The part of the ray, up to `far`, inside the box that holds every object's reach (uBoundLo,
+// uBoundHi): only there is anything but the ground. Empty (x > y) when it misses the box.
+vec2 objectSpan(vec3 ro, vec3 rd, float far) {
+    if (OBJECT_COUNT == 0) return vec2(1.0, 0.0);
+    vec3 inv = 1.0 / (sign(rd) * max(abs(rd), vec3(1e-8)) + vec3(equal(rd, vec3(0.0))) * 1e-8);
+    vec3 t0 = (uBoundLo - ro) * inv, t1 = (uBoundHi - ro) * inv;
+    vec3 near = min(t0, t1), farSide = max(t0, t1);
+    return vec2(max(max(near.x, max(near.y, near.z)), 0.0),
+                min(min(farSide.x, min(farSide.y, farSide.z)), far));
+}
+
+// Sphere tracing of the objects alone over the span; x: t, y: object or -2, z: steps.
 #if RELAX_PERCENT > 100
-// Over-relaxed sphere tracing (Keinert et al. 2014): steps of omega·d while consecutive
-// unbounding spheres overlap; where they do not, step back and fall to plain tracing.
-vec3 castRay(vec3 ro, vec3 rd) {
-    float t = 0.0, omega = float(RELAX_PERCENT) / 100.0, stepLength = 0.0, prevRadius = 0.0;
-    for (int i = 0; i < MAX_STEPS; ++i) {
+// Over-relaxed (Keinert et al. 2014): steps of omega·d while consecutive unbounding spheres
+// overlap; where they do not, step back and fall to plain tracing.
+vec3 marchObjects(vec3 ro, vec3 rd, vec2 span) {
+    float t = span.x, omega = float(RELAX_PERCENT) / 100.0, stepLength = 0.0, prevRadius = 0.0;
+    vec3 h = vec3(1e10, -2.0, 1e10);
+    int i = 0;
+    for (; i < MAX_STEPS && t <= span.y; ++i) {
 #if UBER
         if (i >= uSteps) break;
 #endif
-        vec3 h = mapAlong(ro + rd * t, rd);
+        h = mapObjectsAlong(ro + rd * t, rd);
         float radius = abs(h.x);
         bool fail = omega > 1.0 && radius + prevRadius < stepLength;
         if (fail) {
@@ -30,27 +53,37 @@ vec3 castRay(vec3 ro, vec3 rd) {
         }
         prevRadius = radius;
         t += stepLength;
-        if (t > uMaxDist) return vec3(t, -2.0, float(i + 1));
     }
-    return vec3(t, -2.0, float(MAX_STEPS));
+    return vec3(t, t <= span.y ? h.y : -2.0, float(i));
 }
 #else
-vec3 castRay(vec3 ro, vec3 rd) {
-    float t = 0.0;
-    for (int i = 0; i < MAX_STEPS; ++i) {
+vec3 marchObjects(vec3 ro, vec3 rd, vec2 span) {
+    float t = span.x;
+    vec3 h = vec3(1e10, -2.0, 1e10);
+    int i = 0;
+    for (; i < MAX_STEPS && t <= span.y; ++i) {
 #if UBER
         if (i >= uSteps) break;
 #endif
-        vec3 h = mapAlong(ro + rd * t, rd);
+        h = mapObjectsAlong(ro + rd * t, rd);
         // Inside a surface (the camera in an object) counts as a hit at once; a grid cell's
         // capped step (y = -2) never does.
         if (h.x < hitEpsilon(t) && h.y > -1.5) return vec3(t, h.y, float(i + 1));
         t += h.x;
-        if (t > uMaxDist) return vec3(t, -2.0, float(i + 1));
     }
-    return vec3(t, -2.0, float(MAX_STEPS));
+    // Out of steps still in the span: the ray is grazing the object it is nearest to.
+    return vec3(t, t <= span.y ? h.y : -2.0, float(i));
 }
 #endif
+
+// x: distance along rd; y: object index (-1 ground, -2 miss); z: steps taken. The ground is
+// met analytically, so no ray runs out of steps over open floor and shows sky at the horizon.
+vec3 castRay(vec3 ro, vec3 rd) {
+    float ground = groundHit(ro, rd);
+    vec3 hit = marchObjects(ro, rd, objectSpan(ro, rd, min(ground, uMaxDist)));
+    if (hit.y > -1.5) return hit;
+    return ground <= uMaxDist ? vec3(ground, -1.0, hit.z) : vec3(uMaxDist, -2.0, hit.z);
+}
 
 // Differences far from the origin must span several float ulps of p to stay smooth.
 float normalStep(vec3 p) { return max(0.5 * uEpsilon, 1e-5 * length(p)); }
@@ -66,12 +99,13 @@ vec3 calcNormal(vec3 p) {  // tetrahedron of four samples (Quilez)
 
 #if SHADOWS == 1 || UBER
 float hardShadow(vec3 ro, vec3 rd, float maxT) {
-    float t = 0.0;
-    for (int i = 0; i < SHADOW_STEPS; ++i) {
-        float h = mapAlong(ro + rd * t, rd).x;
+    if (groundHit(ro, rd) < maxT) return 0.0;  // a light under the floor
+    vec2 span = objectSpan(ro, rd, maxT);
+    float t = span.x;
+    for (int i = 0; i < SHADOW_STEPS && t <= span.y; ++i) {
+        float h = mapObjectsAlong(ro + rd * t, rd).x;
         if (h < uEpsilon) return 0.0;
         t += h;
-        if (t > maxT) break;
     }
     return 1.0;
 }
@@ -81,10 +115,17 @@ float hardShadow(vec3 ro, vec3 rd, float maxT) {
 // Penumbra from the nearest miss, with the improved estimate that uses the previous step to
 // place the closest approach between samples (Quilez 2018); the sqrt argument is clamped.
 float softShadow(vec3 ro, vec3 rd, float maxT) {
+    if (groundHit(ro, rd) < maxT) return 0.0;  // a light under the floor
+    vec2 span = objectSpan(ro, rd, maxT);
     float k = uSoftness;
-    float res = 1.0, t = 0.0, ph = 1e10;
-    for (int i = 0; i < SHADOW_STEPS; ++i) {
-        vec3 m = mapAlong(ro + rd * t, rd);
+    float res = 1.0, t = span.x, ph = 1e10;
+#if HAS_GROUND
+    // The floor's own penumbra under grazing light: its distance over t, (height + t·rd.y) / t,
+    // falls all along the ray, so its least value is at the end.
+    if (GROUND_ON) res = min(res, k * (ro.y - uFloor + maxT * rd.y) / maxT);
+#endif
+    for (int i = 0; i < SHADOW_STEPS && t <= span.y; ++i) {
+        vec3 m = mapObjectsAlong(ro + rd * t, rd);
         if (m.x < uEpsilon) return 0.0;
         float h = m.z;
         float y = h * h / (2.0 * ph);
@@ -93,7 +134,6 @@ float softShadow(vec3 ro, vec3 rd, float maxT) {
         if (res < 0.001) return 0.0;  // fully dark already: the rest of the ray cannot matter
         ph = h;
         t += m.x;
-        if (t > maxT) break;
     }
     res = clamp(res, 0.0, 1.0);
     return res * res * (3.0 - 2.0 * res);

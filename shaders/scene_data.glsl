@@ -42,6 +42,7 @@ uniform float uSampleWeight;   // 1 / samples: the passes add up in the accumula
 uniform float uEpsilon;
 uniform float uPixelRadius;  // half a pixel's footprint per metre along a primary ray
 uniform float uMaxDist;
+uniform vec3 uBoundLo, uBoundHi;  // a box holding every object's reach (objectBounds)
 uniform float uFloor;
 uniform float uFog;
 uniform vec3 uSkyTint;      // the brightest light's colour, largest channel 1

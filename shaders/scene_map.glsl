@@ -1,25 +1,11 @@
-// scene_map.glsl — the scene's CSG chain in file order, then the ground. Twin of mapScene().
+// scene_map.glsl — the scene's objects, compiled or looped over, the object grid, and the
+// ground. Twin of mapScene().
 
-float sdObjectLocal(int i, vec3 q) {
-    int type = uObjects[i].info.x;
-#if HAS_SPHERE
-    if (type == 0) return sdSphere(q, uObjects[i].shape.x);
-#endif
-#if HAS_BOX
-    if (type == 1) return sdBox(q, uObjects[i].sizeMinor.xyz);
-#endif
-#if HAS_TORUS
-    if (type == 2) return sdTorus(q, uObjects[i].shape.x, uObjects[i].sizeMinor.w);
-#endif
-#if HAS_CAPSULE
-    if (type == 3) return sdCapsule(q, uObjects[i].shape.y, uObjects[i].shape.x);
-#endif
-#if HAS_CYLINDER
-    if (type == 4) return sdCylinder(q, uObjects[i].shape.y, uObjects[i].shape.x);
-#endif
-    return 1e10;
-}
+// Replaced by src/gl/scene_compiler.cpp: a compiled scene's loadObjects() and mapObjects(),
+// else the loop's per-type SDF switch, with a case for each type present.
+#pragma marchbox scene
 
+#if !COMPILED
 // Joins object i to the chain so far (x: distance, y: surface's object index).
 vec2 chainStep(vec2 res, int i, vec3 p) {
     int op = uObjects[i].info.y;
@@ -32,23 +18,24 @@ vec2 chainStep(vec2 res, int i, vec3 p) {
     if (op == 1 && bound >= k - res.x) return res;
 #endif
     float d = sdObjectLocal(i, uObjects[i].toLocal * rel);
-    vec2 r = opUnion(res.x, d, k);
+    float id = float(i);
 #if HAS_SUBTRACT
-    if (op == 1) r = opSubtract(res.x, d, k);
+    if (op == 1) return joinSubtract(res, d, k, id);
 #endif
 #if HAS_INTERSECT
-    if (op == 2) r = opIntersect(res.x, d, k);
+    if (op == 2) return joinIntersect(res, d, k, id);
 #endif
-    return vec2(r.x, r.y > 0.5 ? float(i) : res.y);
+    return joinUnion(res, d, k, id);
 }
 
 #if !USE_GRID || UBER
-// x: distance; y: index of the surface's object, -1 ground, -2 nothing.
+// x: distance; y: index of the surface's object, -2 nothing.
 vec2 mapObjects(vec3 p) {
     vec2 res = vec2(1e10, -2.0);
     for (int i = 0; i < OBJECT_COUNT; ++i) res = chainStep(res, i, p);
     return res;
 }
+#endif
 #endif
 
 #if USE_GRID
@@ -96,6 +83,7 @@ vec3 mapGridAlong(vec3 p, vec3 rd) {
 }
 #endif
 
+// The ground plane, unioned last: what normals and occlusion see. Rays meet it analytically.
 vec2 withGround(vec2 res, vec3 p) {
 #if HAS_GROUND
     if (GROUND_ON && p.y - uFloor < res.x) res = vec2(p.y - uFloor, -1.0);
@@ -103,30 +91,29 @@ vec2 withGround(vec2 res, vec3 p) {
     return res;
 }
 
+vec2 mapAnyObjects(vec3 p) {
 #if USE_GRID && !UBER
-vec2 map(vec3 p) { return withGround(mapGrid(p), p); }
-
-// Like map, for stepping along rd; z is the true distance, for penumbrae.
-vec3 mapAlong(vec3 p, vec3 rd) {
-    vec3 g = mapGridAlong(p, rd);
-    return vec3(withGround(g.xy, p), withGround(vec2(g.z, -2.0), p).x);
-}
+    return mapGrid(p);
 #else
-vec2 map(vec3 p) {
 #if USE_GRID
-    if (uUseGrid) return withGround(mapGrid(p), p);
+    if (uUseGrid) return mapGrid(p);
 #endif
-    return withGround(mapObjects(p), p);
+    return mapObjects(p);
+#endif
 }
 
-vec3 mapAlong(vec3 p, vec3 rd) {
+vec2 map(vec3 p) { return withGround(mapAnyObjects(p), p); }
+
+// The objects alone, for stepping along rd: x a safe step, y the object, z the true distance
+// (for penumbrae). On the grid a step also ends at its cell's exit.
+vec3 mapObjectsAlong(vec3 p, vec3 rd) {
+#if USE_GRID && !UBER
+    return mapGridAlong(p, rd);
+#else
 #if USE_GRID
-    if (uUseGrid) {
-        vec3 g = mapGridAlong(p, rd);
-        return vec3(withGround(g.xy, p), withGround(vec2(g.z, -2.0), p).x);
-    }
+    if (uUseGrid) return mapGridAlong(p, rd);
 #endif
-    vec2 res = map(p);
+    vec2 res = mapObjects(p);
     return vec3(res, res.x);
-}
 #endif
+}

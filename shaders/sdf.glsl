@@ -59,3 +59,14 @@ vec2 opIntersect(float a, float b, float k) {  // max(a, b) = -min(-a, -b)
     return vec2(-u.x, u.y);
 }
 #endif
+
+// Joins an object's distance d onto the chain res = (distance, surface's object): the object
+// takes the surface where its side wins. k = 0 is the sharp operator.
+vec2 joined(vec2 res, vec2 r, float id) { return vec2(r.x, r.y > 0.5 ? id : res.y); }
+vec2 joinUnion(vec2 res, float d, float k, float id) { return joined(res, opUnion(res.x, d, k), id); }
+#if HAS_SUBTRACT
+vec2 joinSubtract(vec2 res, float d, float k, float id) { return joined(res, opSubtract(res.x, d, k), id); }
+#endif
+#if HAS_INTERSECT
+vec2 joinIntersect(vec2 res, float d, float k, float id) { return joined(res, opIntersect(res.x, d, k), id); }
+#endif

@@ -72,6 +72,18 @@ struct SceneSdf {
 };
 
 SceneSdf makeSceneSdf(const Scene& scene);
+
+// The sphere about pos within which the object can change the chain: its bound grown by its
+// blend, since a smooth blend reaches k beyond the sharp surface.
+float objectReach(const SdfObject& o);
+
+struct Box {
+    glm::vec3 lo{1e30f}, hi{-1e30f};  // empty until something is added
+    bool empty() const { return lo.x > hi.x; }
+};
+
+// Every object's reach: outside it the scene is the ground alone, so rays need no marching.
+Box objectBounds(const SceneSdf& sdf);
 SceneSample mapScene(const SceneSdf& sdf, glm::vec3 p);
 SceneSample mapObjects(const SceneSdf& sdf, glm::vec3 p);  // without the ground plane
 glm::vec3 sceneNormal(const SceneSdf& sdf, glm::vec3 p);   // central differences, unit length

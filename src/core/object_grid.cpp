@@ -10,22 +10,6 @@ namespace mb {
 
 namespace {
 
-struct Bounds {
-    glm::vec3 lo{1e30f}, hi{-1e30f};
-};
-
-// The sphere within which the object can change the chain: its bound grown by its blend.
-float reach(const SdfObject& o) { return o.bound + o.blend; }
-
-Bounds sceneBounds(const SceneSdf& sdf) {
-    Bounds b;
-    for (const SdfObject& o : sdf.objects) {
-        b.lo = glm::min(b.lo, o.pos - reach(o));
-        b.hi = glm::max(b.hi, o.pos + reach(o));
-    }
-    return b;
-}
-
 bool sphereTouchesCell(const ObjectGrid& g, glm::ivec3 c, glm::vec3 centre, float radius) {
     glm::vec3 lo = g.origin + glm::vec3(c) * g.cellSize, hi = lo + g.cellSize;
     glm::vec3 nearest = glm::clamp(centre, lo, hi);
@@ -34,7 +18,7 @@ bool sphereTouchesCell(const ObjectGrid& g, glm::ivec3 c, glm::vec3 centre, floa
 
 int cellIndex(const ObjectGrid& g, glm::ivec3 c) { return (c.z * g.dims.y + c.y) * g.dims.x + c.x; }
 
-void sizeGrid(ObjectGrid* g, const Bounds& b, size_t objects, float objectsPerCell) {
+void sizeGrid(ObjectGrid* g, const Box& b, size_t objects, float objectsPerCell) {
     glm::vec3 extent = glm::max(b.hi - b.lo, glm::vec3(1e-6f));
     float cells = std::max(1.0f, float(objects) / objectsPerCell);
     // Cubic cells whose count matches `cells` for this extent; flat scenes get one layer.
@@ -52,7 +36,7 @@ void addIntersection(const ObjectGrid& g, const SdfObject& o, uint32_t i,
         for (int y = 0; y < g.dims.y; ++y)
             for (int x = 0; x < g.dims.x; ++x) {
                 auto& list = (*lists)[size_t(cellIndex(g, {x, y, z}))];
-                if (sphereTouchesCell(g, {x, y, z}, o.pos, reach(o))) list.push_back(i);
+                if (sphereTouchesCell(g, {x, y, z}, o.pos, objectReach(o))) list.push_back(i);
                 else list.clear();
             }
 }
@@ -62,7 +46,7 @@ void addIntersection(const ObjectGrid& g, const SdfObject& o, uint32_t i,
 ObjectGrid buildObjectGrid(const SceneSdf& sdf, float objectsPerCell) {
     ObjectGrid g;
     if (sdf.objects.empty()) return g;
-    sizeGrid(&g, sceneBounds(sdf), sdf.objects.size(), objectsPerCell);
+    sizeGrid(&g, objectBounds(sdf), sdf.objects.size(), objectsPerCell);
     std::vector<std::vector<uint32_t>> lists(size_t(g.cellCount()));
     for (uint32_t i = 0; i < sdf.objects.size(); ++i) {
         const SdfObject& o = sdf.objects[i];
@@ -70,11 +54,11 @@ ObjectGrid buildObjectGrid(const SceneSdf& sdf, float objectsPerCell) {
             addIntersection(g, o, i, &lists);
             continue;
         }
-        glm::ivec3 lo = gridCellOf(g, o.pos - reach(o)), hi = gridCellOf(g, o.pos + reach(o));
+        glm::ivec3 lo = gridCellOf(g, o.pos - objectReach(o)), hi = gridCellOf(g, o.pos + objectReach(o));
         for (int z = lo.z; z <= hi.z; ++z)
             for (int y = lo.y; y <= hi.y; ++y)
                 for (int x = lo.x; x <= hi.x; ++x)
-                    if (sphereTouchesCell(g, {x, y, z}, o.pos, reach(o)))
+                    if (sphereTouchesCell(g, {x, y, z}, o.pos, objectReach(o)))
                         lists[size_t(cellIndex(g, {x, y, z}))].push_back(i);
     }
     g.cellStart.reserve(lists.size() + 1);

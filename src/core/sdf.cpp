@@ -113,6 +113,17 @@ SceneSdf makeSceneSdf(const Scene& scene) {
     return sdf;
 }
 
+float objectReach(const SdfObject& o) { return o.bound + o.blend; }
+
+Box objectBounds(const SceneSdf& sdf) {
+    Box b;
+    for (const SdfObject& o : sdf.objects) {
+        b.lo = glm::min(b.lo, o.pos - objectReach(o));
+        b.hi = glm::max(b.hi, o.pos + objectReach(o));
+    }
+    return b;
+}
+
 // "Nothing yet": far enough to lose every min, small enough that smooth blends stay finite.
 constexpr float kFar = 1e10f;
 

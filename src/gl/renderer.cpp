@@ -132,6 +132,9 @@ void Renderer::setUniforms(const Scene& scene, const GpuScene& g, const ShaderFe
     tanHalfFov_ = glm::length(basis.up);
     p.set("uEpsilon", scene.render.epsilon);
     p.set("uMaxDist", maxRayDistance(scene));
+    Box bounds = objectBounds(makeSceneSdf(scene));
+    p.set("uBoundLo", bounds.lo);
+    p.set("uBoundHi", bounds.hi);
     p.set("uFloor", scene.world.floor);
     p.set("uFog", scene.render.fog);
     p.set("uSkyTint", skyTint(scene));

@@ -81,6 +81,8 @@ ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int ma
     f.objects = int(s.objects.size());
     f.objectsInStorage = f.objects > uniformObjects;
     f.grid = usesGrid(s, quality);
+    f.compiled = !f.grid && f.objects <= kGridMinObjects;
+    if (f.compiled) f.layout = objectLayout(s);
     f.materials = int(s.materials.size());
     for (const Light& l : s.lights) (l.directional ? f.dirLights : f.pointLights)++;
     f.ground = s.world.ground;
@@ -105,7 +107,7 @@ static std::vector<std::pair<const char*, long>> featureDefines(const ShaderFeat
                        {"NUM_DIR_LIGHTS", f.dirLights}, {"OBJECTS_IN_STORAGE", f.objectsInStorage},
                        {"HAS_GROUND", f.ground}, {"MAX_STEPS", f.steps}, {"SHADOWS", f.shadows},
                        {"REFLECTIONS", f.reflections}, {"HAS_FOG", f.fog}, {"HAS_AO", f.ao},
-                       {"USE_GRID", f.grid},
+                       {"USE_GRID", f.grid}, {"COMPILED", f.compiled},
                        {"RELAX_PERCENT", f.relaxPercent}, {"CONE_EPSILON", f.coneEpsilon},
                        {"SHADOW_STEPS", f.shadowSteps}});
     return d;
@@ -127,6 +129,13 @@ bool fragmentSource(const ShaderFeatures& f, std::string* out, std::string* erro
         *error = "march.frag: " + *error;
         return false;
     }
+    const std::string marker = "#pragma marchbox scene\n";
+    size_t at = resolved.find(marker);
+    if (at == std::string::npos) {
+        *error = "march.frag: no '#pragma marchbox scene' line for the compiled scene";
+        return false;
+    }
+    resolved.replace(at, marker.size(), f.compiled ? compileSceneMap(f.layout) : compileShapeSwitch(f.shapes));
     *out = shaderPrefix(f) + resolved;
     return true;
 }

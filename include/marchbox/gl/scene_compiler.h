@@ -1,0 +1,36 @@
+// marchbox/gl/scene_compiler.h — the scene's structure written out as GLSL.
+//
+// A small scene's mapObjects() is one line per object in file order: its SDF called directly,
+// joined by its operator, turned only where it has a rotation. The numbers (where, how big,
+// which material) stay in the Objects block, so moving, resizing or recolouring compiles
+// nothing; adding, deleting or retyping an object changes the layout and compiles anew.
+// Larger scenes keep the loop of shaders/scene_map.glsl, whose per-type SDF switch is written
+// here too, from the same table, for the types present only.
+#pragma once
+
+#include "marchbox/scene.h"
+
+#include <string>
+#include <vector>
+
+namespace mb {
+
+// What of an object the compiled code depends on; everything else is a uniform.
+struct ObjectLayout {
+    ShapeType type = ShapeType::Sphere;
+    CsgOp op = CsgOp::Union;
+    bool rotated = false;  // rot is not (0,0,0): the point is turned into the object's frame
+    bool blended = false;  // blend > 0: the smooth operator
+
+    bool operator==(const ObjectLayout&) const = default;
+};
+
+std::vector<ObjectLayout> objectLayout(const Scene& scene);
+
+// loadObjects() and mapObjects(p) for a compiled scene.
+std::string compileSceneMap(const std::vector<ObjectLayout>& layout);
+
+// sdObjectLocal(i, q) for the loop: one case per type whose bit is set in `shapes`.
+std::string compileShapeSwitch(unsigned shapes);
+
+}  // namespace mb
