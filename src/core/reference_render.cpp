@@ -1,5 +1,5 @@
 // reference_render.cpp — the CPU reference's image: the scene prepared once, a ray per sample
-// (docs/shading-model.md §1), each sample clamped, then averaged into its pixel.
+// (docs/shading-model.md §1), each sample clamped, then averaged into its pixel (§10).
 #include "marchbox/reference_render.h"
 
 #include "marchbox/camera.h"

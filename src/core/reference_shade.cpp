@@ -1,5 +1,5 @@
-// reference_shade.cpp — light and mirrors of the CPU reference (docs/shading-model.md §4, §5,
-// §9): the surface's material, Phong per light with its shadow, occlusion, and the mirror path.
+// reference_shade.cpp — light and mirrors of the CPU reference (docs/shading-model.md §3, §4,
+// §6, §9): the surface's material, Phong per light with its shadow, occlusion, the mirror path.
 #include "reference_model.h"
 
 #include <algorithm>
@@ -36,8 +36,8 @@ SurfaceMaterial materialAt(const Model& m, dvec3 p, int object) {
     return {dvec3(mat.color), mat.Ka, mat.Kd, mat.Ks, mat.C, mat.Kr};
 }
 
-// FNV-1a over the events that make the colour jump: which surface, which checker square, which
-// lights face it and which of them a hard shadow blocks.
+// ReferenceImage::region is FNV-1a over the events that make the colour jump: which surface,
+// which checker square, which lights face it and which of them a hard shadow blocks.
 void mixKey(uint64_t* key, uint64_t value) {
     *key = (*key ^ value) * 1099511628211ull;
 }
@@ -75,6 +75,18 @@ dvec3 shade(const Model& m, const SurfaceMaterial& s, dvec3 p, dvec3 n, dvec3 d,
     return s.ka * s.albedo * ao + direct * (0.5 + 0.5 * ao);
 }
 
+// A surface on the path: its object, whether its normal is a crease's blend, and on the ground
+// its checker square itself, since parity alone repeats every other square and so aliases far out.
+void noteSurface(PathResult* path, const Hit& hit, dvec3 p, bool crease) {
+    mixKey(&path->region, uint64_t(int64_t(hit.object)));
+    if (!hit.hit) return;
+    mixKey(&path->region, crease);
+    if (hit.object != kHitGround) return;
+    CheckerSquare square = checkerSquare(p);
+    mixKey(&path->region, uint64_t(square.x));
+    mixKey(&path->region, uint64_t(square.z));
+}
+
 }  // namespace
 
 // Each bounce keeps (1 - Kr) of its surface's own fogged colour and hands Kr on to the mirror
@@ -87,8 +99,8 @@ PathResult tracePath(const Model& m, dvec3 origin, dvec3 dir) {
     for (int bounce = 0; bounce <= bounces; ++bounce) {
         Hit hit = firstHit(m, o, d);
         if (bounce == 0) out.first = hit;
-        mixKey(&out.region, uint64_t(int64_t(hit.object)));
         if (!hit.hit) {
+            noteSurface(&out, hit, o, false);
             out.color += weight * skyColor(m, d);
             break;
         }
@@ -96,12 +108,7 @@ PathResult tracePath(const Model& m, dvec3 origin, dvec3 dir) {
         SurfaceNormal normal = normalAt(m, p, hit.object);
         dvec3 n = normal.n;
         SurfaceMaterial s = materialAt(m, p, hit.object);
-        mixKey(&out.region, normal.crease);
-        if (hit.object == kHitGround) {  // the square itself: parity alone aliases far away
-            CheckerSquare square = checkerSquare(p);
-            mixKey(&out.region, uint64_t(square.x));
-            mixKey(&out.region, uint64_t(square.z));
-        }
+        noteSurface(&out, hit, p, normal.crease);
         dvec3 color = applyFog(m, shade(m, s, p, n, d, &out), d, hit.t);
         if (bounce == bounces || s.kr <= 0.0) {
             out.color += weight * color;

@@ -23,8 +23,8 @@ dvec3 gradient(const Model& m, double e) {
     return m.horizon + (kUnderside - m.horizon) * std::sqrt(-e);
 }
 
-// Each directional light is a sun: a disc about 1.5 degrees across (cos 0.9995..0.9997 is its
-// soft rim) of `discWeight` times the light, over a broad cos^64 glow of a quarter of it.
+// Each directional light is a sun: a disc of 1.4 degrees radius, its rim fading out by 1.8
+// (cos 0.9997 and 0.9995), of `discWeight` times the light, over a broad cos^64 halo of a quarter.
 dvec3 sunLight(const Model& m, dvec3 dir, double discWeight) {
     dvec3 sum(0.0);
     for (const LightSource& l : m.lights) {

@@ -16,7 +16,7 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr int kMaxMarchSteps = 4096;
-constexpr int kMaxShadowSteps = 20000;   // half steps near surfaces take many; see softShadow
+constexpr int kMaxShadowSteps = 20000;   // tenth steps near surfaces take many; see softShadow
 constexpr double kHitTolerance = 1e-5;   // × max(1, |p|): a few float ulps of the mirror's input
 constexpr int kBisections = 40;
 constexpr double kCreaseCosine = 0.999;  // 2.6 degrees
