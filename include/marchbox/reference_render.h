@@ -1,6 +1,7 @@
 // marchbox/reference_render.h — the CPU reference: a scene shaded on the CPU, with no GL, from
 // docs/shading-model.md. It is written from that model and the SDF mirror, not from the GLSL,
-// so a bug the shaders share cannot also hide here. Slow (seconds for 100x60): tests only.
+// so a bug the shaders share cannot also hide here. One thread, double precision: 5 to 230 ms
+// for a 96x54 image of an example scene. For tests and checks, not for the editor.
 //
 // [SECTION] Options
 // [SECTION] Images
