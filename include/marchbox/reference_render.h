@@ -33,8 +33,9 @@ struct ReferenceImage {
     std::vector<glm::vec3> rgb;    // linear colour, each channel clamped to [0, 1]; row 0 at the top
     std::vector<int> object;       // primary ray at the pixel centre: object index, kHitGround, kHitNone
     // Pixels with equal keys see the same surfaces, checker squares, lit sides and hard-shadow
-    // states along the whole path, reflections included: the colour is smooth between them. A 3x3
-    // block of one key holds no edge, so a comparison there need not allow for a pixel's shift.
+    // states along the whole path, reflections included, and none of them on a crease (where
+    // the normal is an edge's blend): the colour is smooth between them. A 3x3 block of one key
+    // holds no edge, so a comparison there need not allow for a pixel's shift.
     std::vector<uint64_t> region;
     // 1 where a soft shadow along the path is partly lit. The GPU estimates the penumbra from
     // its march samples (Quilez's improved estimate); the reference takes the converged minimum.
