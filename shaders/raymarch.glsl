@@ -18,15 +18,24 @@ float groundHit(vec3 ro, vec3 rd) {
     return 1e30;
 }
 
+// Narrows span to where a·t >= b.
+void clipSpan(inout vec2 span, float a, float b) {
+    if (a > 0.0) span.x = max(span.x, b / a);
+    else if (a < 0.0) span.y = min(span.y, b / a);
+    else if (b > 0.0) span.y = -1.0;
+}
+
 // The part of the ray, up to `far`, inside the box that holds every object's reach (uBoundLo,
-// uBoundHi): only there is anything but the ground. Empty (x > y) when it misses the box.
-vec2 objectSpan(vec3 ro, vec3 rd, float far) {
+// uBoundHi), grown by grow·t at distance t: only there is anything but the ground. Empty
+// (x > y) when it misses. A soft shadow grows it by 1/k, past which k·d/t > 1 changes nothing.
+vec2 objectSpan(vec3 ro, vec3 rd, float far, float grow) {
+    vec2 span = vec2(0.0, far);
     if (OBJECT_COUNT == 0) return vec2(1.0, 0.0);
-    vec3 inv = 1.0 / (sign(rd) * max(abs(rd), vec3(1e-8)) + vec3(equal(rd, vec3(0.0))) * 1e-8);
-    vec3 t0 = (uBoundLo - ro) * inv, t1 = (uBoundHi - ro) * inv;
-    vec3 near = min(t0, t1), farSide = max(t0, t1);
-    return vec2(max(max(near.x, max(near.y, near.z)), 0.0),
-                min(min(farSide.x, min(farSide.y, farSide.z)), far));
+    for (int i = 0; i < 3; ++i) {  // lo - grow·t <= ro + t·rd <= hi + grow·t
+        clipSpan(span, rd[i] + grow, uBoundLo[i] - ro[i]);
+        clipSpan(span, grow - rd[i], ro[i] - uBoundHi[i]);
+    }
+    return span;
 }
 
 // Sphere tracing of the objects alone over the span; x: t, y: object or -2, z: steps.
@@ -80,7 +89,7 @@ vec3 marchObjects(vec3 ro, vec3 rd, vec2 span) {
 // met analytically, so no ray runs out of steps over open floor and shows sky at the horizon.
 vec3 castRay(vec3 ro, vec3 rd) {
     float ground = groundHit(ro, rd);
-    vec3 hit = marchObjects(ro, rd, objectSpan(ro, rd, min(ground, uMaxDist)));
+    vec3 hit = marchObjects(ro, rd, objectSpan(ro, rd, min(ground, uMaxDist), 0.0));
     if (hit.y > -1.5) return hit;
     return ground <= uMaxDist ? vec3(ground, -1.0, hit.z) : vec3(uMaxDist, -2.0, hit.z);
 }
@@ -100,7 +109,7 @@ vec3 calcNormal(vec3 p) {  // tetrahedron of four samples (Quilez)
 #if SHADOWS == 1 || UBER
 float hardShadow(vec3 ro, vec3 rd, float maxT) {
     if (groundHit(ro, rd) < maxT) return 0.0;  // a light under the floor
-    vec2 span = objectSpan(ro, rd, maxT);
+    vec2 span = objectSpan(ro, rd, maxT, 0.0);
     float t = span.x;
     for (int i = 0; i < SHADOW_STEPS && t <= span.y; ++i) {
         float h = mapObjectsAlong(ro + rd * t, rd).x;
@@ -116,8 +125,8 @@ float hardShadow(vec3 ro, vec3 rd, float maxT) {
 // place the closest approach between samples (Quilez 2018); the sqrt argument is clamped.
 float softShadow(vec3 ro, vec3 rd, float maxT) {
     if (groundHit(ro, rd) < maxT) return 0.0;  // a light under the floor
-    vec2 span = objectSpan(ro, rd, maxT);
     float k = uSoftness;
+    vec2 span = objectSpan(ro, rd, maxT, 1.0 / k);
     float res = 1.0, t = span.x, ph = 1e10;
 #if HAS_GROUND
     // The floor's own penumbra under grazing light: its distance over t, (height + t·rd.y) / t,

@@ -61,10 +61,9 @@ float gridBoxDistance(vec3 p) {  // exact box distance (sdBox), here for every s
     return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);
 }
 
-vec2 mapGrid(vec3 p) {
-    float outside = gridBoxDistance(p);
-    return outside > 0.0 ? vec2(outside, -2.0) : mapCell(gridCellOf(p), p);
-}
+// For normals and occlusion, not for stepping: just outside the grid the nearest cell holds
+// the objects there, where the box's own distance would tilt the floor's normals.
+vec2 mapGrid(vec3 p) { return mapCell(gridCellOf(p), p); }
 
 // x: a safe step along rd; y: the object; z: the cell's own distance, for penumbrae. The step
 // ends just past the cell's exit, since what lies beyond is at least that far; the extra
