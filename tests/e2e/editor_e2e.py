@@ -409,14 +409,18 @@ CASES = {name[5:]: fn for name, fn in globals().items() if name.startswith('case
 def main():
     global MARCHBOX
     name, MARCHBOX, source, workdir = sys.argv[1:5]
+    if os.path.dirname(MARCHBOX):
+        MARCHBOX = os.path.abspath(MARCHBOX)  # a relative path: the editor runs in workdir
     shutil.rmtree(workdir, ignore_errors=True)
     os.makedirs(workdir)
     scene = os.path.join(workdir, 'work.txt')
     shutil.copy(source, scene)
-    # Each case edits its own copy of the shaders, never the source tree's.
+    # Each case edits its own copy of the shaders, never the source tree's: a copy of
+    # MARCHBOX_SHADERS where it is set (a planted bug), of the source tree's shaders/ otherwise.
     shaders = os.path.join(workdir, 'shaders')
     here = os.path.dirname(os.path.abspath(__file__))
-    shutil.copytree(os.path.join(here, '..', '..', 'shaders'), shaders)
+    shutil.copytree(os.environ.get('MARCHBOX_SHADERS') or os.path.join(here, '..', '..', 'shaders'),
+                    shaders)
     os.environ['MARCHBOX_SHADERS'] = shaders
     app = Editor(MARCHBOX, scene, workdir)
     try:
