@@ -16,7 +16,8 @@ TEST_P(Golden, MatchesCommittedImage) {
 INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
                          ::testing::Values("default", "primitives", "csg", "shadows_hard",
                                            "shadows_soft", "reflections", "lights", "legacy",
-                                           "extremes", "inside", "pile", "fog", "ao_aa", "sun"),
+                                           "extremes", "inside", "pile", "fog", "ao_aa", "sun",
+                                           "fog_sun"),
                          [](const auto& info) { return std::string(info.param); });
 
 // FXAA is a view setting, not a scene key: its golden is the default scene with the post pass.
