@@ -162,3 +162,24 @@ TEST(Features, NormalViewIsTheNormalTimesHalfPlusHalf) {
     ASSERT_GT(checked, 500);
     EXPECT_GE(close, 0.95 * checked) << close << " of " << checked << " within 0.03";
 }
+
+// A shadow ray ends at its point light: an object beyond the light, however large, casts no
+// shadow towards it. Both shadow kinds, since each bounds its own march.
+TEST(Features, ObjectsBeyondAPointLightCastNoShadow) {
+    Scene s = floorScene();
+    s.lights = {Light{false, {0, 2, 2}, {1, 1, 1}, 1}};
+    s.camera = Camera{{0, 3.5f, 1.9f}, {0, 0, 2}, 50};  // looking down, under the roof
+    for (int kind : {1, 2}) {
+        s.render.shadows = kind;
+        s.objects.clear();
+        Image open = test::renderOrDie(s, test::options(RenderMode::Shaded), kW, kH);
+        Object roof;  // a slab above the light, wider than all the floor in view
+        roof.type = ShapeType::Box;
+        roof.pos = {0, 5, 2};
+        roof.size = {30, 0.5f, 30};
+        s.objects.push_back(roof);
+        Image roofed = test::renderOrDie(s, test::options(RenderMode::Shaded), kW, kH);
+        ImageDiff d = diffImages(open, roofed);
+        EXPECT_EQ(d.maxAbs, 0.0) << "shadows " << kind << ": the roof above the light darkened the floor";
+    }
+}
