@@ -8,11 +8,11 @@ float hitEpsilon(float t) {
 #endif
 }
 
-// Where the ray comes within epsilon of the ground plane, as a march would stop: 0 when it
-// starts there, past any end if never.
+// Where the ray meets the ground plane, exactly, as a converged march would: 0 when it starts
+// under it, past any end if never.
 float groundHit(vec3 ro, vec3 rd) {
 #if HAS_GROUND
-    float above = ro.y - uFloor - uEpsilon;
+    float above = ro.y - uFloor;
     if (GROUND_ON && (above <= 0.0 || rd.y < 0.0)) return max(above, 0.0) / max(-rd.y, 1e-30);
 #endif
     return 1e30;
