@@ -190,3 +190,34 @@ TEST(Editor, AddAndDuplicateSelectTheNewItem) {
     EXPECT_TRUE(e.selection().empty());
     EXPECT_EQ(e.document().history().undoLabel(), "Clear objects");
 }
+
+static std::string readText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(Editor, SavingKeepsTheCommentsAndADeletedObjectTakesItsOwn) {
+    std::string path = writeFile("comments.txt",
+                                 "# my scene\n"
+                                 "material r:1 g:0 b:0\n"
+                                 "\n"
+                                 "# the ball\n"
+                                 "object type:sphere pos:0,3,0 radius:0.5\n"
+                                 "# the crate\n"
+                                 "object type:box pos:3,0.5,0 static:1\n"
+                                 "# end of file\n");
+    Editor e = openEditor(path);
+    std::string why, error;
+    ASSERT_TRUE(e.remove(ItemKind::Object, 0, &why)) << why;
+    ASSERT_TRUE(e.duplicate(ItemKind::Object, 0, &why)) << why;
+    ASSERT_TRUE(e.save(&error)) << error;
+    const std::string saved = readText(path);
+    EXPECT_EQ(saved.find("# the ball"), std::string::npos) << saved;
+    EXPECT_EQ(saved.rfind("# my scene\n"), saved.find("# my scene\n")) << saved;  // once
+    EXPECT_NE(saved.find("# my scene\nmaterial "), std::string::npos) << saved;
+    EXPECT_NE(saved.find("\n# the crate\nobject type:box"), std::string::npos) << saved;
+    EXPECT_EQ(saved.rfind("# the crate"), saved.find("# the crate")) << "the copy has no comment";
+    EXPECT_EQ(saved.substr(saved.size() - 14), "# end of file\n") << saved;
+    ASSERT_TRUE(e.save(&error)) << error;
+    EXPECT_EQ(readText(path), saved);  // saving twice gives the same bytes
+}
