@@ -120,6 +120,22 @@ class Editor:
     def type(self, text):
         xdotool('type', '--delay', 40, text)
 
+    def type_into(self, widget, text, fresh=True):
+        """Ctrl+click a field, type text into it and press Return."""
+        self.move(*self.widget(widget, fresh))
+        xdotool('keydown', 'ctrl')
+        xdotool('mousedown', 1)
+        time.sleep(HOLD)
+        xdotool('mouseup', 1)
+        xdotool('keyup', 'ctrl')
+        self.wait('typing ' + widget)
+        self.type(text)
+        self.key('Return')
+
+    def save(self):
+        self.key('ctrl+s')
+        return self.wait('save ').split(' ', 1)[1]
+
     # [results] --------------------------------------------------------------
     def screenshot(self):
         self.key('F12')
@@ -399,6 +415,37 @@ def case_render(app, scene):
     check((img.width, img.height) == (300, 200), 'the PNG is %dx%d' % (img.width, img.height))
     check(len({img.pixel(x, y) for x in range(0, 300, 15) for y in range(0, 200, 15)}) > 10,
           'the render is nearly uniform')
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def select_first(app, scene):
+    """Clicks the red sphere, object 0."""
+    x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
+    app.click(x, y)
+    check(app.wait('select ') == 'select object 0', 'the red sphere was not selected')
+
+
+def case_field_refusal(app, scene):
+    """A typed value out of range is refused, saying so, and the old one kept; the keys on the
+    way to it (1e4 on the way to 1e40) are never taken; a value in range is."""
+    select_first(app, scene)
+    radius = scene_values(scene, 'object', 'radius')[0]
+    for i, text in enumerate(('1e40', '1e9')):
+        app.type_into('Objects/radius', text, fresh=i == 0)
+        refusal = app.wait('refuse ')
+        check(refusal.startswith('refuse radius must be above 0 and at most ') and
+              refusal.endswith(' refused, 0.7 kept'), 'refused as %r' % refusal)
+    app.save()
+    check(scene_values(scene, 'object', 'radius')[0] == radius,
+          'the radius changed: %s' % scene_values(scene, 'object', 'radius')[0])
+    check(not [l for l in app.events() if l.startswith('edit ')], 'a refused value was stored')
+    app.type_into('Objects/radius', '1.25', fresh=False)
+    app.wait('edit Edit object')
+    app.save()
+    check(scene_values(scene, 'object', 'radius')[0] == [1.25], 'the typed radius was not taken')
+    edits = [l for l in app.events() if l.startswith('edit ')]
+    check(edits == ['edit Edit object'], 'typing made more than one edit: %s' % edits)
     app.key('Escape')
     check(app.finish() == 0, 'exit status not 0')
 
