@@ -128,6 +128,28 @@ TEST(Editor, ResetReturnsToWhenPlayWasPressed) {
     EXPECT_NE(e.scene().objects[0].pos, start.objects[0].pos);
 }
 
+// Issue 13, item 7: after Reset the title kept its '*' though the file would be identical.
+TEST(Editor, ResetBackToTheFileLeavesNothingUnsaved) {
+    Editor e = openEditor(writeFile("reset-clean.txt", kScene));
+    e.togglePlay();
+    for (int i = 0; i < 20; ++i) e.frame(1.0 / 60);
+    EXPECT_TRUE(e.document().dirty());  // the spheres moved: quitting now asks
+    e.togglePlay();
+    e.resetSimulation();
+    EXPECT_FALSE(e.document().dirty());
+    std::vector<std::string> errors;
+    e.request(Leave::Exit, "", &errors);
+    EXPECT_TRUE(e.quitRequested());  // nothing to ask about
+
+    // An edit before Play stays unsaved after Reset.
+    Editor f = openEditor(writeFile("reset-edit.txt", kScene));
+    f.edit("Gravity", [](Scene& s) { s.world.gravity = 2; });
+    f.togglePlay();
+    for (int i = 0; i < 20; ++i) f.frame(1.0 / 60);
+    f.resetSimulation();
+    EXPECT_TRUE(f.document().dirty());
+}
+
 TEST(Editor, StepIsOneFixedStep) {
     Editor e = openEditor(writeFile("step.txt", kScene));
     Scene expected = e.scene();
