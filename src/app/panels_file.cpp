@@ -86,7 +86,7 @@ static void finishSaveAs(UiContext& c, bool saved) {
     bool leave = c.ui.saveThenLeave;
     c.ui.saveThenLeave = false;
     if (!leave) return;
-    if (saved) c.editor.confirmLeave(&c.ui.openErrors);
+    if (saved) c.editor.confirmLeave();
     else c.editor.cancelLeave();
 }
 
@@ -134,11 +134,10 @@ static void unsavedPrompt(UiContext& c) {
     bool cancel = button(kUnsavedPopup, "Cancel");
     if (save || discard || cancel) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
-    std::vector<std::string>& errors = c.ui.openErrors;
     if (cancel) c.editor.cancelLeave();
-    if (discard) c.editor.confirmLeave(&errors);
+    if (discard) c.editor.confirmLeave();
     if (save && !c.editor.document().path().empty() && c.editor.save(&c.ui.message))
-        c.editor.confirmLeave(&errors);
+        c.editor.confirmLeave();
     else if (save) {  // no file yet, or it could not be written: ask where
         c.ui.saveThenLeave = true;
         c.ui.wantSaveAs = true;

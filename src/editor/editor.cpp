@@ -17,44 +17,49 @@ static const char* leaveName(Leave what) {
 //-----------------------------------------------------------------------------
 bool Editor::request(Leave what, const std::string& path, std::vector<std::string>* errors) {
     if (what == Leave::None) return true;
-    if (!doc_.dirty()) return leaveNow(what, path, errors);
+    if (what == Leave::Open && !loadScene(path, &opening_, errors)) {
+        emitEvent("open-failed " + path);
+        return false;
+    }
+    if (!doc_.dirty()) {
+        leaveNow(what, path);
+        return true;
+    }
     pending_ = what;
     pendingPath_ = path;
     emitEvent(std::string("ask ") + leaveName(what));
     return true;
 }
 
-bool Editor::confirmLeave(std::vector<std::string>* errors) {
+void Editor::confirmLeave() {
     Leave what = pending_;
     pending_ = Leave::None;
-    return leaveNow(what, pendingPath_, errors);
+    leaveNow(what, pendingPath_);
 }
 
-bool Editor::leaveNow(Leave what, const std::string& path, std::vector<std::string>* errors) {
+void Editor::cancelLeave() {
+    pending_ = Leave::None;
+    opening_ = Scene{};
+}
+
+void Editor::leaveNow(Leave what, const std::string& path) {
     switch (what) {
-        case Leave::None: return true;
+        case Leave::None: return;
         case Leave::NewScene:
             replace(newScene(), "");
             emitEvent("new");
-            return true;
-        case Leave::Open: return open(path, errors);
+            return;
+        case Leave::Open:
+            // The scene read when Open was asked for: what was checked is what opens.
+            replace(opening_, path);
+            opening_ = Scene{};
+            emitEvent("open " + path);
+            return;
         case Leave::Exit:
             quit_ = true;
             emitEvent("quit");
-            return true;
+            return;
     }
-    return true;
-}
-
-bool Editor::open(const std::string& path, std::vector<std::string>* errors) {
-    Scene loaded;
-    if (!loadScene(path, &loaded, errors)) {
-        emitEvent("open-failed " + path);
-        return false;
-    }
-    replace(loaded, path);
-    emitEvent("open " + path);
-    return true;
 }
 
 void Editor::replace(const Scene& scene, const std::string& path) {

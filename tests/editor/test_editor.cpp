@@ -60,8 +60,35 @@ TEST(Editor, LeavingUnsavedWorkWaitsForAnAnswer) {
     EXPECT_EQ(f.pendingLeave(), Leave::None);
     f.request(Leave::Exit, "", &errors);
     EXPECT_FALSE(f.quitRequested());
-    EXPECT_TRUE(f.confirmLeave(&errors));
+    f.confirmLeave();
     EXPECT_TRUE(f.quitRequested());
+}
+
+// Issue 13, item 8: Open asked whether to save before finding out the file could not open.
+TEST(Editor, OpenReadsTheFileBeforeAskingAboutUnsavedWork) {
+    Editor e = openEditor(writeFile("asker.txt", kScene));
+    e.kick();
+    ASSERT_TRUE(e.document().dirty());
+    std::string bad = writeFile("broken.txt", "object type:sphere pos:0,1\n");
+    std::vector<std::string> errors;
+    EXPECT_FALSE(e.request(Leave::Open, bad, &errors));
+    EXPECT_EQ(e.pendingLeave(), Leave::None);  // nothing asked
+    ASSERT_FALSE(errors.empty());
+    EXPECT_EQ(errors[0].rfind(bad + ":1:", 0), 0u) << errors[0];
+    EXPECT_FALSE(e.request(Leave::Open, tempPath("missing.txt"), &errors));
+    EXPECT_EQ(e.pendingLeave(), Leave::None);
+    EXPECT_TRUE(e.document().dirty());  // the work is still there
+
+    // A file that loads asks, and opens what was read when it was asked for.
+    std::string good = writeFile("other.txt", "material r:0 g:1 b:0\nobject type:box pos:0,1,0\n");
+    EXPECT_TRUE(e.request(Leave::Open, good, &errors));
+    EXPECT_EQ(e.pendingLeave(), Leave::Open);
+    writeFile("other.txt", "this no longer loads\n");
+    e.confirmLeave();
+    EXPECT_EQ(e.document().path(), good);
+    ASSERT_EQ(e.scene().objects.size(), 1u);
+    EXPECT_EQ(e.scene().objects[0].type, ShapeType::Box);
+    EXPECT_FALSE(e.document().dirty());
 }
 
 TEST(Editor, SaveAsWritesAFileThatLoadsAndCleans) {
