@@ -41,6 +41,13 @@ void saveFile(UiContext& c) {
     if (!c.editor.save(&c.ui.message)) c.ui.wantSaveAs = true;  // e.g. a read-only file
 }
 
+// Esc over a dialog: the dialog's Cancel (handleShortcuts raised it).
+static bool escaped(UiContext& c) {
+    bool esc = c.ui.escape;
+    c.ui.escape = false;
+    return esc;
+}
+
 // A button with a widget mark.
 static bool button(const char* popup, const char* label) {
     bool clicked = ImGui::Button(label);
@@ -76,7 +83,8 @@ static void openDialog(UiContext& c) {
     go |= pathField(kOpenPopup, &c.ui.pathField);
     go |= button(kOpenPopup, "Open");
     ImGui::SameLine();
-    bool cancel = button(kOpenPopup, "Cancel");
+    bool cancel = button(kOpenPopup, "Cancel") || escaped(c);
+    go = go && !cancel;
     if (go || cancel) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
     if (go) openFile(c, c.ui.pathField);  // may raise the unsaved prompt: after EndPopup
@@ -110,8 +118,8 @@ static void saveAsDialog(UiContext& c) {
     bool go = pathField(kSaveAsPopup, &c.ui.pathField);
     go |= button(kSaveAsPopup, "Save");
     ImGui::SameLine();
-    bool cancel = button(kSaveAsPopup, "Cancel");
-    go = confirmedTarget(c, go);
+    bool cancel = button(kSaveAsPopup, "Cancel") || escaped(c);
+    go = confirmedTarget(c, go) && !cancel;
     fieldErrorLine(c.ui.message);
     bool saved = go && c.editor.saveAs(c.ui.pathField, &c.ui.message);
     if (saved) c.ui.message.clear();
@@ -131,7 +139,7 @@ static void unsavedPrompt(UiContext& c) {
     ImGui::SameLine();
     bool discard = button(kUnsavedPopup, "Don't save");
     ImGui::SameLine();
-    bool cancel = button(kUnsavedPopup, "Cancel");
+    bool cancel = button(kUnsavedPopup, "Cancel") || escaped(c);
     if (save || discard || cancel) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
     if (cancel) c.editor.cancelLeave();
@@ -148,7 +156,7 @@ static void errorsPopup(UiContext& c) {
     if (!beginModal(kErrorsPopup)) return;
     ImGui::TextUnformatted("The file did not load; the open scene is unchanged.");
     for (const std::string& e : c.ui.openErrors) fieldErrorLine(e);
-    if (button(kErrorsPopup, "OK")) {
+    if (button(kErrorsPopup, "OK") || escaped(c)) {
         c.ui.openErrors.clear();
         ImGui::CloseCurrentPopup();
     }
@@ -170,6 +178,7 @@ void drawDialogs(UiContext& c) {
     saveAsDialog(c);
     unsavedPrompt(c);
     errorsPopup(c);
+    ui.escape = false;  // no dialog took it
 }
 
 }  // namespace mb

@@ -2,9 +2,12 @@
 #include "ui.h"
 #include "widgets.h"
 
+#include "marchbox/editor/events.h"
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // the popup stack: Esc closes the topmost popup before it quits
 
 namespace mb {
 
@@ -123,11 +126,29 @@ static void plainShortcut(UiContext& c, const KeyPress& k) {
     }
 }
 
+// Esc closes what is open before it quits: a dialog as its Cancel would (drawDialogs reads
+// ui.escape), a menu or the object popup as a click elsewhere would. While a field in a menu
+// or popup is typed into, Esc is the field's: ImGui puts its old text back. True when Esc was
+// used here.
+static bool escapePopup(UiContext& c) {
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    if (g.OpenPopupStack.empty()) return false;
+    const ImGuiWindow* top = g.OpenPopupStack.back().Window;
+    if (top && (top->Flags & ImGuiWindowFlags_Modal)) {
+        c.ui.escape = true;
+    } else if (!ImGui::GetIO().WantTextInput) {
+        ImGui::ClosePopupToLevel(g.OpenPopupStack.Size - 1, true);
+        emitEvent("escape closes a popup");
+    }
+    return true;
+}
+
 // Keys reach the editor only when ImGui is not typing into a field or showing a prompt.
 void handleShortcuts(UiContext& c, const std::vector<KeyPress>& keys) {
     const bool imguiHasKeys = ImGui::GetIO().WantCaptureKeyboard;
     for (const KeyPress& k : keys) {
         if (k.key == GLFW_KEY_F12) c.ui.wantScreenshot = true;  // even over a dialog
+        else if (k.key == GLFW_KEY_ESCAPE && escapePopup(c)) continue;
         else if (imguiHasKeys) continue;
         else if (k.mods & GLFW_MOD_CONTROL) ctrlShortcut(c, k);
         else plainShortcut(c, k);

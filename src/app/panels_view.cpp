@@ -101,7 +101,8 @@ static void helpWindow(UiState& ui) {
             "Ctrl+Z, Ctrl+Y       undo, redo (a simulation run is one step)\n"
             "Ctrl+N, Ctrl+O, Ctrl+S   new, open, save\n"
             "F12                  screenshot (PNG)\n"
-            "Esc                  quit, asking first about unsaved changes\n"
+            "Esc                  close the open menu, popup or dialog; with none,\n"
+            "                     quit, asking first about unsaved changes\n"
             "Drop a .txt file on the window to open it.");
     }
     ImGui::End();

@@ -32,6 +32,7 @@ struct UiState {
     std::vector<std::string> openErrors;   // FILE:LINE lines of the last failed open
     bool saveThenLeave = false;            // Save As was asked for by the unsaved-changes prompt
     std::string replacePath;               // Save As warned once that this file exists
+    bool escape = false;                   // Esc this frame: the open dialog cancels
 
     std::string message;                   // the last refusal or failure, shown in red
     RenderOptions render;                  // debug view and uber shader

@@ -450,6 +450,28 @@ def case_field_refusal(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+def case_escape(app, scene):
+    """Esc closes the object popup, a menu and a dialog, each without quitting; then it quits."""
+    x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
+    app.click(x, y, button=3)
+    app.wait('popup object popup open')
+    app.key('Escape')
+    app.wait('popup object popup closed')
+    app.click_widget('File', fresh=False)
+    app.wait('popup menu File open')
+    app.key('Escape')
+    app.wait('popup menu File closed')
+    app.key('ctrl+o')
+    app.wait('popup Open scene open')
+    app.key('Escape')
+    app.wait('popup Open scene closed')
+    time.sleep(1.0)
+    check(app.proc.poll() is None, 'Esc over a popup quit the editor')
+    check('quit' not in app.events(), 'Esc over a popup asked to quit')
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
 CASES = {name[5:]: fn for name, fn in globals().items() if name.startswith('case_')}
 
 

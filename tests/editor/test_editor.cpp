@@ -177,6 +177,24 @@ TEST(Editor, ResetBackToTheFileLeavesNothingUnsaved) {
     EXPECT_TRUE(f.document().dirty());
 }
 
+// Issue 13, item 10: the camera is saved with the file but never marks the scene unsaved,
+// whether it moved in the view or was typed into the View panel.
+TEST(Editor, TheCameraIsSavedButNeverMarksTheSceneUnsaved) {
+    std::string path = writeFile("camera.txt", kScene);
+    Editor e = openEditor(path);
+    e.view().pos = {1, 2, -9};
+    EXPECT_FALSE(e.document().dirty());
+    e.edit("Edit camera", [](Scene& s) { s.camera.fov = 30; });
+    EXPECT_FALSE(e.document().dirty());
+    std::string error;
+    ASSERT_TRUE(e.save(&error)) << error;
+    Scene back;
+    std::vector<std::string> errors;
+    ASSERT_TRUE(loadScene(path, &back, &errors));
+    EXPECT_EQ(back.camera.pos, glm::vec3(1, 2, -9));
+    EXPECT_EQ(back.camera.fov, 30.0f);
+}
+
 TEST(Editor, StepIsOneFixedStep) {
     Editor e = openEditor(writeFile("step.txt", kScene));
     Scene expected = e.scene();
