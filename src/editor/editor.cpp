@@ -138,8 +138,13 @@ static bool tryEdit(Editor& e, const std::string& label, Command command) {
 
 bool Editor::add(ItemKind k, std::string* why) {
     int index = -1;
-    bool ok = tryEdit(*this, std::string("Add ") + itemKindName(k),
-                      [&](Scene& s) { return (index = addItem(s, k, why)) >= 0; });
+    bool ok = tryEdit(*this, std::string("Add ") + itemKindName(k), [&](Scene& s) {
+        const bool object = k == ItemKind::Object;
+        const glm::vec3 spot = object ? placeNewObject(s, defaultObject().radius) : glm::vec3(0.0f);
+        if ((index = addItem(s, k, why)) < 0) return false;
+        if (object) s.objects[size_t(index)].pos = spot;
+        return true;
+    });
     if (ok) select(k, index);
     return ok;
 }

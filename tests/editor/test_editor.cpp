@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 using namespace mb;
@@ -287,4 +288,51 @@ TEST(Editor, SavingKeepsTheCommentsAndADeletedObjectTakesItsOwn) {
     EXPECT_EQ(saved.substr(saved.size() - 14), "# end of file\n") << saved;
     ASSERT_TRUE(e.save(&error)) << error;
     EXPECT_EQ(readText(path), saved);  // saving twice gives the same bytes
+}
+
+// Issue 13, item 11: Add always put the new object at (0,2,0), inside a new scene's sphere.
+static float gapBetween(const Object& a, const Object& b) {
+    return glm::length(a.pos - b.pos) - a.radius - b.radius;
+}
+
+TEST(Editor, AddPutsTheObjectWhereTheViewMeetsTheGround) {
+    Editor e = openEditor(writeFile("place.txt", kScene));
+    e.view() = Camera{{1, 4, -4}, {1, 0, 0}, 50};  // looking down at (1,0,0)
+    std::string why;
+    ASSERT_TRUE(e.add(ItemKind::Object, &why)) << why;
+    const Object o = e.scene().objects.back();
+    EXPECT_NEAR(o.pos.x, 1.0f, 1e-5f);
+    EXPECT_EQ(o.pos.y, 0.5f);  // resting on the ground
+    EXPECT_NEAR(o.pos.z, 0.0f, 1e-5f);
+    EXPECT_EQ(e.selection().object(), 2);
+
+    // Again: the spot is taken, so the next one goes beside it, as near as it is clear.
+    ASSERT_TRUE(e.add(ItemKind::Object, &why)) << why;
+    const Object& beside = e.scene().objects.back();
+    EXPECT_EQ(beside.pos.y, 0.5f);
+    EXPECT_GE(gapBetween(beside, o), 0.0f);
+    EXPECT_LT(glm::length(beside.pos - o.pos), 1.6f);
+}
+
+TEST(Editor, AddInANewSceneMissesItsSphere) {
+    Editor e;
+    std::vector<std::string> errors;
+    e.request(Leave::NewScene, "", &errors);
+    e.view() = Camera{{0, 3, -4}, {0, 0.5f, 0}, 50};  // the view centre runs into the sphere's foot
+    e.edit("Sphere down", [](Scene& s) { s.objects[0].pos = {0, 0.5f, 0}; });
+    std::string why;
+    for (int i = 0; i < 5; ++i) ASSERT_TRUE(e.add(ItemKind::Object, &why)) << why;
+    const std::vector<Object>& objects = e.scene().objects;
+    for (size_t a = 0; a < objects.size(); ++a)
+        for (size_t b = a + 1; b < objects.size(); ++b)
+            EXPECT_GE(gapBetween(objects[a], objects[b]), 0.0f) << a << " and " << b;
+}
+
+TEST(Editor, AddLookingAtTheSkyGoesBelowTheTarget) {
+    Editor e = openEditor(writeFile("sky.txt", kScene));
+    e.edit("Floor", [](Scene& s) { s.world.floor = -1; });
+    e.view() = Camera{{0, 1, -6}, {-2, 3, 6}, 50};
+    std::string why;
+    ASSERT_TRUE(e.add(ItemKind::Object, &why)) << why;
+    EXPECT_EQ(e.scene().objects.back().pos, glm::vec3(-2, -0.5f, 6));
 }

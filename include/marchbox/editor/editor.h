@@ -50,7 +50,7 @@ public:
     bool undo();
     bool redo();
 
-    bool add(ItemKind k, std::string* why);                    // selects the new item
+    bool add(ItemKind k, std::string* why);  // selects the new item; an object as placeNewObject()
     bool duplicate(ItemKind k, int index, std::string* why);   // selects the copy
     bool remove(ItemKind k, int index, std::string* why);
     void clear(ItemKind k);
