@@ -6,6 +6,7 @@
 
 #include "marchbox/editor/files.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -24,9 +25,6 @@ static bool beginModal(const char* name) {
     return open;
 }
 
-static std::string suggestedPath(const Editor& e) {
-    return e.document().path().empty() ? "scenes/untitled.txt" : e.document().path();
-}
 
 void openFile(UiContext& c, const std::string& path) {
     c.ui.openErrors.clear();
@@ -55,10 +53,13 @@ static bool button(const char* popup, const char* label) {
     return clicked;
 }
 
-// The path field, focused when the dialog appears; Enter confirms.
+// The path field, focused when the dialog appears; Enter confirms. Wide enough to show the
+// whole path, up to the window's width.
 static bool pathField(const char* popup, std::string* path) {
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-    ImGui::SetNextItemWidth(480);
+    const float pad = 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetFontSize();
+    const float room = ImGui::GetIO().DisplaySize.x - 120.0f;  // the label and the window's edges
+    ImGui::SetNextItemWidth(std::max(480.0f, std::min(ImGui::CalcTextSize(path->c_str()).x + pad, room)));
     const ImGuiInputTextFlags flags = ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll;
     bool enter = ImGui::InputText("path", path, flags);  // typing replaces the suggestion
     markItem(std::string(popup) + "/path");
@@ -102,7 +103,9 @@ static void finishSaveAs(UiContext& c, bool saved) {
 static bool confirmedTarget(UiContext& c, bool go) {
     std::error_code ec;
     const std::string& path = c.ui.pathField;
-    bool other = path != c.editor.document().path() && std::filesystem::exists(path, ec);
+    const std::string& own = c.editor.document().path();
+    bool same = path == own || (!own.empty() && std::filesystem::equivalent(path, own, ec));
+    bool other = !same && std::filesystem::exists(path, ec);
     if (other && go && c.ui.replacePath != path) {
         c.ui.replacePath = path;
         emitEvent("confirm replace " + path);
@@ -168,7 +171,8 @@ void drawDialogs(UiContext& c) {
     UiState& ui = c.ui;
     if (ui.wantOpen || ui.wantSaveAs) {
         ImGui::OpenPopup(ui.wantOpen ? kOpenPopup : kSaveAsPopup);
-        ui.pathField = suggestedPath(c.editor);
+        ui.pathField = ui.wantOpen ? c.editor.document().path()
+                                   : proposeSavePath(c.editor.document().path(), c.editor.lastFile());
         ui.message.clear();
     }
     if (c.editor.pendingLeave() != Leave::None && !ui.saveThenLeave) ImGui::OpenPopup(kUnsavedPopup);

@@ -53,6 +53,7 @@ void Editor::leaveNow(Leave what, const std::string& path) {
             // The scene read when Open was asked for: what was checked is what opens.
             replace(opening_, path);
             opening_ = Scene{};
+            lastFile_ = path;
             emitEvent("open " + path);
             return;
         case Leave::Exit:
@@ -83,6 +84,7 @@ bool Editor::saveAs(const std::string& path, std::string* error) {
     sim_.commitRun(doc_);
     if (!saveScene(path, doc_.scene(), error)) return false;
     doc_.markSaved(path);
+    lastFile_ = path;
     emitEvent("save " + path);
     return true;
 }

@@ -350,6 +350,21 @@ def case_shader_reload(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+def case_new_save_as(app, scene):
+    """A new scene's Save As proposes a whole path beside the last file used; Return takes it."""
+    app.key('ctrl+n')
+    app.wait('new')
+    app.menu('File', 'Save As...')
+    app.wait('typing Save scene as/path')
+    app.key('Return')
+    target = os.path.join(os.path.realpath(app.workdir), 'untitled.txt')
+    check(app.wait('save ') == 'save ' + target, 'not saved beside %s' % scene)
+    result = subprocess.run([MARCHBOX, 'check', target], capture_output=True, text=True)
+    check(result.returncode == 0, 'the new scene does not load: %s' % result.stderr)
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
 def case_save_replace(app, scene):
     """Save As onto another existing file warns first and replaces it only on a second Save."""
     target = os.path.join(app.workdir, 'other.txt')

@@ -106,6 +106,19 @@ TEST(Editor, SaveAsWritesAFileThatLoadsAndCleans) {
     EXPECT_EQ(back, e.scene());
 }
 
+TEST(Editor, TheLastFileOutlivesNew) {
+    std::string path = writeFile("last.txt", kScene);
+    Editor e = openEditor(path);
+    EXPECT_EQ(e.lastFile(), path);
+    std::vector<std::string> errors;
+    e.request(Leave::NewScene, "", &errors);
+    EXPECT_EQ(e.document().path(), "");
+    EXPECT_EQ(e.lastFile(), path);
+    std::string error, saved = tempPath("last-saved.txt");
+    ASSERT_TRUE(e.saveAs(saved, &error)) << error;
+    EXPECT_EQ(e.lastFile(), saved);
+}
+
 TEST(Editor, SaveWithoutAFileAsksForSaveAs) {
     Editor e;
     std::vector<std::string> errors;

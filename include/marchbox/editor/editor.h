@@ -40,6 +40,9 @@ public:
 
     bool save(std::string* error);  // to document().path(); fails when the scene has none
     bool saveAs(const std::string& path, std::string* error);
+    // The file last opened or saved, kept through New: where Save As starts a new scene.
+    const std::string& lastFile() const { return lastFile_; }
+    void setLastFile(const std::string& path) { lastFile_ = path; }  // from an earlier session
 
     //-------------------------------------------------------------------------
     // [SECTION] Edits
@@ -91,6 +94,7 @@ private:
     Leave pending_ = Leave::None;
     std::string pendingPath_;
     Scene opening_;  // an Open's scene, read before anything was asked
+    std::string lastFile_;
     bool quit_ = false;
     uint32_t kicks_ = 0;  // seeds J: different each press, the same in every run
     uint64_t loggedKey_ = 0;  // the merge key of the edit last told to the event log
