@@ -3,6 +3,7 @@
 #pragma once
 
 #include "marchbox/editor/editor.h"
+#include "marchbox/editor/recent.h"
 #include "marchbox/gl/renderer.h"
 #include "window.h"
 
@@ -24,7 +25,7 @@ struct UiState {
     // Windows, toggled from the menus.
     bool showObjects = true, showMaterials = false, showLights = false;
     bool showSimulation = false, showView = false, showHelp = false, showStats = true;
-    bool showRender = false;
+    bool showRender = false, showAbout = false;
 
     // Requests raised by menus and shortcuts, carried out by drawDialogs() this frame.
     bool wantOpen = false, wantSaveAs = false, wantObjectPopup = false, wantScreenshot = false;
@@ -38,6 +39,8 @@ struct UiState {
     RenderOptions render;                  // debug view and uber shader
     bool previewOrbit = false;             // key 1
     std::string scenesDir;                 // scenes/ of the source tree, for File > Open
+    RecentFiles recent{recentFilesPath()}; // File > Open Recent
+    std::string recentNoted;               // the editor's last file, as last put in `recent`
 };
 
 // What the panels need from the rest of the window.
@@ -48,7 +51,8 @@ struct UiContext {
     const std::string& shaderLog;
 };
 
-// [panels_menu.cpp] the main menu bar and the shortcuts that mirror its items.
+// [panels_menu.cpp] the main menu bar, Help > About's window, and the shortcuts that mirror the
+// menus' items; each frame it puts the file last opened or saved first in the recent files.
 void drawMenuBar(UiContext& c);
 void handleShortcuts(UiContext& c, const std::vector<KeyPress>& keys);
 

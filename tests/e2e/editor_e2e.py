@@ -42,8 +42,10 @@ class Editor:
 
     def __init__(self, binary, scene, workdir, **env_extra):
         self.workdir = workdir
+        # Its own config folder: the recent files list of the person running the tests stays out.
         env = dict(os.environ, MARCHBOX_EVENT_LOG='1', MARCHBOX_SCREENSHOT_DIR=workdir,
-                   MARCHBOX_WINDOW_SIZE='%dx%d' % WINDOW, **env_extra)
+                   MARCHBOX_WINDOW_SIZE='%dx%d' % WINDOW,
+                   XDG_CONFIG_HOME=os.path.join(workdir, 'config'), **env_extra)
         self.log_path = os.path.join(workdir, 'events.log')
         self.err_path = os.path.join(workdir, 'stderr.log')
         with open(self.log_path, 'w') as out, open(self.err_path, 'w') as err:
@@ -186,8 +188,16 @@ def is_red(rgb):
 
 
 # [cases] ----------------------------------------------------------------------
+def text_in(img, x, y, w=40, h=6):
+    """Light text on a dark panel around x,y."""
+    box = [img.pixel(x + dx, y + dy) for dx in range(-w, w) for dy in range(-h, h + 1)
+           if 0 <= x + dx < img.width and 0 <= y + dy < img.height]
+    return any(min(p) > 170 for p in box) and sum(1 for p in box if max(p) < 70) > len(box) // 3
+
+
 def case_startup(app, scene):
-    """The first screenshot shows the menu bar over the scene."""
+    """The first screenshot shows the menu bar over the scene; Help > About shows the version;
+    a field's tooltip shows when the mouse rests on it."""
     img = app.screenshot()
     check((img.width, img.height) == WINDOW, 'screenshot is %dx%d' % (img.width, img.height))
     bar = [img.pixel(x, 9) for x in range(300, 600)]  # past the menu titles
@@ -197,6 +207,27 @@ def case_startup(app, scene):
     check(sky[2] > sky[0] + 20, 'no sky at the top: %s' % (sky,))
     x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
     check(is_red(img.pixel(x, y)), 'no red sphere at %d,%d: %s' % (x, y, img.pixel(x, y)))
+
+    version = subprocess.run([MARCHBOX, '--version'], capture_output=True, text=True).stdout.split()[-1]
+    app.menu('Help', 'About Marchbox')
+    vx, vy = app.widget('About/version ' + version)
+    check(text_in(app.screenshot(), vx, vy), 'no About window with the version at %d,%d' % (vx, vy))
+
+    select_first(app, scene)
+    rx, ry = app.widget('Objects/radius')
+    app.move(rx, ry)
+    app.wait('tooltip Objects/radius')
+    shown = app.screenshot()
+    app.move(WINDOW[0] - 20, WINDOW[1] - 20)  # onto the floor: the tooltip goes
+    time.sleep(0.5)
+    gone = app.screenshot()
+    # ImGui puts a tooltip below and right of the mouse.
+    region = [(px, py) for px in range(rx + 10, min(rx + 200, WINDOW[0]), 3)
+              for py in range(ry + 10, min(ry + 60, WINDOW[1]), 3)]
+    differ = sum(1 for p in region if shown.pixel(*p) != gone.pixel(*p))
+    check(differ > len(region) // 4, 'no tooltip beside the radius field (%d of %d pixels changed)'
+          % (differ, len(region)))
+    check(text_in(shown, rx + 60, ry + 25, w=50, h=15), 'the tooltip has no text')
     app.key('Escape')
     check(app.finish() == 0, 'exit status not 0')
 
@@ -361,6 +392,33 @@ def case_new_save_as(app, scene):
     check(app.wait('save ') == 'save ' + target, 'not saved beside %s' % scene)
     result = subprocess.run([MARCHBOX, 'check', target], capture_output=True, text=True)
     check(result.returncode == 0, 'the new scene does not load: %s' % result.stderr)
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def recent_file(app):
+    with open(os.path.join(app.workdir, 'config', 'marchbox', 'recent.txt')) as f:
+        return f.read().splitlines()
+
+
+def case_recent(app, scene):
+    """File > Open Recent lists the files opened and saved, newest first, kept under
+    XDG_CONFIG_HOME; picking one opens it."""
+    other = os.path.join(app.workdir, 'other.txt')
+    app.menu('File', 'Save As...')
+    app.wait('typing Save scene as/path')
+    app.type(other)
+    app.key('Return')
+    app.wait('save ' + other)
+    time.sleep(0.5)
+    check(recent_file(app) == [other, scene], 'recent.txt holds %s' % recent_file(app))
+    app.click_widget('File', fresh=False)
+    app.wait('popup menu File open')
+    app.move(*app.widget('File/Open Recent'))
+    app.click_widget('Open Recent/' + scene)
+    check(app.wait('open ') == 'open ' + scene, 'the recent file did not open')
+    time.sleep(0.5)
+    check(recent_file(app) == [scene, other], 'recent.txt holds %s' % recent_file(app))
     app.key('Escape')
     check(app.finish() == 0, 'exit status not 0')
 
