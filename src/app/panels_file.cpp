@@ -25,7 +25,6 @@ static bool beginModal(const char* name) {
     return open;
 }
 
-
 void openFile(UiContext& c, const std::string& path) {
     c.ui.openErrors.clear();
     c.editor.request(Leave::Open, path, &c.ui.openErrors);

@@ -29,7 +29,7 @@ static void cameraFields(UiContext& c) {
     fieldFloat("fov", Field::Fov, &cam.fov, e);
     if (e.changed) c.editor.edit("Edit camera", [&](Scene& s) { s.camera = cam; }, e.key);
     ImGui::Checkbox("orbit preview (1)", &c.ui.previewOrbit);
-    itemTooltip(itemPath("orbit preview"), "A slow turn about the target. Not saved.");
+    itemTooltip(itemPath("orbit preview (1)"), "A slow turn about the target. Not saved.");
 }
 
 static void renderFields(UiContext& c) {
@@ -54,7 +54,7 @@ static void debugView(UiState& ui) {
     ImGui::Checkbox("uber shader", &ui.render.uber);
     itemTooltip(itemPath("uber shader"), "Draw with the general shader instead of the one compiled\nfor this scene. Not saved.");
     ImGui::Checkbox("fog (F)", &ui.render.fog);
-    itemTooltip(itemPath("fog"), "Shows the scene's fog (render fog density). Not saved.");
+    itemTooltip(itemPath("fog (F)"), "Shows the scene's fog (render fog density). Not saved.");
     postModeCombo(ui);
     itemTooltip(itemPath("post pass"), "FXAA smooths edges after the march. Not saved.");
     ImGui::SliderFloat("shadow softness", &ui.render.quality.softness, 2.0f, 64.0f, "k = %.1f",

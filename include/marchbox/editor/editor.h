@@ -42,7 +42,6 @@ public:
     bool saveAs(const std::string& path, std::string* error);
     // The file last opened or saved, kept through New: where Save As starts a new scene.
     const std::string& lastFile() const { return lastFile_; }
-    void setLastFile(const std::string& path) { lastFile_ = path; }  // from an earlier session
 
     //-------------------------------------------------------------------------
     // [SECTION] Edits
