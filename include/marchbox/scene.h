@@ -2,7 +2,7 @@
 //
 // [SECTION] Limits
 // [SECTION] Records (Camera, World, RenderSettings, Material, Light, Object)
-// [SECTION] Scene
+// [SECTION] Scene (and the file's comments)
 //
 // Units are metres, seconds, kilograms; +y is up. Angles in `rot` are degrees, as in the file.
 #pragma once
@@ -59,6 +59,7 @@ struct Material {
     float Ka = 0.1f, Kd = 0.8f, Ks = 0.5f;
     float C = 32.0f;            // shininess, > 0
     float Kr = 0.0f;            // mirror reflectivity, 0..1
+    std::string comment{};      // the file's lines just above this record (see SceneComments)
 };
 
 struct Light {
@@ -66,6 +67,7 @@ struct Light {
     glm::vec3 vec{0.0f};        // point light position, or direction
     glm::vec3 color{1.0f};
     float intensity = 1.0f;
+    std::string comment{};
 };
 
 struct Object {
@@ -83,6 +85,7 @@ struct Object {
     bool isStatic = false;
     CsgOp op = CsgOp::Union;
     float blend = 0.0f;         // smooth-blend radius, 0 = sharp
+    std::string comment{};      // `{}`: aggregates built without it stay warning-free
 
     // A dynamic object is moved by the simulator; everything else is a static collider.
     bool dynamic() const { return type == ShapeType::Sphere && !isStatic && mass > 0.0f; }
@@ -91,6 +94,16 @@ struct Object {
 //-----------------------------------------------------------------------------
 // [SECTION] Scene
 //-----------------------------------------------------------------------------
+// A file's comment and blank lines, each run kept with the record that follows it, so a save
+// writes a person's notes back where they were. Every string is whole lines, each blank or
+// starting with '#' after blanks, each ending in '\n'. Materials, lights and objects carry
+// their own `comment` and take it along when they are deleted; these are the others'.
+struct SceneComments {
+    std::string header, camera, world, render;  // above the `scene`, `camera`, ... records
+    std::string end;                            // below the last record: stays at the end
+    bool operator==(const SceneComments&) const = default;
+};
+
 struct Scene {
     Camera camera;
     World world;
@@ -98,6 +111,7 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Light> lights;
     std::vector<Object> objects;  // in file order: the CSG chain is evaluated in this order
+    SceneComments comments;
 };
 
 const char* shapeTypeName(ShapeType t);  // "sphere", "box", ...

@@ -3,6 +3,9 @@
 // Loading parses into a fresh Scene and hands it over only when the whole file is valid, so a
 // failed load never touches the scene the caller already has. Saving is canonical: every key,
 // fixed record order, shortest round-trip floats; the same scene always gives the same bytes.
+// Comment and blank lines are kept with the record below them and written above it again,
+// wherever the canonical order puts it; those below the last record stay at the end
+// (SceneComments). Their trailing blanks and CRs are dropped.
 #pragma once
 
 #include "marchbox/scene.h"
@@ -25,7 +28,7 @@ bool parseScene(std::string_view text, Scene* out, std::vector<SceneError>* erro
 // Reads and parses a file. Errors come back formatted "FILE:LINE: message", one per entry.
 bool loadScene(const std::string& path, Scene* out, std::vector<std::string>* errors);
 
-// The canonical text of a scene.
+// The canonical text of a scene, its comments where they belong.
 std::string formatScene(const Scene& scene);
 
 // Writes formatScene() to a temporary file beside `path`, flushes it and renames it over `path`.
@@ -35,7 +38,7 @@ bool saveScene(const std::string& path, const Scene& scene, std::string* error);
 // Shortest decimal text that reads back to the same float ("0.1", "1e-05", "-2").
 std::string formatFloat(float v);
 
-bool operator==(const Scene& a, const Scene& b);  // field-by-field; floats compared exactly
+bool operator==(const Scene& a, const Scene& b);  // field-by-field, comments too; floats exactly
 inline bool operator!=(const Scene& a, const Scene& b) { return !(a == b); }
 
 }  // namespace mb

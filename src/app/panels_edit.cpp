@@ -6,6 +6,8 @@
 #include "ui.h"
 #include "widgets.h"
 
+#include "marchbox/editor/events.h"
+
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -45,7 +47,9 @@ static std::string itemName(const Scene& s, ItemKind k, int i) {
 static void materialCombo(const Scene& s, int* material, FieldEdit& e) {
     const int m = *material;
     std::string preview = m < int(s.materials.size()) ? s.materials[size_t(m)].name : "?";
-    if (!ImGui::BeginCombo("material", preview.c_str())) return;
+    const bool open = ImGui::BeginCombo("material", preview.c_str());
+    itemTooltip(itemPath("material"), "The object's material, by index in the file.");
+    if (!open) return;
     for (int i = 0; i < int(s.materials.size()); ++i) {
         ImGui::PushID(i);
         swatch(s.materials[size_t(i)]);
@@ -62,7 +66,7 @@ static void materialCombo(const Scene& s, int* material, FieldEdit& e) {
 
 static void shapeFields(Object& o, FieldEdit& e) {
     int type = int(o.type);
-    fieldCombo("type", &type, kShapeNames, kShapeTypeCount, e);
+    fieldCombo("type", &type, kShapeNames, kShapeTypeCount, e, "The shape; its size fields follow.");
     o.type = ShapeType(type);
     fieldVec3("pos", Field::Position, &o.pos, e);
     if (o.type == ShapeType::Box) fieldVec3("size", Field::HalfExtent, &o.size, e);
@@ -72,13 +76,15 @@ static void shapeFields(Object& o, FieldEdit& e) {
         fieldFloat("height", Field::Height, &o.height, e);
     fieldVec3("rot", Field::Rotation, &o.rot, e);
     int op = int(o.op);
-    fieldCombo("op", &op, kOpNames, kCsgOpCount, e);
+    fieldCombo("op", &op, kOpNames, kCsgOpCount, e,
+               "How it joins the objects before it in the list: union, subtract (carve it out)\n"
+               "or intersect (keep only the overlap).");
     o.op = CsgOp(op);
     fieldFloat("blend", Field::Blend, &o.blend, e);
 }
 
 static void motionFields(Object& o, FieldEdit& e) {
-    fieldFlag("static", &o.isStatic, e);
+    fieldFlag("static", &o.isStatic, e, "A static object never moves; dynamic spheres hit it.");
     fieldFloat("mass", Field::Mass, &o.mass, e);
     fieldVec3("vel", Field::Velocity, &o.vel, e);
     fieldVec3("spin", Field::Spin, &o.spin, e);
@@ -107,10 +113,13 @@ static void materialFields(UiContext& c, int i) {
         if (validateName(name, &why)) {
             m.name = name;
             e.changed = true;
+            c.ui.message.clear();
         } else {
-            c.ui.message = why;
+            c.ui.message = why + ": '" + name + "' refused, '" + m.name + "' kept";
+            emitEvent("refuse " + c.ui.message);
         }
     }
+    itemTooltip(itemPath("name"), "Letters, digits, '_', '.' or '-'. Return takes it.");
     fieldColor("colour", Field::ColorChannel, &m.color, e);
     fieldFloat("Ka ambient", Field::Ka, &m.Ka, e);
     fieldFloat("Kd diffuse", Field::Kd, &m.Kd, e);
@@ -126,7 +135,9 @@ static void lightFields(UiContext& c, int i) {
     FieldEdit e{false, 0, &c.ui.message};
     ImGui::PushID(i);
     int kind = l.directional ? 1 : 0;
-    fieldCombo("kind", &kind, kLightKinds, 2, e);
+    fieldCombo("kind", &kind, kLightKinds, 2, e,
+               "A point light shines from a position; a directional one along a direction,\n"
+               "like the sun.");
     if (bool directional = kind == 1; directional != l.directional) {
         l.directional = directional;
         if (directional) l.vec = {-0.3f, -1.0f, 0.2f};  // a position makes a poor direction

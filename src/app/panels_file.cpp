@@ -6,6 +6,7 @@
 
 #include "marchbox/editor/files.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -24,10 +25,6 @@ static bool beginModal(const char* name) {
     return open;
 }
 
-static std::string suggestedPath(const Editor& e) {
-    return e.document().path().empty() ? "scenes/untitled.txt" : e.document().path();
-}
-
 void openFile(UiContext& c, const std::string& path) {
     c.ui.openErrors.clear();
     c.editor.request(Leave::Open, path, &c.ui.openErrors);
@@ -41,6 +38,13 @@ void saveFile(UiContext& c) {
     if (!c.editor.save(&c.ui.message)) c.ui.wantSaveAs = true;  // e.g. a read-only file
 }
 
+// Esc over a dialog: the dialog's Cancel (handleShortcuts raised it).
+static bool escaped(UiContext& c) {
+    bool esc = c.ui.escape;
+    c.ui.escape = false;
+    return esc;
+}
+
 // A button with a widget mark.
 static bool button(const char* popup, const char* label) {
     bool clicked = ImGui::Button(label);
@@ -48,10 +52,13 @@ static bool button(const char* popup, const char* label) {
     return clicked;
 }
 
-// The path field, focused when the dialog appears; Enter confirms.
+// The path field, focused when the dialog appears; Enter confirms. Wide enough to show the
+// whole path, up to the window's width.
 static bool pathField(const char* popup, std::string* path) {
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-    ImGui::SetNextItemWidth(480);
+    const float pad = 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetFontSize();
+    const float room = ImGui::GetIO().DisplaySize.x - 120.0f;  // the label and the window's edges
+    ImGui::SetNextItemWidth(std::max(480.0f, std::min(ImGui::CalcTextSize(path->c_str()).x + pad, room)));
     const ImGuiInputTextFlags flags = ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll;
     bool enter = ImGui::InputText("path", path, flags);  // typing replaces the suggestion
     markItem(std::string(popup) + "/path");
@@ -76,7 +83,8 @@ static void openDialog(UiContext& c) {
     go |= pathField(kOpenPopup, &c.ui.pathField);
     go |= button(kOpenPopup, "Open");
     ImGui::SameLine();
-    bool cancel = button(kOpenPopup, "Cancel");
+    bool cancel = button(kOpenPopup, "Cancel") || escaped(c);
+    go = go && !cancel;
     if (go || cancel) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
     if (go) openFile(c, c.ui.pathField);  // may raise the unsaved prompt: after EndPopup
@@ -86,7 +94,7 @@ static void finishSaveAs(UiContext& c, bool saved) {
     bool leave = c.ui.saveThenLeave;
     c.ui.saveThenLeave = false;
     if (!leave) return;
-    if (saved) c.editor.confirmLeave(&c.ui.openErrors);
+    if (saved) c.editor.confirmLeave();
     else c.editor.cancelLeave();
 }
 
@@ -94,7 +102,9 @@ static void finishSaveAs(UiContext& c, bool saved) {
 static bool confirmedTarget(UiContext& c, bool go) {
     std::error_code ec;
     const std::string& path = c.ui.pathField;
-    bool other = path != c.editor.document().path() && std::filesystem::exists(path, ec);
+    const std::string& own = c.editor.document().path();
+    bool same = path == own || (!own.empty() && std::filesystem::equivalent(path, own, ec));
+    bool other = !same && std::filesystem::exists(path, ec);
     if (other && go && c.ui.replacePath != path) {
         c.ui.replacePath = path;
         emitEvent("confirm replace " + path);
@@ -110,8 +120,8 @@ static void saveAsDialog(UiContext& c) {
     bool go = pathField(kSaveAsPopup, &c.ui.pathField);
     go |= button(kSaveAsPopup, "Save");
     ImGui::SameLine();
-    bool cancel = button(kSaveAsPopup, "Cancel");
-    go = confirmedTarget(c, go);
+    bool cancel = button(kSaveAsPopup, "Cancel") || escaped(c);
+    go = confirmedTarget(c, go) && !cancel;
     fieldErrorLine(c.ui.message);
     bool saved = go && c.editor.saveAs(c.ui.pathField, &c.ui.message);
     if (saved) c.ui.message.clear();
@@ -131,14 +141,13 @@ static void unsavedPrompt(UiContext& c) {
     ImGui::SameLine();
     bool discard = button(kUnsavedPopup, "Don't save");
     ImGui::SameLine();
-    bool cancel = button(kUnsavedPopup, "Cancel");
+    bool cancel = button(kUnsavedPopup, "Cancel") || escaped(c);
     if (save || discard || cancel) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
-    std::vector<std::string>& errors = c.ui.openErrors;
     if (cancel) c.editor.cancelLeave();
-    if (discard) c.editor.confirmLeave(&errors);
+    if (discard) c.editor.confirmLeave();
     if (save && !c.editor.document().path().empty() && c.editor.save(&c.ui.message))
-        c.editor.confirmLeave(&errors);
+        c.editor.confirmLeave();
     else if (save) {  // no file yet, or it could not be written: ask where
         c.ui.saveThenLeave = true;
         c.ui.wantSaveAs = true;
@@ -149,7 +158,7 @@ static void errorsPopup(UiContext& c) {
     if (!beginModal(kErrorsPopup)) return;
     ImGui::TextUnformatted("The file did not load; the open scene is unchanged.");
     for (const std::string& e : c.ui.openErrors) fieldErrorLine(e);
-    if (button(kErrorsPopup, "OK")) {
+    if (button(kErrorsPopup, "OK") || escaped(c)) {
         c.ui.openErrors.clear();
         ImGui::CloseCurrentPopup();
     }
@@ -161,7 +170,8 @@ void drawDialogs(UiContext& c) {
     UiState& ui = c.ui;
     if (ui.wantOpen || ui.wantSaveAs) {
         ImGui::OpenPopup(ui.wantOpen ? kOpenPopup : kSaveAsPopup);
-        ui.pathField = suggestedPath(c.editor);
+        ui.pathField = ui.wantOpen ? c.editor.document().path()
+                                   : proposeSavePath(c.editor.document().path(), c.editor.lastFile());
         ui.message.clear();
     }
     if (c.editor.pendingLeave() != Leave::None && !ui.saveThenLeave) ImGui::OpenPopup(kUnsavedPopup);
@@ -171,6 +181,7 @@ void drawDialogs(UiContext& c) {
     saveAsDialog(c);
     unsavedPrompt(c);
     errorsPopup(c);
+    ui.escape = false;  // no dialog took it
 }
 
 }  // namespace mb

@@ -2,9 +2,13 @@
 #include "ui.h"
 #include "widgets.h"
 
+#include "marchbox/editor/events.h"
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <filesystem>
 #include <imgui.h>
+#include <imgui_internal.h>  // the popup stack: Esc closes the topmost popup before it quits
 
 namespace mb {
 
@@ -29,9 +33,34 @@ static void request(UiContext& c, Leave what) {
     c.editor.request(what, "", &errors);
 }
 
+// Each file by name, its folder in the shortcut column; marked by its whole path.
+static void recentMenu(UiContext& c) {
+    const std::vector<std::string> paths = c.ui.recent.paths();  // a pick changes the list
+    for (size_t i = 0; i < paths.size(); ++i) {
+        std::filesystem::path p(paths[i]);
+        ImGui::PushID(int(i));
+        bool clicked = ImGui::MenuItem(p.filename().string().c_str(), p.parent_path().string().c_str());
+        markItem("Open Recent/" + paths[i]);
+        ImGui::PopID();
+        if (clicked) openFile(c, paths[i]);
+    }
+    ImGui::Separator();
+    if (menuItem("Open Recent", "Clear list")) {
+        std::string why = c.ui.recent.clear();
+        if (!why.empty()) c.ui.message = why;
+    }
+}
+
 static void fileMenu(UiContext& c) {
     if (menuItem("File", "New", "Ctrl+N")) request(c, Leave::NewScene);
     if (menuItem("File", "Open...", "Ctrl+O")) c.ui.wantOpen = true;
+    const bool any = !c.ui.recent.paths().empty();
+    if (ImGui::BeginMenu("Open Recent", any)) {
+        recentMenu(c);
+        ImGui::EndMenu();
+    } else {
+        markItem("File/Open Recent");
+    }
     if (menuItem("File", "Save", "Ctrl+S")) saveFile(c);
     if (menuItem("File", "Save As...")) c.ui.wantSaveAs = true;
     if (menuItem("File", "Render...", nullptr, c.ui.showRender)) c.ui.showRender = !c.ui.showRender;
@@ -84,7 +113,34 @@ static void viewMenu(UiContext& c) {
     if (menuItem("View", "Screenshot", "F12")) ui.wantScreenshot = true;
 }
 
+// Help > About: the version (MARCHBOX_VERSION, the one `marchbox --version` prints) and what
+// the editor is built on.
+static void aboutWindow(UiState& ui) {
+    if (!ui.showAbout) return;
+    if (ImGui::Begin("About Marchbox", &ui.showAbout, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::Text("Marchbox %s", MARCHBOX_VERSION);
+        markItem("About/version " MARCHBOX_VERSION);
+        ImGui::TextUnformatted("A desktop editor for scenes made of signed distance functions:\n"
+                               "raymarched on the GPU, simulated on the CPU.");
+        ImGui::Separator();
+        ImGui::Text("Scene files: version 1 (SCENE_FORMAT.md)   Dear ImGui %s", IMGUI_VERSION);
+        ImGui::TextDisabled("build/marchbox --help lists the command line.");
+    }
+    ImGui::End();
+}
+
+// The file the editor last opened or saved goes first in the recent files: the one it started
+// on, an Open, a Save As. Watching lastFile() catches every way in, dialogs and prompts alike.
+static void noteRecentFile(UiContext& c) {
+    const std::string& last = c.editor.lastFile();
+    if (last.empty() || last == c.ui.recentNoted) return;
+    c.ui.recentNoted = last;
+    std::string why = c.ui.recent.add(last);
+    if (!why.empty()) emitEvent("recent-failed " + why);
+}
+
 void drawMenuBar(UiContext& c) {
+    noteRecentFile(c);
     if (!ImGui::BeginMainMenuBar()) return;
     if (beginMenu("File")) { fileMenu(c); ImGui::EndMenu(); }
     if (beginMenu("Edit")) { editMenu(c); ImGui::EndMenu(); }
@@ -92,9 +148,11 @@ void drawMenuBar(UiContext& c) {
     if (beginMenu("View")) { viewMenu(c); ImGui::EndMenu(); }
     if (beginMenu("Help")) {
         if (menuItem("Help", "Controls", nullptr, c.ui.showHelp)) c.ui.showHelp = !c.ui.showHelp;
+        if (menuItem("Help", "About Marchbox", nullptr, c.ui.showAbout)) c.ui.showAbout = !c.ui.showAbout;
         ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();
+    aboutWindow(c.ui);
 }
 
 static void ctrlShortcut(UiContext& c, const KeyPress& k) {
@@ -123,11 +181,29 @@ static void plainShortcut(UiContext& c, const KeyPress& k) {
     }
 }
 
+// Esc closes what is open before it quits: a dialog as its Cancel would (drawDialogs reads
+// ui.escape), a menu or the object popup as a click elsewhere would. While a field in a menu
+// or popup is typed into, Esc is the field's: ImGui puts its old text back. True when Esc was
+// used here.
+static bool escapePopup(UiContext& c) {
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    if (g.OpenPopupStack.empty()) return false;
+    const ImGuiWindow* top = g.OpenPopupStack.back().Window;
+    if (top && (top->Flags & ImGuiWindowFlags_Modal)) {
+        c.ui.escape = true;
+    } else if (!ImGui::GetIO().WantTextInput) {
+        ImGui::ClosePopupToLevel(g.OpenPopupStack.Size - 1, true);
+        emitEvent("escape closes a popup");
+    }
+    return true;
+}
+
 // Keys reach the editor only when ImGui is not typing into a field or showing a prompt.
 void handleShortcuts(UiContext& c, const std::vector<KeyPress>& keys) {
     const bool imguiHasKeys = ImGui::GetIO().WantCaptureKeyboard;
     for (const KeyPress& k : keys) {
         if (k.key == GLFW_KEY_F12) c.ui.wantScreenshot = true;  // even over a dialog
+        else if (k.key == GLFW_KEY_ESCAPE && escapePopup(c)) continue;
         else if (imguiHasKeys) continue;
         else if (k.mods & GLFW_MOD_CONTROL) ctrlShortcut(c, k);
         else plainShortcut(c, k);

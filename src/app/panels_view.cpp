@@ -24,11 +24,12 @@ static const char* const kShadowNames[] = {"none", "hard", "soft"};
 static void cameraFields(UiContext& c) {
     Camera cam = c.editor.scene().camera;
     FieldEdit e{false, 0, &c.ui.message};
-    fieldVec3("position", Field::Position, &cam.pos, e);
-    fieldVec3("target", Field::Position, &cam.target, e);
+    fieldVec3("position", Field::CameraPosition, &cam.pos, e);
+    fieldVec3("target", Field::CameraTarget, &cam.target, e);
     fieldFloat("fov", Field::Fov, &cam.fov, e);
     if (e.changed) c.editor.edit("Edit camera", [&](Scene& s) { s.camera = cam; }, e.key);
     ImGui::Checkbox("orbit preview (1)", &c.ui.previewOrbit);
+    itemTooltip(itemPath("orbit preview (1)"), "A slow turn about the target. Not saved.");
 }
 
 static void renderFields(UiContext& c) {
@@ -36,10 +37,10 @@ static void renderFields(UiContext& c) {
     FieldEdit e{false, 0, &c.ui.message};
     fieldInt("steps", Field::Steps, &r.steps, e);
     fieldFloat("epsilon", Field::Epsilon, &r.epsilon, e);
-    fieldCombo("shadows", &r.shadows, kShadowNames, 3, e);
+    fieldCombo("shadows", &r.shadows, kShadowNames, 3, e, "None, hard, or soft (softness below).");
     fieldInt("reflections", Field::Reflections, &r.reflections, e);
     fieldFloat("fog", Field::Fog, &r.fog, e);
-    fieldFlag("ambient occlusion", &r.ao, e);
+    fieldFlag("ambient occlusion", &r.ao, e, "Darkens creases and contact points.");
     fieldInt("anti-aliasing", Field::Aa, &r.aa, e);
     if (e.changed) c.editor.edit("Edit render settings", [&](Scene& s) { s.render = r; }, e.key);
 }
@@ -49,11 +50,16 @@ static void debugView(UiState& ui) {
     for (int m = 0; m < kRenderModeCount; ++m) names[m] = renderModeName(RenderMode(m));
     int mode = int(ui.render.mode);
     if (ImGui::Combo("debug view", &mode, names, kRenderModeCount)) ui.render.mode = RenderMode(mode);
+    itemTooltip(itemPath("debug view"), "What the view shows: the shaded picture or one of its parts.\nNot saved.");
     ImGui::Checkbox("uber shader", &ui.render.uber);
+    itemTooltip(itemPath("uber shader"), "Draw with the general shader instead of the one compiled\nfor this scene. Not saved.");
     ImGui::Checkbox("fog (F)", &ui.render.fog);
+    itemTooltip(itemPath("fog (F)"), "Shows the scene's fog (render fog density). Not saved.");
     postModeCombo(ui);
+    itemTooltip(itemPath("post pass"), "FXAA smooths edges after the march. Not saved.");
     ImGui::SliderFloat("shadow softness", &ui.render.quality.softness, 2.0f, 64.0f, "k = %.1f",
                        ImGuiSliderFlags_Logarithmic);
+    itemTooltip(itemPath("shadow softness"), "k of the soft-shadow estimate, 2 to 64: lower is softer.\nNot saved.");
 }
 
 void postModeCombo(UiState& ui) {
@@ -95,7 +101,8 @@ static void helpWindow(UiState& ui) {
             "Ctrl+Z, Ctrl+Y       undo, redo (a simulation run is one step)\n"
             "Ctrl+N, Ctrl+O, Ctrl+S   new, open, save\n"
             "F12                  screenshot (PNG)\n"
-            "Esc                  quit, asking first about unsaved changes\n"
+            "Esc                  close the open menu, popup or dialog; with none,\n"
+            "                     quit, asking first about unsaved changes\n"
             "Drop a .txt file on the window to open it.");
     }
     ImGui::End();

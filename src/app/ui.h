@@ -3,6 +3,7 @@
 #pragma once
 
 #include "marchbox/editor/editor.h"
+#include "marchbox/editor/recent.h"
 #include "marchbox/gl/renderer.h"
 #include "window.h"
 
@@ -24,7 +25,7 @@ struct UiState {
     // Windows, toggled from the menus.
     bool showObjects = true, showMaterials = false, showLights = false;
     bool showSimulation = false, showView = false, showHelp = false, showStats = true;
-    bool showRender = false;
+    bool showRender = false, showAbout = false;
 
     // Requests raised by menus and shortcuts, carried out by drawDialogs() this frame.
     bool wantOpen = false, wantSaveAs = false, wantObjectPopup = false, wantScreenshot = false;
@@ -32,11 +33,14 @@ struct UiState {
     std::vector<std::string> openErrors;   // FILE:LINE lines of the last failed open
     bool saveThenLeave = false;            // Save As was asked for by the unsaved-changes prompt
     std::string replacePath;               // Save As warned once that this file exists
+    bool escape = false;                   // Esc this frame: the open dialog cancels
 
     std::string message;                   // the last refusal or failure, shown in red
     RenderOptions render;                  // debug view and uber shader
     bool previewOrbit = false;             // key 1
     std::string scenesDir;                 // scenes/ of the source tree, for File > Open
+    RecentFiles recent{recentFilesPath()}; // File > Open Recent
+    std::string recentNoted;               // the editor's last file, as last put in `recent`
 };
 
 // What the panels need from the rest of the window.
@@ -47,7 +51,8 @@ struct UiContext {
     const std::string& shaderLog;
 };
 
-// [panels_menu.cpp] the main menu bar and the shortcuts that mirror its items.
+// [panels_menu.cpp] the main menu bar, Help > About's window, and the shortcuts that mirror the
+// menus' items; each frame it puts the file last opened or saved first in the recent files.
 void drawMenuBar(UiContext& c);
 void handleShortcuts(UiContext& c, const std::vector<KeyPress>& keys);
 

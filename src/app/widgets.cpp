@@ -1,87 +1,180 @@
-// widgets.cpp — validated ImGui fields and the widget marks of the event log.
+// widgets.cpp — validated ImGui fields, their tooltips, and the widget marks of the event log.
 #include "widgets.h"
 
 #include "marchbox/editor/events.h"
 
+#include <imgui_internal.h>  // the active item's text state: typing is told apart from dragging
+
+#include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <map>
 
 namespace mb {
 
-// Records the outcome of one widget: a valid value is taken, an invalid one only explained.
-template <typename T>
-static void settle(const char* label, bool edited, const T& value, bool valid,
-                   const std::string& why, T* out, FieldEdit& e) {
-    if (!edited) return;
-    if (!valid) {
-        if (e.error) *e.error = why;
-        return;
+namespace {
+
+constexpr double kTooltipDelay = 0.5;  // s the mouse rests on a field before its tooltip shows
+
+// True while a text field has the keyboard: a Ctrl+clicked drag or slider, or a text box.
+bool typingNow() {
+    ImGuiID active = ImGui::GetActiveID();
+    return active != 0 && ImGui::GetInputTextState(active) != nullptr;
+}
+
+// ImGui 1.86 applies a Ctrl+clicked field's text at every key, so "1e40" passes through 1e4 on
+// its way. What is typed waits here, by widget id, until the field lets go of the keyboard.
+struct Typed {
+    std::array<float, 3> value{};
+    bool edited = false;  // a key changed the value
+    int frame = 0;        // the last frame the field was typed into
+};
+std::map<ImGuiID, Typed>& typedFields() {
+    static std::map<ImGuiID, Typed> fields;
+    return fields;
+}
+
+// This frame's outcome of field `id` of n floats, after the widget ran: true with `value` set
+// when there is a value to check now. Drags give one every frame; typing gives one when it ends.
+bool settleTyping(ImGuiID id, const std::string& path, bool edited, float* value, int n) {
+    static ImGuiID typingId = 0;  // the field that has the keyboard, told once to the event log
+    const int frame = ImGui::GetFrameCount();
+    auto& typed = typedFields();
+    if (ImGui::IsItemActive() && typingNow()) {
+        if (typingId != id) emitEvent("typing " + path);
+        typingId = id;
+        Typed& t = typed[id];
+        t.frame = frame;
+        if (edited) std::copy(value, value + n, t.value.begin());
+        t.edited |= edited;
+        return false;
     }
-    *out = value;
+    if (typingId == id) typingId = 0;
+    auto it = typed.find(id);
+    if (it == typed.end()) return edited;
+    // The field let go this frame: Return or a click elsewhere takes the text, Esc drops it.
+    // An entry from an earlier frame belongs to a field that went away while typed into.
+    const Typed t = it->second;
+    typed.erase(it);
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) return false;
+    if (edited) return true;  // the last key and Return in one frame: this value is the text
+    if (!t.edited || t.frame != frame - 1) return false;
+    std::copy(t.value.begin(), t.value.begin() + n, value);
+    return true;
+}
+
+void refuse(FieldEdit& e, const std::string& why) {
+    if (e.error) *e.error = why;
+    emitEvent("refuse " + why);
+}
+
+void take(const char* label, FieldEdit& e) {
     e.changed = true;
     e.key = ImGui::GetID(label);  // the widget's own id: same label, same stack
     if (e.error) e.error->clear();
 }
 
-static bool drawFloats(const char* label, Field f, float* v, int n) {
+bool drawFloats(const char* label, Field f, float* v, int n) {
     const FieldSpec& s = fieldSpec(f);
-    if (std::isfinite(s.max) && std::isfinite(s.min))
+    if (s.slider)
         return ImGui::SliderScalarN(label, ImGuiDataType_Float, v, n, &s.dragMin, &s.dragMax, s.format);
-    // Unbounded fields drag at a pace set by their comfortable range, clamped only below.
-    float lo = std::isfinite(s.min) ? (s.minExclusive ? s.dragMin : float(s.min)) : -FLT_MAX;
-    float hi = FLT_MAX;
+    // Drags move at a pace set by their comfortable range and stop at the accepted range.
+    float lo = s.minExclusive ? s.dragMin : float(s.min), hi = float(s.max);
     float speed = (s.dragMax - s.dragMin) / 400.0f;
     return ImGui::DragScalarN(label, ImGuiDataType_Float, v, n, speed, &lo, &hi, s.format);
 }
 
+// The common end of every numeric field: mark, typing, check, store, tooltip.
+void finishFloats(const char* label, Field f, bool edited, float* value, float* stored, int n,
+                  FieldEdit& e) {
+    const std::string path = itemPath(label);
+    markItem(path);
+    bool ready = settleTyping(ImGui::GetID(label), path, edited, value, n);
+    if (ready && !std::equal(value, value + n, stored)) {
+        std::string why;
+        bool ok = n == 1 ? acceptField(f, value[0], stored[0], &why)
+                         : acceptVec(f, {value[0], value[1], value[2]}, {stored[0], stored[1], stored[2]}, &why);
+        if (ok) {
+            std::copy(value, value + n, stored);
+            take(label, e);
+        } else {
+            refuse(e, why);
+        }
+    }
+    itemTooltip(path, fieldTooltip(f));
+}
+
+}  // namespace
+
 void fieldFloat(const char* label, Field f, float* v, FieldEdit& e) {
     float value = *v;
     bool edited = drawFloats(label, f, &value, 1);
-    std::string why;
-    bool valid = edited && validateField(f, value, &why);
-    settle(label, edited, value, valid, why, v, e);
+    finishFloats(label, f, edited, &value, v, 1, e);
 }
 
 void fieldInt(const char* label, Field f, int* v, FieldEdit& e) {
     const FieldSpec& s = fieldSpec(f);
-    int value = *v, lo = int(s.dragMin), hi = int(s.dragMax);
-    bool edited = ImGui::SliderInt(label, &value, lo, hi);
-    std::string why;
-    bool valid = edited && validateField(f, value, &why);
-    settle(label, edited, value, valid, why, v, e);
+    int value = *v;
+    bool edited = ImGui::SliderInt(label, &value, int(s.dragMin), int(s.dragMax));
+    // Whole numbers up to 4096 are exact as floats.
+    float asFloat = float(value), stored = float(*v);
+    finishFloats(label, f, edited, &asFloat, &stored, 1, e);
+    *v = int(stored);
 }
 
 void fieldVec3(const char* label, Field f, glm::vec3* v, FieldEdit& e) {
     glm::vec3 value = *v;
     bool edited = drawFloats(label, f, &value.x, 3);
-    std::string why;
-    bool valid = edited && validateVec(f, value, &why);
-    settle(label, edited, value, valid, why, v, e);
+    finishFloats(label, f, edited, &value.x, &v->x, 3, e);
 }
 
 void fieldColor(const char* label, Field f, glm::vec3* v, FieldEdit& e) {
     glm::vec3 value = *v;
     bool edited = ImGui::ColorEdit3(label, &value.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
-    std::string why;
-    bool valid = edited && validateVec(f, value, &why);
-    settle(label, edited, value, valid, why, v, e);
+    finishFloats(label, f, edited, &value.x, &v->x, 3, e);
 }
 
-void fieldFlag(const char* label, bool* v, FieldEdit& e) {
-    bool value = *v;
-    bool edited = ImGui::Checkbox(label, &value);
-    settle(label, edited, value, true, "", v, e);
+void fieldFlag(const char* label, bool* v, FieldEdit& e, const char* tooltip) {
+    if (ImGui::Checkbox(label, v)) take(label, e);
+    markItem(itemPath(label));
+    itemTooltip(itemPath(label), tooltip);
 }
 
-void fieldCombo(const char* label, int* v, const char* const names[], int count, FieldEdit& e) {
-    int value = *v;
-    bool edited = ImGui::Combo(label, &value, names, count);
-    settle(label, edited, value, true, "", v, e);
+void fieldCombo(const char* label, int* v, const char* const names[], int count, FieldEdit& e,
+                const char* tooltip) {
+    if (ImGui::Combo(label, v, names, count)) take(label, e);
+    markItem(itemPath(label));
+    itemTooltip(itemPath(label), tooltip);
+}
+
+void itemTooltip(const std::string& name, const std::string& text) {
+    // The rest starts when the mouse comes to an item and ends when it leaves or presses.
+    static std::string resting;
+    static double since = 0.0;
+    static int seenFrame = -2, shownFrame = -2;
+    const int frame = ImGui::GetFrameCount();
+    if (!ImGui::IsItemHovered() || ImGui::IsItemActive()) {
+        if (resting == name) resting.clear();
+        return;
+    }
+    if (resting != name || seenFrame != frame - 1) {
+        resting = name;
+        since = ImGui::GetTime();
+    }
+    seenFrame = frame;
+    if (ImGui::GetTime() - since < kTooltipDelay) return;
+    ImGui::SetTooltip("%s", text.c_str());
+    if (shownFrame != frame - 1) emitEvent("tooltip " + name);
+    shownFrame = frame;
 }
 
 void fieldErrorLine(const std::string& error) {
     if (!error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", error.c_str());
+}
+
+std::string itemPath(const char* label) {
+    return std::string(ImGui::GetCurrentWindowRead()->Name) + "/" + label;
 }
 
 void markItem(const std::string& name) {

@@ -1,5 +1,6 @@
-// widgets.h — ImGui fields that only ever hand back values the scene format allows, and marks
-// that tell the event log where a widget is (end-to-end tests click them like a person would).
+// widgets.h — ImGui fields that only ever hand back values the editor accepts, each with a
+// tooltip, and marks that tell the event log where a widget is (end-to-end tests click them like
+// a person would).
 #pragma once
 
 #include "marchbox/editor/fields.h"
@@ -18,14 +19,22 @@ struct FieldEdit {
     std::string* error = nullptr;  // the panel's message line
 };
 
-// Sliders for fields bounded on both sides, drags for the rest; Ctrl+click types a value.
-// Each writes *v only when the new value passes validateField().
+// Sliders where the field's spec asks for one, drags for the rest; Ctrl+click types a value,
+// which is taken when the field lets go of the keyboard (Return, a click elsewhere; Esc drops
+// it), never at each key. Each writes *v only when acceptField() takes the new value; a refusal
+// goes to the message line and to the event log ("refuse MESSAGE"). Hovering shows
+// fieldTooltip(). With the event log on, each is marked as "WINDOW/LABEL".
 void fieldFloat(const char* label, Field f, float* v, FieldEdit& e);
 void fieldInt(const char* label, Field f, int* v, FieldEdit& e);
 void fieldVec3(const char* label, Field f, glm::vec3* v, FieldEdit& e);
 void fieldColor(const char* label, Field f, glm::vec3* v, FieldEdit& e);  // picker, HDR allowed
-void fieldFlag(const char* label, bool* v, FieldEdit& e);
-void fieldCombo(const char* label, int* v, const char* const names[], int count, FieldEdit& e);
+void fieldFlag(const char* label, bool* v, FieldEdit& e, const char* tooltip);
+void fieldCombo(const char* label, int* v, const char* const names[], int count, FieldEdit& e,
+                const char* tooltip);
+
+// The tooltip of the last item while the mouse rests on it; told to the event log as
+// "tooltip NAME" when it shows.
+void itemTooltip(const std::string& name, const std::string& text);
 
 // The refusal of the last typed value, in red, while there is one.
 void fieldErrorLine(const std::string& error);
@@ -41,5 +50,8 @@ void markTyping(const std::string& name);
 // Writes "popup NAME open" or "popup NAME closed" when a popup's state changes; call it every
 // frame with what BeginPopup returned.
 void markPopup(const std::string& name, bool open);
+
+// "NAME" under the window being drawn: "Objects/radius".
+std::string itemPath(const char* label);
 
 }  // namespace mb

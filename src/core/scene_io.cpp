@@ -1,4 +1,5 @@
 // scene_io.cpp — canonical scene text (formatScene, formatFloat) and Scene equality.
+// A record's comment lines are written just above it, the file's last ones at the end.
 // Both walk the key tables of scene_schema.h; parsing is in scene_parse.cpp, files in
 // scene_file.cpp.
 #include "marchbox/scene_io.h"
@@ -31,8 +32,18 @@ std::string formatValue(const glm::vec3& v) {
     return formatFloat(v.x) + ',' + formatFloat(v.y) + ',' + formatFloat(v.z);
 }
 
+// Comment lines as they were read; anything else a program put there made one (commentLine).
+void writeComment(std::string& out, std::string_view text) {
+    for (size_t start = 0; start < text.size();) {
+        size_t end = std::min(text.find('\n', start), text.size());
+        out += commentLine(text.substr(start, end - start));
+        start = end + 1;
+    }
+}
+
 template <class R>
-void writeRecord(std::string& out, const R& rec) {
+void writeRecord(std::string& out, const R& rec, std::string_view comment = {}) {
+    writeComment(out, comment);
     out += Schema<R>::kind;
     forEachKey<R>([&](const char* name, auto field, Rule, Need<R> need) {
         if (need.pick && rec.*need.pick != need.when) return;  // the other spelling is written
@@ -56,33 +67,39 @@ bool sameRecord(const R& a, const R& b) {
 
 template <class R>
 bool sameList(const std::vector<R>& a, const std::vector<R>& b) {
-    return std::equal(a.begin(), a.end(), b.begin(), b.end(), sameRecord<R>);
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const R& x, const R& y) {
+        return sameRecord(x, y) && x.comment == y.comment;
+    });
 }
 
 }  // namespace
 
 std::string formatScene(const Scene& scene) {
+    const SceneComments& c = scene.comments;
     std::string out;
-    writeRecord(out, SceneHeader{});
-    writeRecord(out, scene.camera);
-    writeRecord(out, scene.world);
-    writeRecord(out, scene.render);
+    writeRecord(out, SceneHeader{}, c.header);
+    writeRecord(out, scene.camera, c.camera);
+    writeRecord(out, scene.world, c.world);
+    writeRecord(out, scene.render, c.render);
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         // An empty name would not read back as a Name; write the one the loader would give.
         Material m = scene.materials[i];
         if (m.name.empty()) m.name = defaultMaterialName(i);
-        writeRecord(out, m);
+        writeRecord(out, m, m.comment);
     }
-    for (const Light& l : scene.lights) writeRecord(out, l);
-    for (const Object& o : scene.objects) writeRecord(out, o);
+    for (const Light& l : scene.lights) writeRecord(out, l, l.comment);
+    for (const Object& o : scene.objects) writeRecord(out, o, o.comment);
+    writeComment(out, c.end);
     return out;
 }
 
-// Compares every key of every record (the key tables list every field), floats exactly.
+// Compares every key of every record (the key tables list every field), floats exactly, and
+// the comments as text.
 bool operator==(const Scene& a, const Scene& b) {
     return sameRecord(a.camera, b.camera) && sameRecord(a.world, b.world) &&
            sameRecord(a.render, b.render) && sameList(a.materials, b.materials) &&
-           sameList(a.lights, b.lights) && sameList(a.objects, b.objects);
+           sameList(a.lights, b.lights) && sameList(a.objects, b.objects) &&
+           a.comments == b.comments;
 }
 
 }  // namespace mb

@@ -3,6 +3,9 @@
 // A line is split at blanks by hand; std::regex then checks only single tokens (a key:value
 // field, a number, a vector, a name). libstdc++'s regex recurses once per character, so the
 // line length is checked before any regex runs: no token is longer than kMaxLineBytes.
+//
+// Comment and blank lines are gathered until the next record, which keeps them (SceneComments);
+// the ones after the last record are the file's end.
 #include "marchbox/scene_io.h"
 
 #include "scene_schema.h"
@@ -174,10 +177,10 @@ public:
 private:
     void parseLine(std::string_view text);
     bool readFields(const std::vector<std::string_view>& tokens, size_t first, Fields* fields);
-    void record(std::string_view kind, Fields& fields);
+    void record(std::string_view kind, Fields& fields, std::string comment);
     void header(Fields& fields);
     template <class R> void single(Fields& fields, R& rec);
-    template <class R> bool append(Fields& fields, std::vector<R>& list, int max);
+    template <class R> bool append(Fields& fields, std::vector<R>& list, int max, std::string comment);
     template <class R> void readRecord(Fields& fields, R& rec);
     template <class T> void readKey(const char* key, std::string_view text, T& v, const Rule& r);
     const Field* take(Fields& fields, const char* key);
@@ -189,6 +192,7 @@ private:
     int records_ = 0;                         // records so far, to check `scene` comes first
     std::map<std::string_view, int> counts_;  // records of each kind, for the limits
     std::vector<int> objectLines_;            // where each object is, for its material error
+    std::string comment_;                     // comment and blank lines since the last record
     bool stopped_ = false;
 };
 
@@ -209,13 +213,17 @@ void Parser::run(std::string_view text) {
         start = end + 1;
     }
     if (!stopped_) finish();
+    scene.comments.end = std::move(comment_);
 }
 
 void Parser::parseLine(std::string_view text) {
     if (text.size() > size_t(kMaxLineBytes))
         return error("line longer than " + std::to_string(kMaxLineBytes) + " bytes");
     std::vector<std::string_view> tokens = splitAtBlanks(text);
-    if (tokens.empty() || tokens[0][0] == '#') return;
+    if (tokens.empty() || tokens[0][0] == '#') {
+        comment_ += commentLine(text);
+        return;
+    }
     if (tokens[0] == "-" && tokens.size() > 1) tokens.erase(tokens.begin());  // original's prefix
     // The original program's lines have no kind word: "r:" starts a material, "type:" an object.
     std::string_view kind = tokens[0];
@@ -227,7 +235,9 @@ void Parser::parseLine(std::string_view text) {
     ++records_;
     // A record with a malformed field is not read: what else it lacks would only be a guess.
     Fields fields;
-    if (readFields(tokens, first, &fields)) record(kind, fields);
+    std::string comment = std::move(comment_);
+    comment_.clear();
+    if (readFields(tokens, first, &fields)) record(kind, fields, std::move(comment));
 }
 
 bool Parser::readFields(const std::vector<std::string_view>& tokens, size_t first,
@@ -245,21 +255,27 @@ bool Parser::readFields(const std::vector<std::string_view>& tokens, size_t firs
     return ok;
 }
 
-void Parser::record(std::string_view kind, Fields& fields) {
+void Parser::record(std::string_view kind, Fields& fields, std::string comment) {
+    SceneComments& c = scene.comments;
     if (is<SceneHeader>(kind)) {
         header(fields);
+        c.header = std::move(comment);
     } else if (is<Camera>(kind)) {
         single(fields, scene.camera);
+        c.camera = std::move(comment);
     } else if (is<World>(kind)) {
         single(fields, scene.world);
+        c.world = std::move(comment);
     } else if (is<RenderSettings>(kind)) {
         single(fields, scene.render);
+        c.render = std::move(comment);
     } else if (is<Material>(kind)) {
-        append(fields, scene.materials, kMaxMaterials);
+        append(fields, scene.materials, kMaxMaterials, std::move(comment));
     } else if (is<Light>(kind)) {
-        append(fields, scene.lights, kMaxLights);
+        append(fields, scene.lights, kMaxLights, std::move(comment));
     } else if (is<Object>(kind)) {
-        if (append(fields, scene.objects, kMaxObjects)) objectLines_.push_back(line_);
+        if (append(fields, scene.objects, kMaxObjects, std::move(comment)))
+            objectLines_.push_back(line_);
     } else {
         error("unknown record kind " + quote(kind));
     }
@@ -280,12 +296,13 @@ void Parser::single(Fields& fields, R& rec) {
 
 // Records past the limit are counted, reported once and not read: the file is already invalid.
 template <class R>
-bool Parser::append(Fields& fields, std::vector<R>& list, int max) {
+bool Parser::append(Fields& fields, std::vector<R>& list, int max, std::string comment) {
     int n = ++counts_[Schema<R>::kind];
     if (n == max + 1) error("more than " + std::to_string(max) + " " + Schema<R>::kind + "s");
     if (n > max) return false;
     R rec;
     readRecord(fields, rec);
+    rec.comment = std::move(comment);
     list.push_back(std::move(rec));
     return true;
 }

@@ -14,6 +14,7 @@
 
 #include <limits>
 #include <string>
+#include <string_view>
 
 namespace mb {
 
@@ -151,6 +152,22 @@ struct Schema<Object> {
 
 // The name the loader gives an unnamed material, and the saver writes for one.
 inline std::string defaultMaterialName(size_t index) { return "material" + std::to_string(index); }
+
+// One line of SceneComments as the file holds it, with its '\n': trailing blanks and CRs go,
+// a line that is neither blank nor a comment becomes a comment ("# " before it), and a line is
+// cut to kMaxLineBytes. The reader keeps what this gives; the writer passes whatever a program
+// put in a comment through it, so a saved comment always reads back as the same line.
+inline std::string commentLine(std::string_view line) {
+    auto trimmed = [](std::string_view s) {
+        size_t end = s.find_last_not_of(" \t\r");
+        return end == std::string_view::npos ? std::string_view() : s.substr(0, end + 1);
+    };
+    std::string out(trimmed(line));
+    size_t first = out.find_first_not_of(" \t");
+    if (first != std::string::npos && out[first] != '#') out.insert(0, "# ");
+    if (out.size() > size_t(kMaxLineBytes)) out = std::string(trimmed(out.substr(0, kMaxLineBytes)));
+    return out + '\n';
+}
 
 // Fills in the optional columns of a row, then calls fn(name, field, rule, need).
 template <class R, class Fn>

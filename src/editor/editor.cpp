@@ -17,44 +17,50 @@ static const char* leaveName(Leave what) {
 //-----------------------------------------------------------------------------
 bool Editor::request(Leave what, const std::string& path, std::vector<std::string>* errors) {
     if (what == Leave::None) return true;
-    if (!doc_.dirty()) return leaveNow(what, path, errors);
+    if (what == Leave::Open && !loadScene(path, &opening_, errors)) {
+        emitEvent("open-failed " + path);
+        return false;
+    }
+    if (!doc_.dirty()) {
+        leaveNow(what, path);
+        return true;
+    }
     pending_ = what;
     pendingPath_ = path;
     emitEvent(std::string("ask ") + leaveName(what));
     return true;
 }
 
-bool Editor::confirmLeave(std::vector<std::string>* errors) {
+void Editor::confirmLeave() {
     Leave what = pending_;
     pending_ = Leave::None;
-    return leaveNow(what, pendingPath_, errors);
+    leaveNow(what, pendingPath_);
 }
 
-bool Editor::leaveNow(Leave what, const std::string& path, std::vector<std::string>* errors) {
+void Editor::cancelLeave() {
+    pending_ = Leave::None;
+    opening_ = Scene{};
+}
+
+void Editor::leaveNow(Leave what, const std::string& path) {
     switch (what) {
-        case Leave::None: return true;
+        case Leave::None: return;
         case Leave::NewScene:
             replace(newScene(), "");
             emitEvent("new");
-            return true;
-        case Leave::Open: return open(path, errors);
+            return;
+        case Leave::Open:
+            // The scene read when Open was asked for: what was checked is what opens.
+            replace(opening_, path);
+            opening_ = Scene{};
+            lastFile_ = path;
+            emitEvent("open " + path);
+            return;
         case Leave::Exit:
             quit_ = true;
             emitEvent("quit");
-            return true;
+            return;
     }
-    return true;
-}
-
-bool Editor::open(const std::string& path, std::vector<std::string>* errors) {
-    Scene loaded;
-    if (!loadScene(path, &loaded, errors)) {
-        emitEvent("open-failed " + path);
-        return false;
-    }
-    replace(loaded, path);
-    emitEvent("open " + path);
-    return true;
 }
 
 void Editor::replace(const Scene& scene, const std::string& path) {
@@ -78,6 +84,7 @@ bool Editor::saveAs(const std::string& path, std::string* error) {
     sim_.commitRun(doc_);
     if (!saveScene(path, doc_.scene(), error)) return false;
     doc_.markSaved(path);
+    lastFile_ = path;
     emitEvent("save " + path);
     return true;
 }
@@ -133,8 +140,13 @@ static bool tryEdit(Editor& e, const std::string& label, Command command) {
 
 bool Editor::add(ItemKind k, std::string* why) {
     int index = -1;
-    bool ok = tryEdit(*this, std::string("Add ") + itemKindName(k),
-                      [&](Scene& s) { return (index = addItem(s, k, why)) >= 0; });
+    bool ok = tryEdit(*this, std::string("Add ") + itemKindName(k), [&](Scene& s) {
+        const bool object = k == ItemKind::Object;
+        const glm::vec3 spot = object ? placeNewObject(s, defaultObject().radius) : glm::vec3(0.0f);
+        if ((index = addItem(s, k, why)) < 0) return false;
+        if (object) s.objects[size_t(index)].pos = spot;
+        return true;
+    });
     if (ok) select(k, index);
     return ok;
 }

@@ -15,6 +15,23 @@ bool hasSceneExtension(const std::string& path) {
     return ext == ".txt";
 }
 
+// fs::absolute and current_path may throw (no working folder); with an error code they do not.
+static fs::path wholePath(const fs::path& p) {
+    std::error_code ec;
+    fs::path a = fs::absolute(p, ec);
+    return (ec ? p : a).lexically_normal();
+}
+
+std::string proposeSavePath(const std::string& current, const std::string& lastUsed) {
+    if (!current.empty()) return wholePath(current).string();
+    fs::path folder = lastUsed.empty() ? fs::path(".") : wholePath(lastUsed).parent_path();
+    fs::path path = wholePath(folder / "untitled.txt");
+    std::error_code ec;
+    for (int n = 2; fs::exists(path, ec) && n < 1000; ++n)
+        path = wholePath(folder / ("untitled-" + std::to_string(n) + ".txt"));
+    return path.string();
+}
+
 // Keyed by canonical path, so the same file reached as "scenes/a.txt" and "/src/scenes/a.txt"
 // is listed once, under the first spelling.
 static void addScenesIn(const fs::path& folder, std::map<std::string, std::string>* out) {

@@ -1,4 +1,5 @@
-// picking.cpp — ray casts for selection and for dragging objects over the ground.
+// picking.cpp — ray casts for selection, for dragging objects over the ground and for placing
+// new ones.
 #include "marchbox/editor/picking.h"
 
 #include "marchbox/camera.h"
@@ -36,6 +37,42 @@ bool pixelOnPlane(const Camera& camera, glm::vec2 pixel, glm::vec2 viewSize, flo
     if (t <= 0.0f) return false;
     *hit = camera.pos + t * dir;
     return true;
+}
+
+// Clear: past each object's reach, or outside its surface by the new radius, its blend (a smooth
+// blend pulls surfaces together by up to that much) and a hair.
+static bool clearOf(const std::vector<SdfObject>& objects, glm::vec3 p, float radius) {
+    const float gap = 1e-3f;
+    for (const SdfObject& o : objects) {
+        if (glm::length(p - o.pos) >= objectReach(o) + radius + gap) continue;
+        if (sdObject(o, p) < radius + o.blend + gap) return false;
+    }
+    return true;
+}
+
+glm::vec3 placeNewObject(const Scene& scene, float radius) {
+    const Camera& c = scene.camera;
+    const float floor = scene.world.floor;
+    glm::vec3 forward = cameraBasis(c).forward;
+    float t = forward.y < 0.0f ? (floor - c.pos.y) / forward.y : -1.0f;
+    glm::vec3 centre = t > 0.0f && t <= kPlaceReach ? c.pos + t * forward : c.target;
+    centre.y = floor + radius;
+    SceneSdf sdf = makeSceneSdf(scene);
+    // Rings about the centre, nearest first, spaced one radius apart in both directions:
+    // ring k holds 6k spots, about a radius apart along it.
+    const float step = std::max(radius, 0.01f);
+    const int rings = 64;
+    for (int k = 0; k <= rings; ++k) {
+        const int spots = std::max(1, 6 * k);
+        for (int i = 0; i < spots; ++i) {
+            float a = 6.2831853f * float(i) / float(spots);
+            glm::vec3 p = centre + float(k) * step * glm::vec3(std::cos(a), 0.0f, std::sin(a));
+            if (clearOf(sdf.objects, p, radius)) return p;
+        }
+    }
+    float top = centre.y;
+    for (const SdfObject& o : sdf.objects) top = std::max(top, o.pos.y + objectReach(o) + radius);
+    return {centre.x, top, centre.z};
 }
 
 bool GroundDrag::begin(const Scene& scene, int index, glm::vec2 pixel, glm::vec2 viewSize) {

@@ -85,18 +85,21 @@ int duplicateItem(Scene& s, ItemKind k, int index, std::string* why) {
         case ItemKind::Object: {
             Object o = s.objects[size_t(index)];
             o.pos += aside;
+            o.comment.clear();
             s.objects.push_back(o);
             break;
         }
         case ItemKind::Material: {
             Material m = s.materials[size_t(index)];
             m.name += "-copy";
+            m.comment.clear();
             s.materials.push_back(m);
             break;
         }
         case ItemKind::Light: {
             Light l = s.lights[size_t(index)];
             if (!l.directional) l.vec += aside;
+            l.comment.clear();
             s.lights.push_back(l);
             break;
         }

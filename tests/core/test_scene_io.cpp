@@ -12,6 +12,7 @@
 #include <fstream>
 #include <random>
 #include <regex>
+#include <sstream>
 #include <unistd.h>
 
 using namespace mb;
@@ -110,7 +111,9 @@ TEST(SceneParse, ExampleFromSpecLoadsWithItsValues) {
 
 TEST(SceneParse, EmptyTextIsTheDefaultScene) {
     EXPECT_EQ(parseOk(""), Scene{});
-    EXPECT_EQ(parseOk("\n\n# only a comment\n   \n"), Scene{});
+    Scene commented;
+    commented.comments.end = "\n\n# only a comment\n\n";  // kept, for the next save
+    EXPECT_EQ(parseOk("\n\n# only a comment\n   \n"), commented);
 }
 
 TEST(SceneParse, CrlfCommentsBlanksTabsAndIndentAreIgnored) {
@@ -484,6 +487,112 @@ TEST(SceneFormat, RandomScenesRoundTripThroughText) {
     expectRoundTrip(s);
 }
 
+//-----------------------------------------------------------------------------
+// Comments
+//-----------------------------------------------------------------------------
+// The record lines of a scene's canonical text, in order: what a commented save must hold
+// between its comments.
+std::vector<std::string> recordLines(Scene s) {
+    s.comments = {};
+    for (Material& m : s.materials) m.comment.clear();
+    for (Light& l : s.lights) l.comment.clear();
+    for (Object& o : s.objects) o.comment.clear();
+    std::vector<std::string> lines;
+    std::string text = formatScene(s);
+    for (size_t start = 0, end; (end = text.find('\n', start)) != std::string::npos; start = end + 1)
+        lines.push_back(text.substr(start, end - start + 1));
+    return lines;
+}
+
+// Records out of the canonical order, a missing `world` and `render`, CRLF, trailing blanks.
+const char* kCommented =
+    "# Notes on the whole file\r\n"
+    "scene version:1\n"
+    "# the objects come first here\n"
+    "object type:sphere pos:0,1,0 material:1\n"
+    "  # indented, with trailing blanks \t \n"
+    "object type:box pos:2,0.5,0\n"
+    "\n"
+    "# the camera, last in this file\n"
+    "camera fov:40\n"
+    "material r:1 g:0 b:0\n"
+    "\t\n"
+    "# blue\n"
+    "- r:0 g:0 b:1\n"
+    "light pos:0,5,0\n"
+    "\n"
+    "# the end\r\n";
+
+TEST(SceneComments, EachRunStaysAboveItsRecordInTheCanonicalOrder) {
+    Scene s = parseOk(kCommented);
+    std::vector<std::string> r = recordLines(s);  // scene camera world render 2×material light 2×object
+    ASSERT_EQ(r.size(), 9u);
+    EXPECT_EQ(formatScene(s),
+              "# Notes on the whole file\n" + r[0] +
+              "\n# the camera, last in this file\n" + r[1] + r[2] + r[3] + r[4] +
+              "\n# blue\n" + r[5] + r[6] +
+              "# the objects come first here\n" + r[7] +
+              "  # indented, with trailing blanks\n" + r[8] +
+              "\n# the end\n");
+    EXPECT_EQ(s.objects[1].comment, "  # indented, with trailing blanks\n");
+    EXPECT_EQ(s.comments.end, "\n# the end\n");
+}
+
+TEST(SceneComments, RoundTripKeepsEveryCommentAndSavingTwiceGivesTheSameBytes) {
+    Scene s = parseOk(kCommented);
+    const std::string saved = formatScene(s);
+    for (const char* note : {"# Notes on the whole file", "# the objects come first here",
+                             "  # indented, with trailing blanks", "# the camera, last in this file",
+                             "# blue", "# the end"})
+        EXPECT_NE(saved.find(std::string(note) + "\n"), std::string::npos) << note;
+    Scene again = parseOk(saved);
+    EXPECT_EQ(again, s);
+    EXPECT_EQ(formatScene(again), saved);
+    // The example scenes carry comments of their own: each one survives a save.
+    fs::path dir = fs::path(MARCHBOX_SOURCE_DIR) / "scenes";
+    for (const auto& entry : fs::directory_iterator(dir)) {
+        if (entry.path().extension() != ".txt") continue;
+        const std::string text = readBytes(entry.path());
+        const std::string out = formatScene(parseOk(text));
+        std::istringstream lines(text);
+        for (std::string line; std::getline(lines, line);) {
+            line.erase(line.find_last_not_of(" \t\r") + 1);
+            size_t first = line.find_first_not_of(" \t");
+            if (first != std::string::npos && line[first] == '#')
+                EXPECT_NE(out.find(line + "\n"), std::string::npos) << entry.path() << ": " << line;
+        }
+    }
+}
+
+TEST(SceneComments, ADeletedRecordTakesItsCommentsAndTheEndStays) {
+    Scene s = parseOk(kCommented);
+    s.objects.erase(s.objects.begin());
+    s.materials.pop_back();
+    s.objects[0].material = 0;
+    const std::string saved = formatScene(s);
+    EXPECT_EQ(saved.find("# the objects come first here"), std::string::npos) << saved;
+    EXPECT_EQ(saved.find("# blue"), std::string::npos) << saved;
+    EXPECT_NE(saved.find("  # indented, with trailing blanks\nobject type:box"), std::string::npos);
+    s.objects.clear();
+    s.lights.clear();
+    EXPECT_EQ(formatScene(s).substr(formatScene(s).size() - 11), "\n# the end\n");
+}
+
+TEST(SceneComments, AnythingAProgramPutsThereSavesAsCommentsThatReadBack) {
+    Scene s;
+    s.comments.camera = "not a comment\n  # spaced   \r\n\t \n\r# carriage\nno newline";
+    s.objects.resize(1);
+    s.materials.resize(1);
+    s.objects[0].comment = "#" + std::string(5000, 'x') + "\n";
+    const std::string saved = formatScene(s);
+    EXPECT_NE(saved.find("\n# not a comment\n  # spaced\n\n# \r# carriage\n# no newline\ncamera "),
+              std::string::npos) << saved;
+    EXPECT_NE(saved.find("\n#" + std::string(kMaxLineBytes - 1, 'x') + "\nobject "), std::string::npos);
+    Scene back = parseOk(saved);
+    EXPECT_EQ(formatScene(back), saved);
+    EXPECT_EQ(back.comments.camera, "# not a comment\n  # spaced\n\n# \r# carriage\n# no newline\n");
+}
+
 TEST(SceneEquality, ComparesEveryFieldExactly) {
     Scene a = parseOk(kExample), b = a;
     EXPECT_EQ(a, b);
@@ -497,6 +606,12 @@ TEST(SceneEquality, ComparesEveryFieldExactly) {
     EXPECT_NE(a, b);
     b = a;
     b.objects.pop_back();
+    EXPECT_NE(a, b);
+    b = a;
+    b.objects[0].comment = "# a note\n";
+    EXPECT_NE(a, b);
+    b = a;
+    b.comments.end = "# a note\n";
     EXPECT_NE(a, b);
 }
 

@@ -42,8 +42,10 @@ class Editor:
 
     def __init__(self, binary, scene, workdir, **env_extra):
         self.workdir = workdir
+        # Its own config folder: the recent files list of the person running the tests stays out.
         env = dict(os.environ, MARCHBOX_EVENT_LOG='1', MARCHBOX_SCREENSHOT_DIR=workdir,
-                   MARCHBOX_WINDOW_SIZE='%dx%d' % WINDOW, **env_extra)
+                   MARCHBOX_WINDOW_SIZE='%dx%d' % WINDOW,
+                   XDG_CONFIG_HOME=os.path.join(workdir, 'config'), **env_extra)
         self.log_path = os.path.join(workdir, 'events.log')
         self.err_path = os.path.join(workdir, 'stderr.log')
         with open(self.log_path, 'w') as out, open(self.err_path, 'w') as err:
@@ -120,6 +122,22 @@ class Editor:
     def type(self, text):
         xdotool('type', '--delay', 40, text)
 
+    def type_into(self, widget, text, fresh=True):
+        """Ctrl+click a field, type text into it and press Return."""
+        self.move(*self.widget(widget, fresh))
+        xdotool('keydown', 'ctrl')
+        xdotool('mousedown', 1)
+        time.sleep(HOLD)
+        xdotool('mouseup', 1)
+        xdotool('keyup', 'ctrl')
+        self.wait('typing ' + widget)
+        self.type(text)
+        self.key('Return')
+
+    def save(self):
+        self.key('ctrl+s')
+        return self.wait('save ').split(' ', 1)[1]
+
     # [results] --------------------------------------------------------------
     def screenshot(self):
         self.key('F12')
@@ -170,8 +188,16 @@ def is_red(rgb):
 
 
 # [cases] ----------------------------------------------------------------------
+def text_in(img, x, y, w=40, h=6):
+    """Light text on a dark panel around x,y."""
+    box = [img.pixel(x + dx, y + dy) for dx in range(-w, w) for dy in range(-h, h + 1)
+           if 0 <= x + dx < img.width and 0 <= y + dy < img.height]
+    return any(min(p) > 170 for p in box) and sum(1 for p in box if max(p) < 70) > len(box) // 3
+
+
 def case_startup(app, scene):
-    """The first screenshot shows the menu bar over the scene."""
+    """The first screenshot shows the menu bar over the scene; Help > About shows the version;
+    a field's tooltip shows when the mouse rests on it."""
     img = app.screenshot()
     check((img.width, img.height) == WINDOW, 'screenshot is %dx%d' % (img.width, img.height))
     bar = [img.pixel(x, 9) for x in range(300, 600)]  # past the menu titles
@@ -181,6 +207,27 @@ def case_startup(app, scene):
     check(sky[2] > sky[0] + 20, 'no sky at the top: %s' % (sky,))
     x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
     check(is_red(img.pixel(x, y)), 'no red sphere at %d,%d: %s' % (x, y, img.pixel(x, y)))
+
+    version = subprocess.run([MARCHBOX, '--version'], capture_output=True, text=True).stdout.split()[-1]
+    app.menu('Help', 'About Marchbox')
+    vx, vy = app.widget('About/version ' + version)
+    check(text_in(app.screenshot(), vx, vy), 'no About window with the version at %d,%d' % (vx, vy))
+
+    select_first(app, scene)
+    rx, ry = app.widget('Objects/radius')
+    app.move(rx, ry)
+    app.wait('tooltip Objects/radius')
+    shown = app.screenshot()
+    app.move(WINDOW[0] - 20, WINDOW[1] - 20)  # onto the floor: the tooltip goes
+    time.sleep(0.5)
+    gone = app.screenshot()
+    # ImGui puts a tooltip below and right of the mouse.
+    region = [(px, py) for px in range(rx + 10, min(rx + 200, WINDOW[0]), 3)
+              for py in range(ry + 10, min(ry + 60, WINDOW[1]), 3)]
+    differ = sum(1 for p in region if shown.pixel(*p) != gone.pixel(*p))
+    check(differ > len(region) // 4, 'no tooltip beside the radius field (%d of %d pixels changed)'
+          % (differ, len(region)))
+    check(text_in(shown, rx + 60, ry + 25, w=50, h=15), 'the tooltip has no text')
     app.key('Escape')
     check(app.finish() == 0, 'exit status not 0')
 
@@ -334,6 +381,48 @@ def case_shader_reload(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+def case_new_save_as(app, scene):
+    """A new scene's Save As proposes a whole path beside the last file used; Return takes it."""
+    app.key('ctrl+n')
+    app.wait('new')
+    app.menu('File', 'Save As...')
+    app.wait('typing Save scene as/path')
+    app.key('Return')
+    target = os.path.join(os.path.realpath(app.workdir), 'untitled.txt')
+    check(app.wait('save ') == 'save ' + target, 'not saved beside %s' % scene)
+    result = subprocess.run([MARCHBOX, 'check', target], capture_output=True, text=True)
+    check(result.returncode == 0, 'the new scene does not load: %s' % result.stderr)
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def recent_file(app):
+    with open(os.path.join(app.workdir, 'config', 'marchbox', 'recent.txt')) as f:
+        return f.read().splitlines()
+
+
+def case_recent(app, scene):
+    """File > Open Recent lists the files opened and saved, newest first, kept under
+    XDG_CONFIG_HOME; picking one opens it."""
+    other = os.path.join(app.workdir, 'other.txt')
+    app.menu('File', 'Save As...')
+    app.wait('typing Save scene as/path')
+    app.type(other)
+    app.key('Return')
+    app.wait('save ' + other)
+    time.sleep(0.5)
+    check(recent_file(app) == [other, scene], 'recent.txt holds %s' % recent_file(app))
+    app.click_widget('File', fresh=False)
+    app.wait('popup menu File open')
+    app.move(*app.widget('File/Open Recent'))
+    app.click_widget('Open Recent/' + scene)
+    check(app.wait('open ') == 'open ' + scene, 'the recent file did not open')
+    time.sleep(0.5)
+    check(recent_file(app) == [scene, other], 'recent.txt holds %s' % recent_file(app))
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
 def case_save_replace(app, scene):
     """Save As onto another existing file warns first and replaces it only on a second Save."""
     target = os.path.join(app.workdir, 'other.txt')
@@ -463,6 +552,59 @@ def case_render(app, scene):
     check((img.width, img.height) == (300, 200), 'the PNG is %dx%d' % (img.width, img.height))
     check(len({img.pixel(x, y) for x in range(0, 300, 15) for y in range(0, 200, 15)}) > 10,
           'the render is nearly uniform')
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def select_first(app, scene):
+    """Clicks the red sphere, object 0."""
+    x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
+    app.click(x, y)
+    check(app.wait('select ') == 'select object 0', 'the red sphere was not selected')
+
+
+def case_field_refusal(app, scene):
+    """A typed value out of range is refused, saying so, and the old one kept; the keys on the
+    way to it (1e4 on the way to 1e40) are never taken; a value in range is."""
+    select_first(app, scene)
+    radius = scene_values(scene, 'object', 'radius')[0]
+    for i, text in enumerate(('1e40', '1e9')):
+        app.type_into('Objects/radius', text, fresh=i == 0)
+        refusal = app.wait('refuse ')
+        check(refusal.startswith('refuse radius must be above 0 and at most ') and
+              refusal.endswith(' refused, 0.7 kept'), 'refused as %r' % refusal)
+    app.save()
+    check(scene_values(scene, 'object', 'radius')[0] == radius,
+          'the radius changed: %s' % scene_values(scene, 'object', 'radius')[0])
+    check(not [l for l in app.events() if l.startswith('edit ')], 'a refused value was stored')
+    app.type_into('Objects/radius', '1.25', fresh=False)
+    app.wait('edit Edit object')
+    app.save()
+    check(scene_values(scene, 'object', 'radius')[0] == [1.25], 'the typed radius was not taken')
+    edits = [l for l in app.events() if l.startswith('edit ')]
+    check(edits == ['edit Edit object'], 'typing made more than one edit: %s' % edits)
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def case_escape(app, scene):
+    """Esc closes the object popup, a menu and a dialog, each without quitting; then it quits."""
+    x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
+    app.click(x, y, button=3)
+    app.wait('popup object popup open')
+    app.key('Escape')
+    app.wait('popup object popup closed')
+    app.click_widget('File', fresh=False)
+    app.wait('popup menu File open')
+    app.key('Escape')
+    app.wait('popup menu File closed')
+    app.key('ctrl+o')
+    app.wait('popup Open scene open')
+    app.key('Escape')
+    app.wait('popup Open scene closed')
+    time.sleep(1.0)
+    check(app.proc.poll() is None, 'Esc over a popup quit the editor')
+    check('quit' not in app.events(), 'Esc over a popup asked to quit')
     app.key('Escape')
     check(app.finish() == 0, 'exit status not 0')
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 using namespace mb;
@@ -60,8 +61,35 @@ TEST(Editor, LeavingUnsavedWorkWaitsForAnAnswer) {
     EXPECT_EQ(f.pendingLeave(), Leave::None);
     f.request(Leave::Exit, "", &errors);
     EXPECT_FALSE(f.quitRequested());
-    EXPECT_TRUE(f.confirmLeave(&errors));
+    f.confirmLeave();
     EXPECT_TRUE(f.quitRequested());
+}
+
+// Issue 13, item 8: Open asked whether to save before finding out the file could not open.
+TEST(Editor, OpenReadsTheFileBeforeAskingAboutUnsavedWork) {
+    Editor e = openEditor(writeFile("asker.txt", kScene));
+    e.kick();
+    ASSERT_TRUE(e.document().dirty());
+    std::string bad = writeFile("broken.txt", "object type:sphere pos:0,1\n");
+    std::vector<std::string> errors;
+    EXPECT_FALSE(e.request(Leave::Open, bad, &errors));
+    EXPECT_EQ(e.pendingLeave(), Leave::None);  // nothing asked
+    ASSERT_FALSE(errors.empty());
+    EXPECT_EQ(errors[0].rfind(bad + ":1:", 0), 0u) << errors[0];
+    EXPECT_FALSE(e.request(Leave::Open, tempPath("missing.txt"), &errors));
+    EXPECT_EQ(e.pendingLeave(), Leave::None);
+    EXPECT_TRUE(e.document().dirty());  // the work is still there
+
+    // A file that loads asks, and opens what was read when it was asked for.
+    std::string good = writeFile("other.txt", "material r:0 g:1 b:0\nobject type:box pos:0,1,0\n");
+    EXPECT_TRUE(e.request(Leave::Open, good, &errors));
+    EXPECT_EQ(e.pendingLeave(), Leave::Open);
+    writeFile("other.txt", "this no longer loads\n");
+    e.confirmLeave();
+    EXPECT_EQ(e.document().path(), good);
+    ASSERT_EQ(e.scene().objects.size(), 1u);
+    EXPECT_EQ(e.scene().objects[0].type, ShapeType::Box);
+    EXPECT_FALSE(e.document().dirty());
 }
 
 TEST(Editor, SaveAsWritesAFileThatLoadsAndCleans) {
@@ -76,6 +104,19 @@ TEST(Editor, SaveAsWritesAFileThatLoadsAndCleans) {
     std::vector<std::string> errors;
     ASSERT_TRUE(loadScene(out, &back, &errors));
     EXPECT_EQ(back, e.scene());
+}
+
+TEST(Editor, TheLastFileOutlivesNew) {
+    std::string path = writeFile("last.txt", kScene);
+    Editor e = openEditor(path);
+    EXPECT_EQ(e.lastFile(), path);
+    std::vector<std::string> errors;
+    e.request(Leave::NewScene, "", &errors);
+    EXPECT_EQ(e.document().path(), "");
+    EXPECT_EQ(e.lastFile(), path);
+    std::string error, saved = tempPath("last-saved.txt");
+    ASSERT_TRUE(e.saveAs(saved, &error)) << error;
+    EXPECT_EQ(e.lastFile(), saved);
 }
 
 TEST(Editor, SaveWithoutAFileAsksForSaveAs) {
@@ -126,6 +167,46 @@ TEST(Editor, ResetReturnsToWhenPlayWasPressed) {
     EXPECT_EQ(e.scene(), start);
     e.undo();  // undo the reset: back to where the run got to
     EXPECT_NE(e.scene().objects[0].pos, start.objects[0].pos);
+}
+
+// Issue 13, item 7: after Reset the title kept its '*' though the file would be identical.
+TEST(Editor, ResetBackToTheFileLeavesNothingUnsaved) {
+    Editor e = openEditor(writeFile("reset-clean.txt", kScene));
+    e.togglePlay();
+    for (int i = 0; i < 20; ++i) e.frame(1.0 / 60);
+    EXPECT_TRUE(e.document().dirty());  // the spheres moved: quitting now asks
+    e.togglePlay();
+    e.resetSimulation();
+    EXPECT_FALSE(e.document().dirty());
+    std::vector<std::string> errors;
+    e.request(Leave::Exit, "", &errors);
+    EXPECT_TRUE(e.quitRequested());  // nothing to ask about
+
+    // An edit before Play stays unsaved after Reset.
+    Editor f = openEditor(writeFile("reset-edit.txt", kScene));
+    f.edit("Gravity", [](Scene& s) { s.world.gravity = 2; });
+    f.togglePlay();
+    for (int i = 0; i < 20; ++i) f.frame(1.0 / 60);
+    f.resetSimulation();
+    EXPECT_TRUE(f.document().dirty());
+}
+
+// Issue 13, item 10: the camera is saved with the file but never marks the scene unsaved,
+// whether it moved in the view or was typed into the View panel.
+TEST(Editor, TheCameraIsSavedButNeverMarksTheSceneUnsaved) {
+    std::string path = writeFile("camera.txt", kScene);
+    Editor e = openEditor(path);
+    e.view().pos = {1, 2, -9};
+    EXPECT_FALSE(e.document().dirty());
+    e.edit("Edit camera", [](Scene& s) { s.camera.fov = 30; });
+    EXPECT_FALSE(e.document().dirty());
+    std::string error;
+    ASSERT_TRUE(e.save(&error)) << error;
+    Scene back;
+    std::vector<std::string> errors;
+    ASSERT_TRUE(loadScene(path, &back, &errors));
+    EXPECT_EQ(back.camera.pos, glm::vec3(1, 2, -9));
+    EXPECT_EQ(back.camera.fov, 30.0f);
 }
 
 TEST(Editor, StepIsOneFixedStep) {
@@ -189,4 +270,82 @@ TEST(Editor, AddAndDuplicateSelectTheNewItem) {
     e.clear(ItemKind::Object);
     EXPECT_TRUE(e.selection().empty());
     EXPECT_EQ(e.document().history().undoLabel(), "Clear objects");
+}
+
+static std::string readText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(Editor, SavingKeepsTheCommentsAndADeletedObjectTakesItsOwn) {
+    std::string path = writeFile("comments.txt",
+                                 "# my scene\n"
+                                 "material r:1 g:0 b:0\n"
+                                 "\n"
+                                 "# the ball\n"
+                                 "object type:sphere pos:0,3,0 radius:0.5\n"
+                                 "# the crate\n"
+                                 "object type:box pos:3,0.5,0 static:1\n"
+                                 "# end of file\n");
+    Editor e = openEditor(path);
+    std::string why, error;
+    ASSERT_TRUE(e.remove(ItemKind::Object, 0, &why)) << why;
+    ASSERT_TRUE(e.duplicate(ItemKind::Object, 0, &why)) << why;
+    ASSERT_TRUE(e.save(&error)) << error;
+    const std::string saved = readText(path);
+    EXPECT_EQ(saved.find("# the ball"), std::string::npos) << saved;
+    EXPECT_EQ(saved.rfind("# my scene\n"), saved.find("# my scene\n")) << saved;  // once
+    EXPECT_NE(saved.find("# my scene\nmaterial "), std::string::npos) << saved;
+    EXPECT_NE(saved.find("\n# the crate\nobject type:box"), std::string::npos) << saved;
+    EXPECT_EQ(saved.rfind("# the crate"), saved.find("# the crate")) << "the copy has no comment";
+    EXPECT_EQ(saved.substr(saved.size() - 14), "# end of file\n") << saved;
+    ASSERT_TRUE(e.save(&error)) << error;
+    EXPECT_EQ(readText(path), saved);  // saving twice gives the same bytes
+}
+
+// Issue 13, item 11: Add always put the new object at (0,2,0), inside a new scene's sphere.
+static float gapBetween(const Object& a, const Object& b) {
+    return glm::length(a.pos - b.pos) - a.radius - b.radius;
+}
+
+TEST(Editor, AddPutsTheObjectWhereTheViewMeetsTheGround) {
+    Editor e = openEditor(writeFile("place.txt", kScene));
+    e.view() = Camera{{1, 4, -4}, {1, 0, 0}, 50};  // looking down at (1,0,0)
+    std::string why;
+    ASSERT_TRUE(e.add(ItemKind::Object, &why)) << why;
+    const Object o = e.scene().objects.back();
+    EXPECT_NEAR(o.pos.x, 1.0f, 1e-5f);
+    EXPECT_EQ(o.pos.y, 0.5f);  // resting on the ground
+    EXPECT_NEAR(o.pos.z, 0.0f, 1e-5f);
+    EXPECT_EQ(e.selection().object(), 2);
+
+    // Again: the spot is taken, so the next one goes beside it, as near as it is clear.
+    ASSERT_TRUE(e.add(ItemKind::Object, &why)) << why;
+    const Object& beside = e.scene().objects.back();
+    EXPECT_EQ(beside.pos.y, 0.5f);
+    EXPECT_GE(gapBetween(beside, o), 0.0f);
+    EXPECT_LT(glm::length(beside.pos - o.pos), 1.6f);
+}
+
+TEST(Editor, AddInANewSceneMissesItsSphere) {
+    Editor e;
+    std::vector<std::string> errors;
+    e.request(Leave::NewScene, "", &errors);
+    e.view() = Camera{{0, 3, -4}, {0, 0.5f, 0}, 50};  // the view centre runs into the sphere's foot
+    e.edit("Sphere down", [](Scene& s) { s.objects[0].pos = {0, 0.5f, 0}; });
+    std::string why;
+    for (int i = 0; i < 5; ++i) ASSERT_TRUE(e.add(ItemKind::Object, &why)) << why;
+    const std::vector<Object>& objects = e.scene().objects;
+    for (size_t a = 0; a < objects.size(); ++a)
+        for (size_t b = a + 1; b < objects.size(); ++b)
+            EXPECT_GE(gapBetween(objects[a], objects[b]), 0.0f) << a << " and " << b;
+}
+
+TEST(Editor, AddLookingAtTheSkyGoesBelowTheTarget) {
+    Editor e = openEditor(writeFile("sky.txt", kScene));
+    e.edit("Floor", [](Scene& s) { s.world.floor = -1; });
+    e.view() = Camera{{0, 1, -6}, {-2, 3, 6}, 50};
+    std::string why;
+    ASSERT_TRUE(e.add(ItemKind::Object, &why)) << why;
+    EXPECT_EQ(e.scene().objects.back().pos, glm::vec3(-2, -0.5f, 6));
 }

@@ -1,6 +1,7 @@
 // test_fields.cpp — typed values are checked against SCENE_FORMAT.md's ranges.
 #include "marchbox/editor/fields.h"
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <limits>
 
@@ -21,7 +22,7 @@ TEST(Fields, RangesFromTheFormat) {
 TEST(Fields, ExclusiveMinimum) {
     std::string why;
     EXPECT_FALSE(validateField(Field::Radius, 0.0, &why));
-    EXPECT_EQ(why, "radius must be > 0");
+    EXPECT_EQ(why, "radius must be above 0 and at most 10000 m");
     EXPECT_TRUE(validateField(Field::Radius, 1e-6, &why));
     EXPECT_FALSE(validateField(Field::Epsilon, 0.0, &why));
     EXPECT_FALSE(validateField(Field::Shininess, 0.0, &why));
@@ -36,8 +37,64 @@ TEST(Fields, NonFiniteIsRefusedEverywhere) {
         EXPECT_FALSE(validateField(Field(f), inf, &why)) << fieldSpec(Field(f)).name;
         EXPECT_FALSE(validateField(Field(f), -inf, &why)) << fieldSpec(Field(f)).name;
     }
-    EXPECT_NE(why.find("finite"), std::string::npos);
+    EXPECT_EQ(why, "blend must be between 0 and 10000 m");
     EXPECT_FALSE(validateField(Field::Position, 1e39, &why));  // finite double, infinite float
+    EXPECT_FALSE(validateField(Field::Radius, nan, &why));
+    EXPECT_EQ(why, "radius must be a number");
+}
+
+// Issue 13, item 5: 1e40 said "must be a finite number" and 1e9 passed without a word. Every
+// field now has a finite range inside the format's, and a refusal names the value kept.
+TEST(Fields, EveryFieldHasAFiniteRangeInsideTheFormats) {
+    std::string why;
+    for (int f = 0; f < int(Field::Count); ++f) {
+        const FieldSpec& s = fieldSpec(Field(f));
+        EXPECT_TRUE(std::isfinite(s.min) && std::isfinite(s.max)) << s.name;
+        EXPECT_FALSE(validateField(Field(f), 1e9, &why)) << s.name;
+        EXPECT_FALSE(validateField(Field(f), -1e9, &why)) << s.name;
+        EXPECT_EQ(why, std::string(s.name) + " must be " + fieldRangeText(Field(f)));
+    }
+}
+
+TEST(Fields, ARefusalKeepsTheOldValueAndSaysSo) {
+    std::string why;
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_FALSE(acceptField(Field::Radius, 1e9, 0.5, &why));
+    EXPECT_EQ(why, "radius must be above 0 and at most 10000 m: 1e+09 refused, 0.5 kept");
+    EXPECT_FALSE(acceptField(Field::Radius, float(1e40), 0.5, &why));  // what ImGui reads
+    EXPECT_EQ(why, "radius must be above 0 and at most 10000 m: inf refused, 0.5 kept");
+    EXPECT_FALSE(acceptField(Field::Radius, -inf, 0.5, &why));
+    EXPECT_FALSE(acceptField(Field::Steps, 64.5, 256, &why));
+    EXPECT_EQ(why, "steps must be a whole number between 1 and 4096: 64.5 refused, 256 kept");
+    EXPECT_TRUE(acceptField(Field::Radius, 2, 0.5, &why));
+    EXPECT_TRUE(acceptField(Field::Restitution, 1, 0.5, &why));
+}
+
+TEST(Fields, AVectorIsCheckedWhereItChanged) {
+    std::string why;
+    // A file may hold positions past the editor's range: the other components stay editable.
+    EXPECT_TRUE(acceptVec(Field::Position, {1, 2e4f, 0}, {0, 2e4f, 0}, &why));
+    EXPECT_FALSE(acceptVec(Field::Position, {1, 3e4f, 0}, {1, 2e4f, 0}, &why));
+    EXPECT_EQ(why, "pos.y must be between -10000 and 10000 m: 30000 refused, 20000 kept");
+    EXPECT_FALSE(acceptVec(Field::ColorChannel, {1, -1, 1}, {1, 1, 1}, &why));
+    EXPECT_EQ(why, "color.g must be between 0 and 100: -1 refused, 1 kept");
+    EXPECT_FALSE(acceptVec(Field::LightDirection, {0, 0, 0}, {0, -1, 0}, &why));
+    EXPECT_EQ(why, "a light direction must not be zero: 0,0,0 refused, 0,-1,0 kept");
+}
+
+TEST(Fields, EveryTooltipGivesTheUnitAndTheRange) {
+    for (int f = 0; f < int(Field::Count); ++f) {
+        const FieldSpec& s = fieldSpec(Field(f));
+        const std::string tip = fieldTooltip(Field(f));
+        EXPECT_NE(tip.find(s.meaning), std::string::npos) << tip;
+        EXPECT_NE(tip.find("Range: " + fieldRangeText(Field(f)) + "."), std::string::npos) << tip;
+        EXPECT_NE(tip.find(*s.unit ? "Unit: " + std::string(s.unit) + "." : "No unit."),
+                  std::string::npos) << tip;
+    }
+    EXPECT_EQ(fieldTooltip(Field::Radius),
+              "Radius of a sphere, torus ring, capsule or cylinder.\n"
+              "Unit: m. Range: above 0 and at most 10000 m.\n"
+              "Drag, or Ctrl+click to type a value.");
 }
 
 TEST(Fields, IntegersMustBeWhole) {

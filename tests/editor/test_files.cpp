@@ -52,3 +52,19 @@ TEST(Files, WatchNoticesRewrites) {
     std::ofstream(dir / "b.glsl") << "two\n";
     EXPECT_TRUE(watch.changed());
 }
+
+// Issue 13, item 9: a new scene's Save As proposed "scenes/untitled.txt", relative to the working
+// folder, which fails outside the source tree.
+TEST(Files, SaveAsProposesAWholePathBesideTheLastFile) {
+    fs::path dir = freshDir("propose");
+    const std::string last = (dir / "sub" / ".." / "mine.txt").string();
+    EXPECT_EQ(proposeSavePath("", last), (dir / "untitled.txt").string());
+    std::ofstream(dir / "untitled.txt") << "\n";
+    std::ofstream(dir / "untitled-2.txt") << "\n";
+    EXPECT_EQ(proposeSavePath("", last), (dir / "untitled-3.txt").string());  // never over a file
+    EXPECT_EQ(proposeSavePath((dir / "a.txt").string(), last), (dir / "a.txt").string());
+    const std::string none = proposeSavePath("", "");
+    EXPECT_TRUE(fs::path(none).is_absolute()) << none;
+    EXPECT_EQ(fs::path(none).parent_path(), fs::current_path());
+    EXPECT_TRUE(fs::path(proposeSavePath("relative/b.txt", "")).is_absolute());
+}

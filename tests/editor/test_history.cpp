@@ -98,13 +98,27 @@ TEST(Document, UndoKeepsTheViewUnlessTheStepMovedIt) {
     EXPECT_EQ(d.scene().camera.fov, 50.0f);
 }
 
-TEST(Document, LiveChangesAreNotDirtyUntilCommitted) {
+// A simulation running since the last save is unsaved work at once: quitting mid-run asks.
+// The camera alone never is, though it is saved with the scene.
+TEST(Document, LiveChangesAreUnsavedAtOnceButTheCameraNever) {
     Document d;
     Scene before = d.scene();
-    d.live().world.floor = 1;
+    d.live().camera.pos = {4, 4, 4};
     EXPECT_FALSE(d.dirty());
+    d.live().world.floor = 1;
+    EXPECT_TRUE(d.dirty());
     d.commit("run", before);
     EXPECT_TRUE(d.dirty());
     d.undo();
     EXPECT_EQ(d.scene().world.floor, 0.0f);
+    EXPECT_FALSE(d.dirty());
+}
+
+TEST(Document, EditsThatComeBackToTheFileLeaveNothingUnsaved) {
+    Document d;
+    d.replace(withGravity(1), "a.txt");
+    d.apply("g", [](Scene& s) { s.world.gravity = 4; });
+    d.apply("g back", [](Scene& s) { s.world.gravity = 1; });
+    EXPECT_EQ(d.history().size(), 2u);
+    EXPECT_FALSE(d.dirty());
 }

@@ -1,4 +1,8 @@
 // marchbox/editor/document.h — the open scene, its file, its undo history and whether it is saved.
+//
+// Unsaved means saving would change what the file says, the camera aside: the camera is written
+// with the scene, but looking around is not an edit. Undoing back to the file, or a simulation
+// Reset to it, leaves nothing unsaved.
 #pragma once
 
 #include "marchbox/editor/history.h"
@@ -16,7 +20,7 @@ class Document {
 public:
     const Scene& scene() const { return scene_; }
     const std::string& path() const { return path_; }   // empty for a scene never saved
-    bool dirty() const { return history_.state() != savedState_; }
+    bool dirty() const;  // the scene differs from its file (from New's scene), camera aside
     const History& history() const { return history_; }
 
     // New or Open: a fresh history, clean.
@@ -47,7 +51,9 @@ private:
     Scene scene_;
     std::string path_;
     History history_;
-    uint64_t savedState_ = 0;
+    mutable Scene saved_;                    // as the file holds it; its camera follows scene_'s
+    mutable uint64_t checkedVersion_ = ~uint64_t(0);
+    mutable bool dirty_ = false;             // as of checkedVersion_
     uint64_t version_ = 0;
 };
 

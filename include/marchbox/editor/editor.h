@@ -29,17 +29,19 @@ public:
     //-------------------------------------------------------------------------
     // New, Open and Exit leave the current scene. With unsaved changes they wait (pendingLeave)
     // until confirmLeave() (after the user saved or chose to discard) or cancelLeave().
-    // Returns false only when an Open carried out now failed; *errors then has FILE:LINE lines
-    // and the open scene is untouched.
+    // An Open reads its file first: one that does not load asks nothing. Returns false only
+    // when that read failed; *errors then has FILE:LINE lines and the open scene is untouched.
     bool request(Leave what, const std::string& path, std::vector<std::string>* errors);
     Leave pendingLeave() const { return pending_; }
     const std::string& pendingPath() const { return pendingPath_; }
-    bool confirmLeave(std::vector<std::string>* errors);
-    void cancelLeave() { pending_ = Leave::None; }
+    void confirmLeave();  // carries out the pending leave; an Open's file was read already
+    void cancelLeave();
     bool quitRequested() const { return quit_; }
 
     bool save(std::string* error);  // to document().path(); fails when the scene has none
     bool saveAs(const std::string& path, std::string* error);
+    // The file last opened or saved, kept through New: where Save As starts a new scene.
+    const std::string& lastFile() const { return lastFile_; }
 
     //-------------------------------------------------------------------------
     // [SECTION] Edits
@@ -50,7 +52,7 @@ public:
     bool undo();
     bool redo();
 
-    bool add(ItemKind k, std::string* why);                    // selects the new item
+    bool add(ItemKind k, std::string* why);  // selects the new item; an object as placeNewObject()
     bool duplicate(ItemKind k, int index, std::string* why);   // selects the copy
     bool remove(ItemKind k, int index, std::string* why);
     void clear(ItemKind k);
@@ -81,8 +83,7 @@ public:
     const Scene& scene() const { return doc_.scene(); }
 
 private:
-    bool leaveNow(Leave what, const std::string& path, std::vector<std::string>* errors);
-    bool open(const std::string& path, std::vector<std::string>* errors);
+    void leaveNow(Leave what, const std::string& path);
     void replace(const Scene& scene, const std::string& path);  // New or Open
     void edited();    // after any change of the scene outside the simulator
 
@@ -91,6 +92,8 @@ private:
     Simulation sim_;
     Leave pending_ = Leave::None;
     std::string pendingPath_;
+    Scene opening_;  // an Open's scene, read before anything was asked
+    std::string lastFile_;
     bool quit_ = false;
     uint32_t kicks_ = 0;  // seeds J: different each press, the same in every run
     uint64_t loggedKey_ = 0;  // the merge key of the edit last told to the event log

@@ -1,4 +1,5 @@
-// marchbox/editor/files.h — the scene files File > Open offers, and noticing files that change.
+// marchbox/editor/files.h — the scene files File > Open offers, the path Save As proposes, and
+// noticing files that change.
 #pragma once
 
 #include <filesystem>
@@ -14,6 +15,12 @@ std::vector<std::string> listSceneFiles(const std::string& currentScene,
                                         const std::string& scenesDir);
 
 bool hasSceneExtension(const std::string& path);  // ".txt", any case
+
+// Where Save As starts: the scene's own file `current`; for a scene without one, "untitled.txt"
+// beside `lastUsed` (the last file opened or saved; the working folder when there is none),
+// numbered "untitled-2.txt", ... past files that exist. Always absolute and normalised, so the
+// dialog shows the whole of where it will write.
+std::string proposeSavePath(const std::string& current, const std::string& lastUsed);
 
 // Polls the modification times of the files directly in one folder (the shaders).
 class FolderWatch {

@@ -27,11 +27,12 @@ Light defaultLight();        // a white point light above and behind the origin
 // object needs a material: in a scene without one, a default material is added first.
 int addItem(Scene& s, ItemKind k, std::string* why);
 
-// Appends a copy of item `index` (objects and point lights moved 1 m along +x so both show);
-// returns the copy's index, or -1 with *why.
+// Appends a copy of item `index` (objects and point lights moved 1 m along +x so both show),
+// without the original's comment lines, which stay with the original; returns the copy's
+// index, or -1 with *why.
 int duplicateItem(Scene& s, ItemKind k, int index, std::string* why);
 
-// Removes item `index`. Deleting a material renumbers the objects' indices; objects that used it
+// Removes item `index`, and the comment lines above it in the file. Deleting a material renumbers the objects' indices; objects that used it
 // take material 0. The last material cannot go while objects remain.
 bool deleteItem(Scene& s, ItemKind k, int index, std::string* why);
 
