@@ -99,7 +99,8 @@ struct Object {
 // starting with '#' after blanks, each ending in '\n'. Materials, lights and objects carry
 // their own `comment` and take it along when they are deleted; these are the others'.
 struct SceneComments {
-    std::string header, camera, world, render;  // above the `scene`, `camera`, ... records
+    std::string camera, world, render;  // above the `camera`, `world`, `render` records; what
+                                        // was above `scene version:1` goes to the next record
     std::string end;                            // below the last record: stays at the end
     bool operator==(const SceneComments&) const = default;
 };

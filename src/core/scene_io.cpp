@@ -77,7 +77,7 @@ bool sameList(const std::vector<R>& a, const std::vector<R>& b) {
 std::string formatScene(const Scene& scene) {
     const SceneComments& c = scene.comments;
     std::string out;
-    writeRecord(out, SceneHeader{}, c.header);
+    writeRecord(out, SceneHeader{});
     writeRecord(out, scene.camera, c.camera);
     writeRecord(out, scene.world, c.world);
     writeRecord(out, scene.render, c.render);

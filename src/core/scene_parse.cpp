@@ -259,7 +259,7 @@ void Parser::record(std::string_view kind, Fields& fields, std::string comment) 
     SceneComments& c = scene.comments;
     if (is<SceneHeader>(kind)) {
         header(fields);
-        c.header = std::move(comment);
+        comment_ = std::move(comment);  // a save starts with `scene version:1`: the next record keeps it
     } else if (is<Camera>(kind)) {
         single(fields, scene.camera);
         c.camera = std::move(comment);

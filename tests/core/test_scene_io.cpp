@@ -527,11 +527,13 @@ TEST(SceneComments, EachRunStaysAboveItsRecordInTheCanonicalOrder) {
     Scene s = parseOk(kCommented);
     std::vector<std::string> r = recordLines(s);  // scene camera world render 2×material light 2×object
     ASSERT_EQ(r.size(), 9u);
+    // A save starts with `scene version:1` (SCENE_FORMAT.md): the lines above it go with the
+    // record that followed it, here the first object.
     EXPECT_EQ(formatScene(s),
-              "# Notes on the whole file\n" + r[0] +
+              r[0] +
               "\n# the camera, last in this file\n" + r[1] + r[2] + r[3] + r[4] +
               "\n# blue\n" + r[5] + r[6] +
-              "# the objects come first here\n" + r[7] +
+              "# Notes on the whole file\n# the objects come first here\n" + r[7] +
               "  # indented, with trailing blanks\n" + r[8] +
               "\n# the end\n");
     EXPECT_EQ(s.objects[1].comment, "  # indented, with trailing blanks\n");
