@@ -54,6 +54,7 @@ struct SolverContext {
     double gravity;                      // m/s² along −y
     double friction;                     // Coulomb coefficient
     double restitution;
+    double rolling;                      // rolling resistance: torque = rolling · radius · normal force
     double h;                            // substep, s
     Softness soft;
 };

@@ -5,7 +5,8 @@
 // [SECTION] PhysicsWorld: one fixed step at a time
 // [SECTION] Driving it: simulate() and the frame accumulator
 //
-// Dynamic spheres (Object::dynamic()) move; every other object, and the ground plane, is a static
+// The scene's World gives gravity, restitution, friction and rolling resistance; PhysicsSettings
+// holds how the method runs. Dynamic spheres (Object::dynamic()) move; every other object, and the ground plane, is a static
 // collider seen through its SDF (marchbox/sdf.h). The state is double precision so that a sphere
 // 1e5 m from the origin still resolves millimetres; the scene keeps floats.
 //
@@ -43,7 +44,6 @@ struct PhysicsSettings {
     double linearSlop = 0.005;          // m, allowed overlap; at most 5 % of the smaller radius
     double restitutionThreshold = 0.5;  // m/s: slower impacts do not bounce (no jitter at rest)
     int restitutionIterations = 4;      // bounce passes: simultaneous impacts tend to Newton's law
-    double rollingResistance = 0.02;    // torque = this · radius · normal force, stops rolling
     bool continuous = true;             // sweep fast spheres against static surfaces
     bool sleep = true;
     double sleepSpeed = 0.05;           // m/s (and rad/s · radius) below which a body may sleep

@@ -26,6 +26,7 @@ Scene projectileScene(glm::vec3 vel);                  // no ground; launched fr
 Scene bounceScene(float height, float restitution);    // dropped from its lowest point at height
 Scene headOnScene(float restitution, float m1, float m2, float v1, float v2);  // along x, no gravity
 Scene slideScene(float speed, float friction);         // resting on the ground, sliding along +x
+Scene rollScene(float speed, float rolling);           // on the ground, rolling without slip along +x
 Scene cradleScene(int count, float speed);             // a touching row along x, and a striker
 Scene stackScene(float massRatio);                     // heavy on light, in a well barely wider
 Scene tunnelScene(float speed, float angleDegrees);    // at a 2 cm plate, angle from its normal

@@ -53,10 +53,11 @@ double headOnError(const PhysicsSettings& s) {
 
 // Position after 2 s of a sphere launched sliding at 5 m/s, μ = 0.3: slides, then rolls at 5/7.
 double slideError(const PhysicsSettings& settings) {
-    PhysicsSettings s = settings;
-    s.rollingResistance = 0.0;
+    const PhysicsSettings& s = settings;
     const double v0 = 5.0, mu = double(0.3f), v = 5.0 / 7.0 * v0, ts = 2.0 * v0 / (7.0 * mu * kG);
-    PhysicsWorld w(slideScene(float(v0), float(mu)), s);
+    Scene scene = slideScene(float(v0), float(mu));
+    scene.world.rolling = 0.0f;  // pure Coulomb friction: rolling resistance would slow it down
+    PhysicsWorld w(scene, s);
     const int steps = int(std::llround(2.0 / s.dt));
     for (int i = 0; i < steps; ++i) w.step();
     const double t = steps * s.dt;

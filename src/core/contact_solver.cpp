@@ -102,7 +102,7 @@ void solveRows(Contact& c, PhysicsBody& a, PhysicsBody& b, const SolverContext& 
     // A speculative contact that stays open carries no friction: skip the rows that would find 0.
     if (idle(c)) return;
     solveFriction(c, a, b, w, m.tangent, ctx.friction);
-    solveRolling(c, a, b, w, m.roll, ctx.settings.rollingResistance);
+    solveRolling(c, a, b, w, m.roll, ctx.rolling);
 }
 
 RowMasses rowMasses(const Contact& c, const Inverse& w) {

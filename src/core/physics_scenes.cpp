@@ -97,6 +97,16 @@ Scene slideScene(float speed, float friction) {
     return s;
 }
 
+Scene rollScene(float speed, float rolling) {
+    Scene s = physicsWorld(9.81f, 0.0f, 0.5f, true);
+    s.world.rolling = rolling;
+    const float r = 0.5f;
+    Object o = dynamicSphere({0, r, 0}, r, 1.0f, {speed, 0, 0});
+    o.spin = {0, 0, -speed / r};  // ω × (−r·y) = v: no slip at the contact
+    s.objects.push_back(o);
+    return s;
+}
+
 Scene cradleScene(int count, float speed) {
     Scene s = physicsWorld(0.0f, 1.0f, 0.0f, false);
     const float r = 0.5f, gap = 0.05f;  // the striker starts 5 cm from the touching row

@@ -21,7 +21,8 @@ struct PhysicsWorld::Impl {
         : statics(scene),
           gravity(scene.world.gravity),
           friction(scene.world.friction),
-          restitution(scene.world.restitution) {}
+          restitution(scene.world.restitution),
+          rolling(scene.world.rolling) {}
 
     struct Order {
         double height;
@@ -37,7 +38,7 @@ struct PhysicsWorld::Impl {
 
     StaticCollider statics;
     Broadphase broadphase;
-    double gravity, friction, restitution;
+    double gravity, friction, restitution, rolling;
     std::vector<Contact> contacts, sorted;
     std::vector<Order> order;
     // Last step's impulses grouped by the contact's first dynamic body (the key's top bits):
@@ -134,7 +135,7 @@ void PhysicsWorld::step() {
     const int iterations = std::max(1, settings_.iterations);
     const double h = settings_.dt / substeps;
     collide();
-    SolverContext ctx{bodies_, w.contacts, settings_, w.gravity, w.friction, w.restitution, h,
+    SolverContext ctx{bodies_, w.contacts, settings_, w.gravity, w.friction, w.restitution, w.rolling, h,
                       makeSoftness(std::min(settings_.contactHertz, 0.25 / h),
                                    settings_.contactDampingRatio, h)};
     prepareContacts(ctx);

@@ -18,6 +18,7 @@ static const FieldSpec kSpecs[] = {
     {"gravity", 0, kInf, false, 0, 30, false, "%.2f"},
     {"restitution", 0, 1, false, 0, 1, false, "%.2f"},
     {"friction", 0, kInf, false, 0, 2, false, "%.2f"},
+    {"rolling", 0, kInf, false, 0, 0.2f, false, "%.3f"},
     {"floor", -kInf, kInf, false, -10, 10, false, "%.2f"},
     {"steps", 1, 4096, false, 16, 1024, true, "%.0f"},
     {"epsilon", 0, kInf, true, 1e-5f, 0.01f, false, "%.5f"},

@@ -66,9 +66,9 @@ TEST(PhysicsStatic, SphereSettlesIntoASubtractedHole) {
     s.objects.push_back(box);
     s.objects.push_back(hole);
     s.objects.push_back(dynamicSphere({0.15f, 2.0f, 0.05f}, 0.2f, 1.0f));
-    PhysicsSettings settings;
-    settings.rollingResistance = 0.2;
-    PhysicsWorld w(s, settings);
+    s.world.rolling = 0.2f;
+    PhysicsWorld w(s);
+    const PhysicsSettings& settings = w.settings();
     for (int i = 0; i < stepsFor(10.0, w.settings()); ++i) {
         w.step();
         // Landed by 1 s. A contact's normal is fixed for a step, in which the ball crosses up
@@ -80,7 +80,7 @@ TEST(PhysicsStatic, SphereSettlesIntoASubtractedHole) {
     const dvec3 p = w.body(0).pos;
     const double slop = std::min(settings.linearSlop, 0.05 * 0.2);  // overlap a rest may keep
     EXPECT_NEAR(glm::length(p - dvec3(0, 1, 0)), 0.3, slop + 1e-3) << "resting on the bowl";
-    EXPECT_LT(std::hypot(p.x, p.z), 0.3 * std::sin(std::atan(settings.rollingResistance)));
+    EXPECT_LT(std::hypot(p.x, p.z), 0.3 * std::sin(std::atan(double(s.world.rolling))));
     EXPECT_FALSE(w.body(0).awake);
 }
 

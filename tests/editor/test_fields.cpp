@@ -16,6 +16,11 @@ TEST(Fields, RangesFromTheFormat) {
     EXPECT_TRUE(validateField(Field::Fov, 179, &why));
     EXPECT_FALSE(validateField(Field::Gravity, -1, &why));
     EXPECT_TRUE(validateField(Field::Mass, 0, &why));
+    EXPECT_TRUE(validateField(Field::Rolling, 0.0, &why));
+    EXPECT_TRUE(validateField(Field::Rolling, 5.0, &why));  // >= 0, no upper bound
+    EXPECT_FALSE(validateField(Field::Rolling, -0.001, &why));
+    EXPECT_EQ(why, "rolling must be >= 0");
+    EXPECT_STREQ(fieldSpec(Field::Rolling).name, "rolling");
 }
 
 TEST(Fields, ExclusiveMinimum) {

@@ -12,7 +12,7 @@ namespace mb {
 
 enum class Field : int {
     // camera, world, render
-    Fov, Gravity, Restitution, Friction, Floor,
+    Fov, Gravity, Restitution, Friction, Rolling, Floor,
     Steps, Epsilon, Shadows, Reflections, Fog, Aa,
     // material
     ColorChannel, Ka, Kd, Ks, Shininess, Reflectivity,
