@@ -59,6 +59,10 @@ struct SolverContext {
     Softness soft;
 };
 
+// Impacts slower than this do not bounce: settings.restitutionThreshold under gravity, where
+// resting contacts meet at the speed gravity gives them in a step; 0 without gravity.
+double bounceThreshold(const SolverContext& ctx);
+
 void prepareContacts(SolverContext& ctx);
 void warmStartContacts(SolverContext& ctx);
 // Contacts in order; they must be sorted bottom-up for shock propagation (see the .cpp).

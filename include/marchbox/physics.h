@@ -11,9 +11,11 @@
 // 1e5 m from the origin still resolves millimetres; the scene keeps floats.
 //
 // One step of dt is split into `substeps` soft steps (Box2D v3's "soft step"):
-//   collide once (speculative contacts, warm started from the last step), then per substep
+//   collide once (speculative contacts, warm started from the last step); resolve the step's
+//   impacts at their times of impact, one after another (marchbox/impacts.h); then per substep
 //   integrate velocities → warm start → solve (soft, with bias) → integrate positions → relax
-//   (rigid, no bias); then restitution, a continuous sweep for fast spheres, and sleep.
+//   (rigid, no bias); then restitution for what the impacts left, the impacts' position
+//   corrections, a continuous sweep for fast spheres, and sleep.
 #pragma once
 
 #include "marchbox/scene.h"
@@ -42,7 +44,10 @@ struct PhysicsSettings {
     double contactDampingRatio = 10;    // heavily over-damped: pushes out, never bounces
     double maxPushSpeed = 3;            // m/s, fastest overlap recovery
     double linearSlop = 0.005;          // m, allowed overlap; at most 5 % of the smaller radius
-    double restitutionThreshold = 0.5;  // m/s: slower impacts do not bounce (no jitter at rest)
+    double restitutionThreshold = 0.5;  // m/s: slower impacts do not bounce (no jitter at rest);
+                                        // without gravity nothing rests, and every impact bounces
+    bool impacts = true;                // bounce at the time of impact, in order (impacts.h)
+    int impactsPerContact = 16;         // at most, per step; the restitution pass takes the rest
     int restitutionIterations = 4;      // bounce passes: simultaneous impacts tend to Newton's law
     bool continuous = true;             // sweep fast spheres against static surfaces
     bool sleep = true;

@@ -53,7 +53,8 @@ void solveNormal(Contact& c, PhysicsBody& a, PhysicsBody& b, const SolverContext
                  double normalMass, bool useBias) {
     const double s = c.separation + glm::dot(b.delta - a.delta, c.normal);
     double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
-    if (s > 0.0) {
+    const bool open = s > 0.0;
+    if (open) {
         bias = s / ctx.h;  // speculative: close at most the gap this substep
     } else if (useBias && s + c.slop < 0.0) {
         bias = std::max(ctx.soft.biasRate * (s + c.slop), -ctx.settings.maxPushSpeed);
@@ -62,7 +63,14 @@ void solveNormal(Contact& c, PhysicsBody& a, PhysicsBody& b, const SolverContext
     }
     const double vn = glm::dot(b.vel - a.vel, c.normal);
     const double impulse = -normalMass * massScale * (vn + bias) - impulseScale * c.normalImpulse;
-    const double total = std::max(c.normalImpulse + impulse, 0.0);
+    double total = std::max(c.normalImpulse + impulse, 0.0);
+    // An open contact in the relax pass may give back impulse (the solve pass's push-out) but
+    // not slow an approach fast enough to bounce: the solve pass before each position update
+    // already keeps it from closing past its gap, and at the end of the step that approach is
+    // the next step's impact, which Impacts resolves at its time (slowed here, it would bounce
+    // lower).
+    if (open && !useBias && ctx.settings.impacts && vn < -bounceThreshold(ctx))
+        total = std::min(total, c.normalImpulse);
     if (total == c.normalImpulse) return;  // an open speculative contact stays open: nothing to do
     applyNormal(a, b, w, (total - c.normalImpulse) * c.normal);
     c.normalImpulse = total;
@@ -128,6 +136,10 @@ Inverse fixingLower(const Contact& c, const PhysicsBody& a, const PhysicsBody& b
 
 }  // namespace
 
+double bounceThreshold(const SolverContext& ctx) {
+    return ctx.gravity > 0.0 ? ctx.settings.restitutionThreshold : 0.0;
+}
+
 Softness makeSoftness(double hertz, double dampingRatio, double h) {
     if (hertz <= 0.0) return {};
     const double omega = 2.0 * M_PI * hertz;
@@ -186,7 +198,7 @@ void solveContacts(SolverContext& ctx, bool useBias) {
 void applyRestitution(SolverContext& ctx) {
     if (ctx.restitution <= 0.0) return;
     for (Contact& c : ctx.contacts) {
-        if (c.relativeVelocity > -ctx.settings.restitutionThreshold || c.maxNormalImpulse <= 0.0)
+        if (c.relativeVelocity >= -bounceThreshold(ctx) || c.maxNormalImpulse <= 0.0)
             continue;
         PhysicsBody& a = ctx.bodies[c.a];
         PhysicsBody& b = ctx.bodies[c.b];

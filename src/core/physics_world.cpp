@@ -3,6 +3,7 @@
 
 #include "marchbox/broadphase.h"
 #include "marchbox/contact_solver.h"
+#include "marchbox/impacts.h"
 #include "marchbox/island.h"
 #include "marchbox/static_collider.h"
 
@@ -38,6 +39,7 @@ struct PhysicsWorld::Impl {
 
     StaticCollider statics;
     Broadphase broadphase;
+    Impacts impacts;
     double gravity, friction, restitution, rolling;
     std::vector<Contact> contacts, sorted;
     std::vector<Order> order;
@@ -138,6 +140,7 @@ void PhysicsWorld::step() {
     SolverContext ctx{bodies_, w.contacts, settings_, w.gravity, w.friction, w.restitution, w.rolling, h,
                       makeSoftness(std::min(settings_.contactHertz, 0.25 / h),
                                    settings_.contactDampingRatio, h)};
+    if (settings_.impacts) w.impacts.resolve(ctx);
     prepareContacts(ctx);
     for (PhysicsBody& b : bodies_) b.delta = dvec3(0.0);
     for (int k = 0; k < substeps; ++k) {
@@ -148,6 +151,7 @@ void PhysicsWorld::step() {
         for (int i = 0; i < iterations; ++i) solveContacts(ctx, false);
     }
     for (int i = 0; i < settings_.restitutionIterations; ++i) applyRestitution(ctx);
+    if (settings_.impacts) w.impacts.correctPositions(bodies_, w.contacts);
     keepImpulses();
     if (settings_.continuous) sweepFast();
     updateSleep(bodies_, w.contacts, settings_, w.scratch, w.islandTime);

@@ -45,34 +45,50 @@ TEST(PhysicsAnalytic, ProjectileFollowsTheParabola) {
     EXPECT_LT(glm::length(w.body(0).spin), 1e-12);
 }
 
-// The contact bounces off the normal velocity v_s it had at the start of the impact step, not
-// the impact speed v_i = sqrt(v_s² + 2·g·s) <= v_s + g·dt. So each bounce keeps between
-// (1 − 2·g·dt/v_i)·e² and e² of the height, and the flight between is exact. The apex is seen
-// at step ends, at most g·(dt/2)²/2 below the true one.
+// Impacts are resolved at their time of impact (marchbox/impacts.h): the flight to the ground
+// is a parabola, the bounce turns the impact speed v into e·v, the flight after is a parabola
+// again, and the step ends where that flight is. So a bounce keeps exactly e² of the height and
+// the apexes are e^(2k)·h to rounding. What is left is how they are seen: the highest step end
+// is at most g·(dt/2)²/2 = 8.5e-5 m below the true apex. Bound: that, plus 1e-9 of rounding
+// (it is about 1e-15 per step), for the first five apexes; the issue asks 1 mm of the third.
 TEST(PhysicsAnalytic, BounceApexesFallAsEToTheTwoN) {
-    const double h0 = 1.0, e = double(0.8f);
-    PhysicsWorld w(bounceScene(float(h0), float(e)));
-    const double r = w.body(0).radius, dt = w.settings().dt;
-    double apex = 0.0, lower = h0, upper = h0, previousVy = 0.0;
+    const double e = double(0.8f);
+    PhysicsWorld w(bounceScene(1.0f, float(e)));
+    const double r = w.body(0).radius, h0 = w.body(0).pos.y - r, dt = w.settings().dt;
+    double apex = 0.0, expected = h0, previousVy = 0.0;
     int bounce = 0;
     for (int i = 0; i < stepsFor(6.0, w.settings()) && bounce < 5; ++i) {
         w.step();
         const PhysicsBody& b = w.body(0);
         apex = std::max(apex, b.pos.y - r);
-        if (previousVy < 0.0 && b.vel.y > 0.0) {  // bounced: the next apex is e² lower
-            const double impact = std::sqrt(2.0 * kG * upper);
-            lower *= e * e * (1.0 - 2.0 * kG * dt / impact);
-            upper *= e * e;
-            apex = 0.0;
-        }
+        if (previousVy < 0.0 && b.vel.y > 0.0) apex = 0.0;  // bounced: a new flight
         if (previousVy > 0.0 && b.vel.y <= 0.0) {
             ++bounce;
-            EXPECT_LE(apex, upper + 1e-9) << "apex " << bounce;
-            EXPECT_GE(apex, lower - kG * dt * dt / 8.0) << "apex " << bounce;
+            expected *= e * e;
+            EXPECT_LE(apex, expected + 1e-9) << "apex " << bounce;
+            EXPECT_GE(apex, expected - kG * dt * dt / 8.0 - 1e-9) << "apex " << bounce;
+            if (bounce == 3) {
+                EXPECT_NEAR(apex, std::pow(e, 6.0) * h0, 1e-3);
+            }
+            std::printf("apex %d: %.9f m, e^%d·h = %.9f m\n", bounce, apex, 2 * bounce, expected);
         }
         previousVy = b.vel.y;
     }
     EXPECT_EQ(bounce, 5);
+}
+
+// A bounce loses (1 − e²) of the normal energy and nothing else: its velocity just after the
+// impact step is the exact flight's, −e·v_impact + g·(time since the impact), to rounding.
+TEST(PhysicsAnalytic, BounceVelocityIsExactAfterTheImpactStep) {
+    const double e = double(0.8f);
+    PhysicsWorld w(bounceScene(1.0f, float(e)));
+    const double r = w.body(0).radius, h0 = w.body(0).pos.y - r, dt = w.settings().dt;
+    const double fall = std::sqrt(2.0 * h0 / kG), impact = kG * fall;  // time and speed of impact
+    const int step = int(std::ceil(fall / dt));  // the step that holds the impact
+    for (int i = 0; i < step; ++i) w.step();
+    const double after = step * dt - fall;
+    EXPECT_NEAR(w.body(0).vel.y, e * impact - kG * after, 1e-9);
+    EXPECT_NEAR(w.body(0).pos.y - r, e * impact * after - 0.5 * kG * after * after, 1e-9);
 }
 
 // One contact between two spheres is solved exactly: the normal row zeroes the approach and the
@@ -155,19 +171,46 @@ TEST(PhysicsAnalytic, RollingZeroKeepsRolling) {
     EXPECT_NEAR(b.pos.x, v0 * 10.0, 1e-6);
 }
 
-// Newton's cradle. The sequential-impulse solver treats the touching row as one simultaneous
-// contact: the relax pass spreads the striker's impulse through the row, and restitution
-// bounces only the contact that was closing before the step (the row's contacts were at rest).
-// It does not reproduce the one-ball-out of a real cradle; it must conserve momentum and may
-// only lose energy.
-TEST(PhysicsAnalytic, NewtonsCradleConservesMomentumAndGainsNoEnergy) {
-    PhysicsWorld w(cradleScene(4, 1.0f));
+// Newton's cradle, e = 1: a striker at 2 m/s into a touching row of four. Impacts are taken one
+// after another (marchbox/impacts.h): the striker's impact gives ball 1 its speed at the instant
+// ball 1 touches ball 2, whose impact is then due at once, and so on down the row. Equal masses
+// exchange velocities, so the last ball leaves at 2 m/s and the rest stop, to rounding (bound
+// 1e-9; the issue asks ≥ 1.96 and ≤ 0.04 m/s).
+TEST(PhysicsAnalytic, NewtonsCradleSendsOutTheLastBall) {
+    const double v = 2.0;
+    PhysicsWorld w(cradleScene(4, float(v)));
     const dvec3 p0 = momentum(w);
     const double e0 = w.kineticEnergy();
     for (int i = 0; i < stepsFor(1.0, w.settings()); ++i) {
         w.step();
         ASSERT_LE(w.kineticEnergy(), e0 * (1.0 + 1e-9)) << "step " << i;
     }
+    const int last = w.bodyCount() - 1;
+    EXPECT_NEAR(w.body(last).vel.x, v, 1e-9);
+    EXPECT_GE(w.body(last).vel.x, 1.96);
+    for (int i = 0; i < last; ++i) {
+        EXPECT_LT(glm::length(w.body(i).vel), 1e-9) << "ball " << i;
+        EXPECT_LE(glm::length(w.body(i).vel), 0.04) << "ball " << i;
+    }
     EXPECT_LT(glm::length(momentum(w) - p0), 1e-9);
-    for (int i = 0; i < w.bodyCount(); ++i) std::printf("ball %d: v = %.6f\n", i, w.body(i).vel.x);
+    EXPECT_NEAR(w.kineticEnergy(), e0, 1e-9 * e0);
+    for (int i = 0; i < w.bodyCount(); ++i) std::printf("ball %d: v = %.9f\n", i, w.body(i).vel.x);
+}
+
+// Two strikers touching each other: the front one's impact runs down the row and sends out the
+// last ball, then the back one's sends out the one before it, which follows the first at the
+// same speed. Two in, two out, to rounding.
+TEST(PhysicsAnalytic, NewtonsCradleTwoInTwoOut) {
+    const double v = 1.5;
+    Scene s = cradleScene(3, float(v));
+    Object second = s.objects[0];
+    second.pos.x -= 2.0f * second.radius;  // touching the first striker, at the same speed
+    s.objects.insert(s.objects.begin(), second);
+    PhysicsWorld w(s);
+    for (int i = 0; i < stepsFor(1.0, w.settings()); ++i) w.step();
+    const int n = w.bodyCount();
+    for (int i = 0; i < n; ++i) {
+        const double expected = i >= n - 2 ? v : 0.0;
+        EXPECT_NEAR(w.body(i).vel.x, expected, 1e-9) << "ball " << i;
+    }
 }
