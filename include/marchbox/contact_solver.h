@@ -31,6 +31,9 @@ struct Contact {
     RowMasses shockMass;                 // with the lower body held fixed (shock propagation)
     bool shock = false;                  // the relax pass holds the lower body fixed
     double rollRadius = 0.0;             // lever of rolling resistance
+    bool curved = false;                 // a static surface that curves: followed every substep
+    double curve = 0.0;                  // this substep's bend of it (StaticCollider::bend), m
+    double shift = 0.0;                  // added to separation for the impacts (impacts.h), m
     double relativeVelocity = 0.0;       // normal velocity at the start of the step, for bounce
     double normalImpulse = 0.0;          // accumulated per substep, warm started across steps
     double maxNormalImpulse = 0.0;       // largest this step: did it touch?

@@ -17,7 +17,8 @@
 // integrate the flight after the impact) and its position is corrected by −Δv·t* at the end:
 //   x(dt) = x0 + v0·t* + ½·g·t*² + (v0 + g·t* + Δv)·(dt − t*) + ½·g·(dt − t*)²
 //         = x0 + (v0 + Δv)·dt + ½·g·dt² − Δv·t*,
-// exactly where free flight with a bounce at t* ends.
+// exactly where free flight with a bounce at t* ends. Each contact's separation is shifted to
+// match meanwhile (Contact::shift), so that the solver sees where the bodies really go.
 //
 // Only impacts faster than bounceThreshold() are events; slower ones are the solver's (they
 // do not bounce). A chain that will not end (a sphere pinned between two others, e = 1) stops at
@@ -37,9 +38,11 @@ public:
     // Resolves this step's impacts in ctx.contacts (separations at the start of the step) and
     // changes the bodies' velocities and spins. Returns the number of impacts.
     int resolve(SolverContext& ctx);
-    // Adds the position corrections of the last resolve() to the bodies' pos and delta, and
-    // gives the contacts back their separations at the start of the step.
+    // Adds the position corrections of the last resolve() to the bodies' pos and delta, and takes
+    // Contact::shift back out of the contacts' separations.
     void correctPositions(std::vector<PhysicsBody>& bodies, std::vector<Contact>& contacts) const;
+    // A body's position correction: where it truly is, less where the substeps have it.
+    glm::dvec3 offset(int body) const;
 
 private:
     struct Event {
@@ -55,7 +58,6 @@ private:
 
     std::vector<glm::dvec3> offset_;     // per body: position correction, −Σ Δv·t*
     std::vector<glm::dvec3> accel_;      // per body: free-flight acceleration this step
-    std::vector<double> separation_;     // per contact: at the start of the step
     std::vector<std::uint32_t> stamp_;   // per contact
     std::vector<int> count_;             // per contact: impacts this step
     std::vector<Event> heap_;            // min-heap on (time, contact)

@@ -15,7 +15,9 @@
 //   impacts at their times of impact, one after another (marchbox/impacts.h); then per substep
 //   integrate velocities → warm start → solve (soft, with bias) → integrate positions → relax
 //   (rigid, no bias); then restitution for what the impacts left, the impacts' position
-//   corrections, a continuous sweep for fast spheres, and sleep.
+//   corrections, a continuous sweep for fast spheres, and sleep. A contact with a curved static
+//   surface is followed every substep, RATTLE's way: the solve pass aims the substep's path at
+//   the surface, and the relax pass works along the normal where the path ended.
 #pragma once
 
 #include "marchbox/scene.h"
@@ -110,6 +112,8 @@ private:
     void keepImpulses();             // for the next step's warm start
     void integrateVelocities(double h);
     void integratePositions(double h);
+    void bendCurved(double h);       // curved static surfaces: how they bend along this substep
+    void followCurved();             // ... and their normals where the bodies are now
     void sweepFast();                // continuous collision against static surfaces
     void updateStats();
     PhysicsSettings settings_;

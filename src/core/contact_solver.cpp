@@ -61,6 +61,10 @@ void solveNormal(Contact& c, PhysicsBody& a, PhysicsBody& b, const SolverContext
         massScale = ctx.soft.massScale;
         impulseScale = ctx.soft.impulseScale;
     }
+    // A curved surface bends away from the straight path a substep takes along it; the solve pass
+    // aims the path's end at the surface (RATTLE's position step), the relax pass then works
+    // along the normal found there (its velocity step). Exact for a circle: speed is kept.
+    if (useBias) bias += c.curve / ctx.h;
     const double vn = glm::dot(b.vel - a.vel, c.normal);
     const double impulse = -normalMass * massScale * (vn + bias) - impulseScale * c.normalImpulse;
     double total = std::max(c.normalImpulse + impulse, 0.0);

@@ -66,14 +66,15 @@ int Impacts::resolve(SolverContext& ctx) {
 // flight, run backwards, can lie inside what the body hit; a contact the impacts opened is not
 // made to overlap more than it did.
 void Impacts::shiftSeparations(std::vector<Contact>& contacts) {
-    separation_.resize(contacts.size());
-    for (size_t i = 0; i < contacts.size(); ++i) {
-        Contact& c = contacts[i];
-        separation_[i] = c.separation;
+    for (Contact& c : contacts) {
         const double moved = c.separation + glm::dot(c.normal, offset_[size_t(c.b)] - offset_[size_t(c.a)]);
-        c.separation = std::max(moved, std::min(c.separation, 0.0));
+        const double shifted = std::max(moved, std::min(c.separation, 0.0));
+        c.shift = shifted - c.separation;
+        c.separation = shifted;
     }
 }
+
+glm::dvec3 Impacts::offset(int body) const { return any_ ? offset_[size_t(body)] : glm::dvec3(0.0); }
 
 // In free flight a contact's separation is a parabola in t:
 //   s(t) = s0 + n·(Δoffset + Δv·t + ½·Δa·t²),
@@ -146,7 +147,10 @@ void Impacts::linkBodies(const SolverContext& ctx) {
 
 void Impacts::correctPositions(std::vector<PhysicsBody>& bodies, std::vector<Contact>& contacts) const {
     if (!any_) return;
-    for (size_t i = 0; i < contacts.size(); ++i) contacts[i].separation = separation_[i];
+    for (Contact& c : contacts) {
+        c.separation -= c.shift;
+        c.shift = 0.0;
+    }
     for (size_t i = 0; i + 1 < bodies.size(); ++i) {
         bodies[i].pos += offset_[i];
         bodies[i].delta += offset_[i];

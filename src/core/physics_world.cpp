@@ -42,6 +42,7 @@ struct PhysicsWorld::Impl {
     Impacts impacts;
     double gravity, friction, restitution, rolling;
     std::vector<Contact> contacts, sorted;
+    std::vector<int> curved;  // contacts on curved static surfaces, followed every substep
     std::vector<Order> order;
     // Last step's impulses grouped by the contact's first dynamic body (the key's top bits):
     // body i's are warm[warmBegin[i] .. warmBegin[i + 1]), a handful, searched linearly.
@@ -145,9 +146,11 @@ void PhysicsWorld::step() {
     for (PhysicsBody& b : bodies_) b.delta = dvec3(0.0);
     for (int k = 0; k < substeps; ++k) {
         integrateVelocities(h);
+        bendCurved(h);
         warmStartContacts(ctx);
         for (int i = 0; i < iterations; ++i) solveContacts(ctx, true);
         integratePositions(h);
+        followCurved();
         for (int i = 0; i < iterations; ++i) solveContacts(ctx, false);
     }
     for (int i = 0; i < settings_.restitutionIterations; ++i) applyRestitution(ctx);
@@ -220,6 +223,38 @@ void PhysicsWorld::orderAndWarmStart() {
         }
     }
     w.contacts.swap(w.sorted);
+    w.curved.clear();
+    for (size_t i = 0; i < w.contacts.size(); ++i)
+        if (w.contacts[i].curved) w.curved.push_back(int(i));
+}
+
+// The bend of each curved surface along the move the body would make this substep at its
+// velocity now, for the solve pass (Contact::curve). Where the impacts moved a body, its true
+// position is its substep position plus the impacts' correction.
+void PhysicsWorld::bendCurved(double h) {
+    Impl& w = *impl_;
+    for (int i : w.curved) {
+        Contact& c = w.contacts[size_t(i)];
+        const PhysicsBody& b = bodies_[c.b];
+        c.curve = w.statics.bend(c.feature, b.pos + w.impacts.offset(c.b), c.normal, b.vel * h);
+    }
+}
+
+// Each curved surface's normal and separation where the body is now, for the relax pass and the
+// next substep. Friction carried over turns into the new tangent plane.
+void PhysicsWorld::followCurved() {
+    Impl& w = *impl_;
+    for (int i : w.curved) {
+        Contact& c = w.contacts[size_t(i)];
+        const PhysicsBody& b = bodies_[c.b];
+        const dvec3 offset = w.impacts.offset(c.b);
+        const StaticHit hit = w.statics.hit(c.feature, b.pos + offset, b.radius);
+        c.normal = hit.normal;
+        c.separation = hit.separation - glm::dot(c.normal, b.delta);
+        c.shift = glm::dot(c.normal, offset);
+        c.curve = 0.0;
+        c.tangentImpulse -= glm::dot(c.tangentImpulse, c.normal) * c.normal;
+    }
 }
 
 // A counting sort by first body: linear, where a sort by key was O(n log n) with cache misses.
@@ -242,7 +277,14 @@ void PhysicsWorld::collideStatic(int body) {
     const PhysicsBody& b = bodies_[body];
     w.statics.query(b.pos, b.radius, w.margins[body], w.hits);
     for (const StaticHit& hit : w.hits) {
+        // A surface that bends by more than its SDF's noise over this step's move is followed
+        // substep by substep (bendCurved, followCurved); flat faces and the ground keep the
+        // normal of the step's start, as a plane does.
+        const dvec3 move = b.vel * settings_.dt;
+        const bool curved = hit.feature > 0 && std::abs(w.statics.bend(hit.feature, b.pos, hit.normal, move)) >
+                                                   w.statics.bendNoise(hit.feature, glm::length(move));
         Contact c;
+        c.curved = curved;
         c.a = bodyCount();
         c.b = body;
         c.feature = hit.feature;

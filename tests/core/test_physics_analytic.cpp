@@ -130,6 +130,23 @@ TEST(PhysicsAnalytic, SlideTurnsIntoRollingAtFiveSevenths) {
     EXPECT_NEAR(b.pos.y, b.radius, 1e-9);
 }
 
+// A ball spinning in place at ω0 on the ground: friction at the contact point changes no angular
+// momentum about it, I·ω0 = I·ω + m·v·r, and once it rolls ω = v/r: v = 2/7·ω0·r. As for the
+// slide above, the friction row reaches zero slip within a substep once the clamp releases:
+// rounding only (the issue asks 2 %). Rolling resistance off: it would take angular momentum.
+TEST(PhysicsAnalytic, SpinInPlaceTurnsIntoRollingAtTwoSevenths) {
+    const double w0 = 10.0;
+    Scene scene = spinScene(float(w0), 0.3f);
+    scene.world.rolling = 0.0f;
+    PhysicsWorld w(scene);
+    for (int i = 0; i < stepsFor(3.0, w.settings()); ++i) w.step();
+    const PhysicsBody& b = w.body(0);
+    const double v = 2.0 / 7.0 * w0 * b.radius;
+    EXPECT_NEAR(b.vel.x, v, 1e-9 * v);
+    EXPECT_NEAR(b.vel.x, v, 0.02 * v);
+    EXPECT_NEAR(b.spin.z * b.radius, -v, 1e-9 * v);
+}
+
 // Rolling resistance (SCENE_FORMAT.md `rolling` = c): a torque c·r·N against the roll. Rolling
 // without slipping, m·a = −F and I·a/r = F·r − c·r·N with I = 2/5·m·r², N = m·g give a constant
 // deceleration a = 5/7·c·g. The solver applies c·r·(normal impulse) per substep, so the
