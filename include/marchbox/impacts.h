@@ -20,7 +20,9 @@
 // exactly where free flight with a bounce at t* ends. Each contact's separation is shifted to
 // match meanwhile (Contact::shift), so that the solver sees where the bodies really go.
 //
-// Only impacts faster than bounceThreshold() are events; slower ones are the solver's (they
+// Contacts that bore load in the last step (warm started with a normal impulse: a ball resting
+// in a pile) are left to the solver, which shares a blow among them at once, and to the
+// restitution pass. Only impacts faster than bounceThreshold() are events; slower ones are the solver's (they
 // do not bounce). A chain that will not end (a sphere pinned between two others, e = 1) stops at
 // maxImpacts per contact; the solver and the restitution pass take what is left.
 #pragma once
