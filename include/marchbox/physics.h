@@ -50,6 +50,7 @@ struct PhysicsSettings {
                                         // without gravity nothing rests, and every impact bounces
     bool impacts = true;                // bounce at the time of impact, in order (impacts.h)
     int impactsPerContact = 16;         // at most, per step; the restitution pass takes the rest
+    bool followCurves = true;           // curved static surfaces followed every substep (RATTLE)
     int restitutionIterations = 4;      // bounce passes: simultaneous impacts tend to Newton's law
     bool continuous = true;             // sweep fast spheres against static surfaces
     bool sleep = true;

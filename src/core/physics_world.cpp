@@ -281,10 +281,10 @@ void PhysicsWorld::collideStatic(int body) {
         // substep by substep (bendCurved, followCurved); flat faces and the ground keep the
         // normal of the step's start, as a plane does.
         const dvec3 move = b.vel * settings_.dt;
-        const bool curved = hit.feature > 0 && std::abs(w.statics.bend(hit.feature, b.pos, hit.normal, move)) >
-                                                   w.statics.bendNoise(hit.feature, glm::length(move));
         Contact c;
-        c.curved = curved;
+        c.curved = settings_.followCurves && hit.feature > 0 &&
+                   std::abs(w.statics.bend(hit.feature, b.pos, hit.normal, move)) >
+                       w.statics.bendNoise(hit.feature, glm::length(move));
         c.a = bodyCount();
         c.b = body;
         c.feature = hit.feature;
