@@ -31,6 +31,9 @@ struct Contact {
     RowMasses shockMass;                 // with the lower body held fixed (shock propagation)
     bool shock = false;                  // the relax pass holds the lower body fixed
     double rollRadius = 0.0;             // lever of rolling resistance
+    bool curved = false;                 // a static surface that curves: followed every substep
+    double curve = 0.0;                  // this substep's bend of it (StaticCollider::bend), m
+    double shift = 0.0;                  // added to separation for the impacts (impacts.h), m
     double relativeVelocity = 0.0;       // normal velocity at the start of the step, for bounce
     double normalImpulse = 0.0;          // accumulated per substep, warm started across steps
     double maxNormalImpulse = 0.0;       // largest this step: did it touch?
@@ -54,9 +57,14 @@ struct SolverContext {
     double gravity;                      // m/s² along −y
     double friction;                     // Coulomb coefficient
     double restitution;
+    double rolling;                      // rolling resistance: torque = rolling · radius · normal force
     double h;                            // substep, s
     Softness soft;
 };
+
+// Impacts slower than this do not bounce: settings.restitutionThreshold under gravity, where
+// resting contacts meet at the speed gravity gives them in a step; 0 without gravity.
+double bounceThreshold(const SolverContext& ctx);
 
 void prepareContacts(SolverContext& ctx);
 void warmStartContacts(SolverContext& ctx);

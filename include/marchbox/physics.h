@@ -5,14 +5,19 @@
 // [SECTION] PhysicsWorld: one fixed step at a time
 // [SECTION] Driving it: simulate() and the frame accumulator
 //
-// Dynamic spheres (Object::dynamic()) move; every other object, and the ground plane, is a static
+// The scene's World gives gravity, restitution, friction and rolling resistance; PhysicsSettings
+// holds how the method runs. Dynamic spheres (Object::dynamic()) move; every other object, and the ground plane, is a static
 // collider seen through its SDF (marchbox/sdf.h). The state is double precision so that a sphere
 // 1e5 m from the origin still resolves millimetres; the scene keeps floats.
 //
 // One step of dt is split into `substeps` soft steps (Box2D v3's "soft step"):
-//   collide once (speculative contacts, warm started from the last step), then per substep
+//   collide once (speculative contacts, warm started from the last step); resolve the step's
+//   impacts at their times of impact, one after another (marchbox/impacts.h); then per substep
 //   integrate velocities → warm start → solve (soft, with bias) → integrate positions → relax
-//   (rigid, no bias); then restitution, a continuous sweep for fast spheres, and sleep.
+//   (rigid, no bias); then restitution for what the impacts left, the impacts' position
+//   corrections, a continuous sweep for fast spheres, and sleep. A contact with a curved static
+//   surface is followed every substep, RATTLE's way: the solve pass aims the substep's path at
+//   the surface, and the relax pass works along the normal where the path ended.
 #pragma once
 
 #include "marchbox/scene.h"
@@ -41,9 +46,12 @@ struct PhysicsSettings {
     double contactDampingRatio = 10;    // heavily over-damped: pushes out, never bounces
     double maxPushSpeed = 3;            // m/s, fastest overlap recovery
     double linearSlop = 0.005;          // m, allowed overlap; at most 5 % of the smaller radius
-    double restitutionThreshold = 0.5;  // m/s: slower impacts do not bounce (no jitter at rest)
+    double restitutionThreshold = 0.5;  // m/s: slower impacts do not bounce (no jitter at rest);
+                                        // without gravity nothing rests, and every impact bounces
+    bool impacts = true;                // bounce at the time of impact, in order (impacts.h)
+    int impactsPerContact = 16;         // at most, per step; the restitution pass takes the rest
+    bool followCurves = true;           // curved static surfaces followed every substep (RATTLE)
     int restitutionIterations = 4;      // bounce passes: simultaneous impacts tend to Newton's law
-    double rollingResistance = 0.02;    // torque = this · radius · normal force, stops rolling
     bool continuous = true;             // sweep fast spheres against static surfaces
     bool sleep = true;
     double sleepSpeed = 0.05;           // m/s (and rad/s · radius) below which a body may sleep
@@ -105,6 +113,8 @@ private:
     void keepImpulses();             // for the next step's warm start
     void integrateVelocities(double h);
     void integratePositions(double h);
+    void bendCurved(double h);       // curved static surfaces: how they bend along this substep
+    void followCurved();             // ... and their normals where the bodies are now
     void sweepFast();                // continuous collision against static surfaces
     void updateStats();
     PhysicsSettings settings_;

@@ -39,6 +39,7 @@ struct World {
     float gravity = 9.81f;      // m/s² along -y, >= 0
     float restitution = 0.8f;   // 0..1
     float friction = 0.3f;      // Coulomb coefficient, >= 0
+    float rolling = 0.02f;      // rolling resistance: torque = rolling · radius · normal force, >= 0
     float floor = 0.0f;         // height of the ground plane
     bool ground = true;         // false removes the ground plane
 };

@@ -32,6 +32,17 @@ public:
     // Every surface within `reach` of the sphere's surface.
     void query(const glm::dvec3& centre, double radius, double reach, std::vector<StaticHit>& out);
 
+    // One surface (StaticHit::feature, not the ground) seen from a sphere at `centre`.
+    StaticHit hit(int feature, const glm::dvec3& centre, double radius);
+
+    // How far a sphere at `centre` moving by `move` ends from surface `feature`, less the linear
+    // guess s + n·move from hit(): the surface's curvature along the move, 0 on a flat face,
+    // < 0 where the surface curves towards the sphere (a bowl). For contacts that follow a curve.
+    double bend(int feature, const glm::dvec3& centre, const glm::dvec3& normal, const glm::dvec3& move);
+    // The largest bend() that float noise alone gives over a move of length `move`: the normal's
+    // noise times the move, and the distances' rounding at the size of the group's objects.
+    double bendNoise(int feature, double move) const;
+
     // How far the centre may travel from `from` along unit `dir`, up to `length`, before it comes
     // within `radius` of a static surface (conservative advancement on the SDF).
     double cast(const glm::dvec3& from, const glm::dvec3& dir, double length, double radius);
@@ -41,12 +52,14 @@ public:
 private:
     struct Group {
         int first, last;       // objects [first, last) of statics_
+        double size = 0.0;     // largest bounding radius of its objects, m
     };
     double lowerBound(const Group& g, const glm::dvec3& p) const;  // <= distance to the group
     void localise(const Group& g, const glm::dvec3& origin, bool append);
     // Every group within `reach` of `centre`, moved to `origin`, in chain order.
     void localiseNear(const glm::dvec3& origin, const glm::dvec3& centre, double reach);
     double groundDistance(const glm::dvec3& p) const;
+    StaticHit localHit(int group, double radius);  // of the group localised at the centre
 
     std::vector<SdfObject> statics_;
     std::vector<Group> groups_;

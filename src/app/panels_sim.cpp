@@ -24,6 +24,7 @@ static void worldFields(UiContext& c) {
     fieldFloat("gravity", Field::Gravity, &w.gravity, e);
     fieldFloat("restitution", Field::Restitution, &w.restitution, e);
     fieldFloat("friction", Field::Friction, &w.friction, e);
+    fieldFloat("rolling", Field::Rolling, &w.rolling, e);
     fieldFloat("floor", Field::Floor, &w.floor, e);
     fieldFlag("ground", &w.ground, e, "The checkered ground plane at the floor height; off removes it.");
     if (e.changed) c.editor.edit("Edit world", [&](Scene& s) { s.world = w; }, e.key);

@@ -96,7 +96,10 @@ int runPhysicsReport(const std::string& repoRoot) {
        << "## Work precision\n\nEach analytic case runs under every step size (4 substeps, 1 iteration), "
           "every substep count and iteration count (at dt = 1/120), and both integrators: "
           "*exact gravity* (the default, x += v·h − ½·g·h² in free flight) and *symplectic Euler* "
-          "(Box2D's). Defaults: dt = 1/120 s, 4 substeps, 1 iteration. Errors of 0 are drawn at 1e-16.\n\n";
+          "(Box2D's). Defaults: dt = 1/120 s, 4 substeps, 1 iteration. Errors of 0 are drawn at 1e-16. "
+          "The *old* series is the method before impacts were resolved at their time of impact "
+          "(src/core/impacts.cpp) and curved static surfaces followed every substep: Box2D's "
+          "end-of-step restitution and each contact's normal fixed for the step.\n\n";
     std::cerr << "physics report: work precision\n";
     for (const AnalyticCase& c : analyticCases()) md << workPrecision(c, docs);
     std::cerr << "physics report: stiff and extreme suite\n";

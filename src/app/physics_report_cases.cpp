@@ -53,14 +53,61 @@ double headOnError(const PhysicsSettings& s) {
 
 // Position after 2 s of a sphere launched sliding at 5 m/s, μ = 0.3: slides, then rolls at 5/7.
 double slideError(const PhysicsSettings& settings) {
-    PhysicsSettings s = settings;
-    s.rollingResistance = 0.0;
+    const PhysicsSettings& s = settings;
     const double v0 = 5.0, mu = double(0.3f), v = 5.0 / 7.0 * v0, ts = 2.0 * v0 / (7.0 * mu * kG);
-    PhysicsWorld w(slideScene(float(v0), float(mu)), s);
+    Scene scene = slideScene(float(v0), float(mu));
+    scene.world.rolling = 0.0f;  // pure Coulomb friction: rolling resistance would slow it down
+    PhysicsWorld w(scene, s);
     const int steps = int(std::llround(2.0 / s.dt));
     for (int i = 0; i < steps; ++i) w.step();
     const double t = steps * s.dt;
     return std::abs(w.body(0).pos.x - (v0 * ts - 0.5 * mu * kG * ts * ts + v * (t - ts)));
+}
+
+// Kinetic energy of 64 elastic, frictionless spheres in a closed box after 30 s, against the start.
+double gasError(const PhysicsSettings& s) {
+    PhysicsWorld w(gasScene(64, 3), s);
+    const double e0 = w.kineticEnergy();
+    for (int i = 0; i < int(std::llround(30.0 / s.dt)); ++i) w.step();
+    return std::abs(w.kineticEnergy() / e0 - 1.0);
+}
+
+// A striker at 2 m/s into a touching row of four, e = 1: the last ball leaves at 2 m/s, the rest stop.
+double cradleError(const PhysicsSettings& s) {
+    const double v = 2.0;
+    PhysicsWorld w(cradleScene(4, float(v)), s);
+    for (int i = 0; i < int(std::llround(1.0 / s.dt)); ++i) w.step();
+    const int last = w.bodyCount() - 1;
+    double error = std::abs(w.body(last).vel.x - v);
+    for (int i = 0; i < last; ++i) error = std::max(error, glm::length(w.body(i).vel));
+    return error;
+}
+
+// Largest |E − E0| over 10 periods of a frictionless ball in a bowl, against its swing energy.
+double bowlError(const PhysicsSettings& s) {
+    const float bowl = 1.5f, ball = 0.2f;
+    PhysicsWorld w(bowlScene(bowl, ball, 20.0f, 0.0f), s);
+    const double rho = double(bowl) - double(ball), e0 = w.kineticEnergy() + w.potentialEnergy();
+    const double swing = e0 - kG * (double(bowlCentre(bowl).y) - rho) / w.body(0).invMass;
+    double drift = 0.0;
+    for (int i = 0; i < int(std::llround(10.0 * 2.0 * M_PI * std::sqrt(rho / kG) / s.dt)); ++i) {
+        w.step();
+        drift = std::max(drift, std::abs(w.kineticEnergy() + w.potentialEnergy() - e0));
+    }
+    return drift / swing;
+}
+
+// Acceleration down a tilted plank from the distance covered in 1 s, relative to closed form.
+double rampError(const PhysicsSettings& s, float degrees, float mu, float rolling, bool rolls) {
+    PhysicsWorld w(rampScene(degrees, mu, rolling), s);
+    const double theta = double(degrees) * M_PI / 180.0;
+    const glm::dvec3 down(-std::cos(theta), -std::sin(theta), 0.0), start = w.body(0).pos;
+    const double a = rolls ? 5.0 / 7.0 * kG * (std::sin(theta) - double(rolling) * std::cos(theta))
+                           : kG * (std::sin(theta) - double(mu) * std::cos(theta));
+    const int steps = int(std::llround(1.0 / s.dt));
+    for (int i = 0; i < steps; ++i) w.step();
+    const double t = steps * s.dt;
+    return std::abs(2.0 * glm::dot(w.body(0).pos - start, down) / (t * t) / a - 1.0);
 }
 
 }  // namespace
@@ -69,7 +116,16 @@ std::vector<AnalyticCase> analyticCases() {
     return {{"Free fall", "|y − exact| after 2 s, m", 2.0, freeFallError},
             {"Bounce", "|third apex − e⁶·h|, m (h = 1 m, e = 0.8)", 3.0, bounceError},
             {"Head-on collision", "max |v − exact| after impact, m/s (e = 0.5, 1:3)", 1.0, headOnError},
-            {"Slide to roll", "|x − exact| after 2 s, m (v0 = 5 m/s, μ = 0.3)", 2.0, slideError}};
+            {"Slide to roll", "|x − exact| after 2 s, m (v0 = 5 m/s, μ = 0.3)", 2.0, slideError},
+            {"Elastic gas", "|KE(30 s)/KE(0) − 1| of 64 spheres in a box (e = 1, μ = 0)", 30.0, gasError},
+            {"Newton's cradle", "max |v − exact| after 1 s, m/s (striker at 2 m/s, row of 4, e = 1)", 1.0,
+             cradleError},
+            {"Bowl", "max |E − E0| / swing energy over 10 periods (R = 1.5 m, r = 0.2 m, 20°, μ = 0)", 23.0,
+             bowlError},
+            {"Ramp roll", "|a/(5/7·g·(sin θ − c·cos θ)) − 1| from the distance in 1 s (30°, c = 0.1)", 1.0,
+             [](const PhysicsSettings& s) { return rampError(s, 30.0f, 0.5f, 0.1f, true); }},
+            {"Ramp slide", "|a/(g·(sin θ − μ·cos θ)) − 1| from the distance in 1 s (30°, μ = 0.1)", 1.0,
+             [](const PhysicsSettings& s) { return rampError(s, 30.0f, 0.1f, 0.02f, false); }}};
 }
 
 std::vector<Variant> reportVariants() {
@@ -92,6 +148,14 @@ std::vector<Variant> reportVariants() {
         PhysicsSettings s;
         s.iterations = iterations;
         out.push_back({"iterations", std::to_string(iterations) + " iterations", s});
+    }
+    // The method before impacts and curve following, at the default step, beside the new one.
+    for (int rate : rates) {
+        PhysicsSettings s;
+        s.dt = 1.0 / rate;
+        s.impacts = false;
+        s.followCurves = false;
+        out.push_back({"dt (old: end-of-step bounce, step normals)", "dt = 1/" + std::to_string(rate), s});
     }
     return out;
 }

@@ -53,16 +53,28 @@ void solveNormal(Contact& c, PhysicsBody& a, PhysicsBody& b, const SolverContext
                  double normalMass, bool useBias) {
     const double s = c.separation + glm::dot(b.delta - a.delta, c.normal);
     double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
-    if (s > 0.0) {
+    const bool open = s > 0.0;
+    if (open) {
         bias = s / ctx.h;  // speculative: close at most the gap this substep
     } else if (useBias && s + c.slop < 0.0) {
         bias = std::max(ctx.soft.biasRate * (s + c.slop), -ctx.settings.maxPushSpeed);
         massScale = ctx.soft.massScale;
         impulseScale = ctx.soft.impulseScale;
     }
+    // A curved surface bends away from the straight path a substep takes along it; the solve pass
+    // aims the path's end at the surface (RATTLE's position step), the relax pass then works
+    // along the normal found there (its velocity step). Exact for a circle: speed is kept.
+    if (useBias) bias += c.curve / ctx.h;
     const double vn = glm::dot(b.vel - a.vel, c.normal);
     const double impulse = -normalMass * massScale * (vn + bias) - impulseScale * c.normalImpulse;
-    const double total = std::max(c.normalImpulse + impulse, 0.0);
+    double total = std::max(c.normalImpulse + impulse, 0.0);
+    // An open contact in the relax pass may give back impulse (the solve pass's push-out) but
+    // not slow an approach fast enough to bounce: the solve pass before each position update
+    // already keeps it from closing past its gap, and at the end of the step that approach is
+    // the next step's impact, which Impacts resolves at its time (slowed here, it would bounce
+    // lower).
+    if (open && !useBias && ctx.settings.impacts && vn < -bounceThreshold(ctx))
+        total = std::min(total, c.normalImpulse);
     if (total == c.normalImpulse) return;  // an open speculative contact stays open: nothing to do
     applyNormal(a, b, w, (total - c.normalImpulse) * c.normal);
     c.normalImpulse = total;
@@ -102,7 +114,7 @@ void solveRows(Contact& c, PhysicsBody& a, PhysicsBody& b, const SolverContext& 
     // A speculative contact that stays open carries no friction: skip the rows that would find 0.
     if (idle(c)) return;
     solveFriction(c, a, b, w, m.tangent, ctx.friction);
-    solveRolling(c, a, b, w, m.roll, ctx.settings.rollingResistance);
+    solveRolling(c, a, b, w, m.roll, ctx.rolling);
 }
 
 RowMasses rowMasses(const Contact& c, const Inverse& w) {
@@ -127,6 +139,10 @@ Inverse fixingLower(const Contact& c, const PhysicsBody& a, const PhysicsBody& b
 }
 
 }  // namespace
+
+double bounceThreshold(const SolverContext& ctx) {
+    return ctx.gravity > 0.0 ? ctx.settings.restitutionThreshold : 0.0;
+}
 
 Softness makeSoftness(double hertz, double dampingRatio, double h) {
     if (hertz <= 0.0) return {};
@@ -186,7 +202,7 @@ void solveContacts(SolverContext& ctx, bool useBias) {
 void applyRestitution(SolverContext& ctx) {
     if (ctx.restitution <= 0.0) return;
     for (Contact& c : ctx.contacts) {
-        if (c.relativeVelocity > -ctx.settings.restitutionThreshold || c.maxNormalImpulse <= 0.0)
+        if (c.relativeVelocity >= -bounceThreshold(ctx) || c.maxNormalImpulse <= 0.0)
             continue;
         PhysicsBody& a = ctx.bodies[c.a];
         PhysicsBody& b = ctx.bodies[c.b];

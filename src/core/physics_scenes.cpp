@@ -97,6 +97,53 @@ Scene slideScene(float speed, float friction) {
     return s;
 }
 
+Scene rollScene(float speed, float rolling) {
+    Scene s = physicsWorld(9.81f, 0.0f, 0.5f, true);
+    s.world.rolling = rolling;
+    const float r = 0.5f;
+    Object o = dynamicSphere({0, r, 0}, r, 1.0f, {speed, 0, 0});
+    o.spin = {0, 0, -speed / r};  // ω × (−r·y) = v: no slip at the contact
+    s.objects.push_back(o);
+    return s;
+}
+
+Scene spinScene(float spin, float friction) {
+    Scene s = physicsWorld(9.81f, 0.0f, friction, true);
+    Object o = dynamicSphere({0, 0.5f, 0}, 0.5f, 1.0f);
+    o.spin = {0, 0, -spin};  // rolls towards +x once friction has its way
+    s.objects.push_back(o);
+    return s;
+}
+
+glm::vec3 bowlCentre(float bowlRadius) { return {0, 1.0f + 0.7f * bowlRadius, 0}; }
+
+Scene bowlScene(float bowlRadius, float ballRadius, float degrees, float friction) {
+    Scene s = physicsWorld(9.81f, 0.0f, friction, true);
+    s.objects.push_back(staticBox({0, 0.5f, 0}, {2, 0.5f, 2}));
+    Object hole;
+    hole.type = ShapeType::Sphere;
+    hole.pos = bowlCentre(bowlRadius);
+    hole.radius = bowlRadius;
+    hole.isStatic = true;
+    hole.op = CsgOp::Subtract;
+    s.objects.push_back(hole);
+    const float a = degrees * float(M_PI) / 180.0f, swing = bowlRadius - ballRadius;
+    s.objects.push_back(dynamicSphere(hole.pos + swing * glm::vec3(std::sin(a), -std::cos(a), 0), ballRadius, 1.0f));
+    return s;
+}
+
+Scene rampScene(float degrees, float friction, float rolling) {
+    Scene s = physicsWorld(9.81f, 0.0f, friction, false);
+    s.world.rolling = rolling;
+    Object plank = staticBox({0, 0, 0}, {20, 0.5f, 2});
+    plank.rot = {0, 0, degrees};
+    s.objects.push_back(plank);
+    const float a = degrees * float(M_PI) / 180.0f, r = 0.2f;
+    const glm::vec3 up(std::cos(a), std::sin(a), 0), normal(-std::sin(a), std::cos(a), 0);
+    s.objects.push_back(dynamicSphere(3.0f * up + (0.5f + r) * normal, r, 1.0f));
+    return s;
+}
+
 Scene cradleScene(int count, float speed) {
     Scene s = physicsWorld(0.0f, 1.0f, 0.0f, false);
     const float r = 0.5f, gap = 0.05f;  // the striker starts 5 cm from the touching row

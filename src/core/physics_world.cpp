@@ -3,6 +3,7 @@
 
 #include "marchbox/broadphase.h"
 #include "marchbox/contact_solver.h"
+#include "marchbox/impacts.h"
 #include "marchbox/island.h"
 #include "marchbox/static_collider.h"
 
@@ -21,7 +22,8 @@ struct PhysicsWorld::Impl {
         : statics(scene),
           gravity(scene.world.gravity),
           friction(scene.world.friction),
-          restitution(scene.world.restitution) {}
+          restitution(scene.world.restitution),
+          rolling(scene.world.rolling) {}
 
     struct Order {
         double height;
@@ -37,8 +39,10 @@ struct PhysicsWorld::Impl {
 
     StaticCollider statics;
     Broadphase broadphase;
-    double gravity, friction, restitution;
+    Impacts impacts;
+    double gravity, friction, restitution, rolling;
     std::vector<Contact> contacts, sorted;
+    std::vector<int> curved;  // contacts on curved static surfaces, followed every substep
     std::vector<Order> order;
     // Last step's impulses grouped by the contact's first dynamic body (the key's top bits):
     // body i's are warm[warmBegin[i] .. warmBegin[i + 1]), a handful, searched linearly.
@@ -134,19 +138,23 @@ void PhysicsWorld::step() {
     const int iterations = std::max(1, settings_.iterations);
     const double h = settings_.dt / substeps;
     collide();
-    SolverContext ctx{bodies_, w.contacts, settings_, w.gravity, w.friction, w.restitution, h,
+    SolverContext ctx{bodies_, w.contacts, settings_, w.gravity, w.friction, w.restitution, w.rolling, h,
                       makeSoftness(std::min(settings_.contactHertz, 0.25 / h),
                                    settings_.contactDampingRatio, h)};
+    if (settings_.impacts) w.impacts.resolve(ctx);
     prepareContacts(ctx);
     for (PhysicsBody& b : bodies_) b.delta = dvec3(0.0);
     for (int k = 0; k < substeps; ++k) {
         integrateVelocities(h);
+        bendCurved(h);
         warmStartContacts(ctx);
         for (int i = 0; i < iterations; ++i) solveContacts(ctx, true);
         integratePositions(h);
+        followCurved();
         for (int i = 0; i < iterations; ++i) solveContacts(ctx, false);
     }
     for (int i = 0; i < settings_.restitutionIterations; ++i) applyRestitution(ctx);
+    if (settings_.impacts) w.impacts.correctPositions(bodies_, w.contacts);
     keepImpulses();
     if (settings_.continuous) sweepFast();
     updateSleep(bodies_, w.contacts, settings_, w.scratch, w.islandTime);
@@ -215,6 +223,38 @@ void PhysicsWorld::orderAndWarmStart() {
         }
     }
     w.contacts.swap(w.sorted);
+    w.curved.clear();
+    for (size_t i = 0; i < w.contacts.size(); ++i)
+        if (w.contacts[i].curved) w.curved.push_back(int(i));
+}
+
+// The bend of each curved surface along the move the body would make this substep at its
+// velocity now, for the solve pass (Contact::curve). Where the impacts moved a body, its true
+// position is its substep position plus the impacts' correction.
+void PhysicsWorld::bendCurved(double h) {
+    Impl& w = *impl_;
+    for (int i : w.curved) {
+        Contact& c = w.contacts[size_t(i)];
+        const PhysicsBody& b = bodies_[c.b];
+        c.curve = w.statics.bend(c.feature, b.pos + w.impacts.offset(c.b), c.normal, b.vel * h);
+    }
+}
+
+// Each curved surface's normal and separation where the body is now, for the relax pass and the
+// next substep. Friction carried over turns into the new tangent plane.
+void PhysicsWorld::followCurved() {
+    Impl& w = *impl_;
+    for (int i : w.curved) {
+        Contact& c = w.contacts[size_t(i)];
+        const PhysicsBody& b = bodies_[c.b];
+        const dvec3 offset = w.impacts.offset(c.b);
+        const StaticHit hit = w.statics.hit(c.feature, b.pos + offset, b.radius);
+        c.normal = hit.normal;
+        c.separation = hit.separation - glm::dot(c.normal, b.delta);
+        c.shift = glm::dot(c.normal, offset);
+        c.curve = 0.0;
+        c.tangentImpulse -= glm::dot(c.tangentImpulse, c.normal) * c.normal;
+    }
 }
 
 // A counting sort by first body: linear, where a sort by key was O(n log n) with cache misses.
@@ -237,7 +277,14 @@ void PhysicsWorld::collideStatic(int body) {
     const PhysicsBody& b = bodies_[body];
     w.statics.query(b.pos, b.radius, w.margins[body], w.hits);
     for (const StaticHit& hit : w.hits) {
+        // A surface that bends by more than its SDF's noise over this step's move is followed
+        // substep by substep (bendCurved, followCurved); flat faces and the ground keep the
+        // normal of the step's start, as a plane does.
+        const dvec3 move = b.vel * settings_.dt;
         Contact c;
+        c.curved = settings_.followCurves && hit.feature > 0 &&
+                   std::abs(w.statics.bend(hit.feature, b.pos, hit.normal, move)) >
+                       w.statics.bendNoise(hit.feature, glm::length(move));
         c.a = bodyCount();
         c.b = body;
         c.feature = hit.feature;

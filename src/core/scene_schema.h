@@ -77,6 +77,7 @@ struct Schema<World> {
         key("gravity", &World::gravity, atLeast(0));
         key("restitution", &World::restitution, between(0, 1));
         key("friction", &World::friction, atLeast(0));
+        key("rolling", &World::rolling, atLeast(0));
         key("floor", &World::floor);
         key("ground", &World::ground);
     }

@@ -27,6 +27,8 @@ StaticCollider::StaticCollider(const Scene& scene)
         if (!sharpUnion(statics_[i])) chainEnd = i + 1;
     if (chainEnd > 0) groups_.push_back({0, chainEnd});
     for (int i = chainEnd; i < n; ++i) groups_.push_back({i, i + 1});
+    for (Group& g : groups_)
+        for (int i = g.first; i < g.last; ++i) g.size = std::max(g.size, double(statics_[i].bound));
     local_.ground = false;
 }
 
@@ -70,18 +72,44 @@ void StaticCollider::query(const glm::dvec3& centre, double radius, double reach
     for (size_t g = 0; g < groups_.size(); ++g) {
         if (lowerBound(groups_[g], centre) - radius >= reach) continue;
         localise(groups_[g], centre, false);
-        const double d = mapObjects(local_, glm::vec3(0.0f)).d;
-        if (d - radius >= reach) continue;
-        // Tetrahedral central difference (Quilez): four samples at the corners k of a tetrahedron,
-        // n ∝ Σ k·f(h·k). Error O(h²·curvature); h scales with the sphere so it stays above the
-        // float noise of the local distances.
-        const float h = float(1e-3 * (radius + std::abs(d)));
-        const glm::vec3 k[4] = {{1, -1, -1}, {-1, -1, 1}, {-1, 1, -1}, {1, 1, 1}};
-        glm::dvec3 n(0.0);
-        for (const glm::vec3& c : k) n += glm::dvec3(c) * double(mapObjects(local_, c * h).d);
-        const double len = glm::length(n);
-        out.push_back({int(g) + 1, d - radius, len > 0.0 ? n / len : glm::dvec3(0, 1, 0)});
+        const StaticHit h = localHit(int(g), radius);
+        if (h.separation < reach) out.push_back(h);
     }
+}
+
+StaticHit StaticCollider::hit(int feature, const glm::dvec3& centre, double radius) {
+    localise(groups_[size_t(feature - 1)], centre, false);
+    return localHit(feature - 1, radius);
+}
+
+StaticHit StaticCollider::localHit(int group, double radius) {
+    const double d = mapObjects(local_, glm::vec3(0.0f)).d;
+    // Tetrahedral central difference (Quilez): four samples at the corners k of a tetrahedron,
+    // n ∝ Σ k·f(h·k). Error O(h²·curvature); h scales with the sphere so it stays above the
+    // float noise of the local distances.
+    const float h = float(1e-3 * (radius + std::abs(d)));
+    const glm::vec3 k[4] = {{1, -1, -1}, {-1, -1, 1}, {-1, 1, -1}, {1, 1, 1}};
+    glm::dvec3 n(0.0);
+    for (const glm::vec3& c : k) n += glm::dvec3(c) * double(mapObjects(local_, c * h).d);
+    const double len = glm::length(n);
+    return {group + 1, d - radius, len > 0.0 ? n / len : glm::dvec3(0, 1, 0)};
+}
+
+// Both distances come from the same localised group, so the float noise of the far-away
+// coordinates cancels: what is left is the curvature term ½·moveᵀ·H·move of the SDF's Taylor
+// series (an SDF has no curvature along its gradient, so only the tangential move counts).
+double StaticCollider::bend(int feature, const glm::dvec3& centre, const glm::dvec3& normal,
+                            const glm::dvec3& move) {
+    localise(groups_[size_t(feature - 1)], centre, false);
+    const double here = mapObjects(local_, glm::vec3(0.0f)).d;
+    const double there = mapObjects(local_, glm::vec3(move)).d;
+    return there - here - glm::dot(normal, move);
+}
+
+// Measured on a tilted 40 m box: 0.5 ulp of its size; the tetrahedral normal is good to ~4e-5.
+double StaticCollider::bendNoise(int feature, double move) const {
+    constexpr double kNormalNoise = 1e-4, kUlps = 4.0 * std::numeric_limits<float>::epsilon();
+    return kNormalNoise * move + kUlps * groups_[size_t(feature - 1)].size;
 }
 
 double StaticCollider::cast(const glm::dvec3& from, const glm::dvec3& dir, double length,

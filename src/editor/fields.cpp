@@ -26,6 +26,7 @@ static const FieldSpec kSpecs[] = {
     {"gravity", 0, 1000, false, 0, 30, false, false, "%.2f", "m/s\xC2\xB2", "Acceleration along -y."},
     {"restitution", 0, 1, false, 0, 1, false, true, "%.2f", "", "Bounciness: 0 stops, 1 keeps every bounce."},
     {"friction", 0, 100, false, 0, 2, false, false, "%.2f", "", "Coulomb coefficient, sphere on sphere and on statics."},
+    {"rolling", 0, 100, false, 0, 0.2f, false, false, "%.3f", "", "Rolling resistance: torque rolling x radius x normal force."},
     {"floor", -kFar, kFar, false, -10, 10, false, false, "%.2f", "m", "Height of the ground plane."},
     {"steps", 1, 4096, false, 16, 1024, true, true, "%.0f", "", "Most march steps per ray."},
     {"epsilon", 0, 1, true, 1e-5f, 0.01f, false, false, "%.5f", "m", "Distance that counts as a hit."},

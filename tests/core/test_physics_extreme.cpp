@@ -125,22 +125,25 @@ TEST(PhysicsExtreme, PileComesToRest) {
                 w.kineticEnergy() + w.potentialEnergy(), deepest);
 }
 
-// 64 elastic, frictionless spheres in a closed box, no gravity. Each impact bounces off the
-// pre-step approach speed with e = 1, so a lone two-body impact keeps energy exactly. Impacts
-// that share a sphere within one step (two spheres, or a sphere and a wall) are solved together:
-// Newton's law v_n' = −e·v_n on every contact conserves energy with e = 1 once converged:
-// with Δv = M⁻¹Jᵀλ and J·v' = −J·v, ΔKE = λᵀJv + ½λᵀJM⁻¹Jᵀλ = λᵀJv − λᵀJv = 0. The four
-// Gauss-Seidel restitution passes stop short of convergence, which leaves a small loss.
-// Bounds: never a gain, and less than 2 % lost over 3 s (measured: about 1 %).
+// 64 elastic, frictionless spheres in a closed box, no gravity, default settings, 30 s. Every
+// impact is one pair's, at its time of impact, one after another (marchbox/impacts.h): Newton's
+// law with e = 1 on one pair, Δu = −2·u along n with the pair's effective mass, conserves the
+// pair's kinetic energy exactly, whatever else happens in the step. Without gravity nothing
+// rests, so every impact bounces (bounceThreshold). What is left is rounding, about 1e-16 per
+// impact over some 10⁴ impacts: bound 1e-9 (the issue asks 0.5 %). The spheres must not sink
+// into each other or the walls beyond the slop while they do it.
 TEST(PhysicsExtreme, ElasticGasConservesEnergy) {
-    PhysicsSettings s;
-    s.restitutionThreshold = 0.0;  // a gas has no resting contacts: every impact bounces
-    PhysicsWorld w(gasScene(64, 3), s);
+    PhysicsWorld w(gasScene(64, 3));
     const double e0 = w.kineticEnergy();
-    for (int i = 0; i < stepsFor(3.0, s); ++i) {
+    double worst = 0.0;
+    for (int i = 0; i < stepsFor(30.0, w.settings()); ++i) {
         w.step();
         ASSERT_LE(w.kineticEnergy(), e0 * (1.0 + 1e-9)) << "step " << i;
+        worst = std::max(worst, w.stats().maxPenetration);
     }
-    EXPECT_GT(w.kineticEnergy(), 0.98 * e0);
-    std::printf("gas: kinetic energy %.6g -> %.6g J\n", e0, w.kineticEnergy());
+    EXPECT_NEAR(w.kineticEnergy(), e0, 1e-9 * e0);
+    EXPECT_NEAR(w.kineticEnergy(), e0, 0.005 * e0);
+    EXPECT_LT(worst, w.settings().linearSlop);
+    std::printf("gas: kinetic energy %.9g -> %.9g J over 30 s, deepest overlap %.3g m\n", e0,
+                w.kineticEnergy(), worst);
 }

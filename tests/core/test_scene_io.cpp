@@ -265,6 +265,7 @@ TEST(SceneErrors, EveryRangeRejectsOutsideAndAcceptsTheBound) {
         {"world", "restitution", "-0.1", "0", "0 to 1"},
         {"world", "restitution", "1.01", "1", "0 to 1"},
         {"world", "friction", "-1", "0", ">= 0"},
+        {"world", "rolling", "-0.001", "0", ">= 0"},
         {"render", "steps", "0", "1", "1 to 4096"},
         {"render", "steps", "4097", "4096", "1 to 4096"},
         {"render", "epsilon", "0", "1e-9", "> 0"},
@@ -370,6 +371,19 @@ TEST(SceneLimits, Lights16LoadAnd17Fail) {
     expectError(text + "light pos:1,1,1", 17, "more than 16 lights");
 }
 
+// `rolling` (SCENE_FORMAT.md, world): rolling resistance, >= 0, 0.02 when absent.
+TEST(SceneParse, WorldRollingReadsAndDefaults) {
+    EXPECT_EQ(parseOk("world gravity:9.81").world.rolling, 0.02f);
+    EXPECT_EQ(parseOk("").world.rolling, 0.02f);
+    EXPECT_EQ(World{}.rolling, 0.02f);
+    EXPECT_EQ(parseOk("world rolling:0.15 friction:0.5").world.rolling, 0.15f);
+    EXPECT_EQ(parseOk("world rolling:0").world.rolling, 0.0f);
+    EXPECT_EQ(parseOk("world rolling:3e2").world.rolling, 300.0f);  // no upper bound
+    expectError("# c\n\nworld gravity:1 rolling:-0.5", 3, "'rolling' must be >= 0");
+    expectError("world rolling:fast", 1, "'rolling' must be a number, got 'fast'");
+    expectError("world rolling:0.1 rolling:0.2", 1, "repeated key 'rolling'");
+}
+
 //-----------------------------------------------------------------------------
 // Writing and round trips
 //-----------------------------------------------------------------------------
@@ -377,7 +391,7 @@ TEST(SceneFormat, DefaultSceneCanonicalText) {
     EXPECT_EQ(formatScene(Scene{}),
               "scene version:1\n"
               "camera pos:0,2,-6 target:0,1,0 fov:50\n"
-              "world gravity:9.81 restitution:0.8 friction:0.3 floor:0 ground:1\n"
+              "world gravity:9.81 restitution:0.8 friction:0.3 rolling:0.02 floor:0 ground:1\n"
               "render steps:256 epsilon:0.001 shadows:1 reflections:3 fog:0 ao:0 aa:1\n");
 }
 
@@ -595,6 +609,22 @@ TEST(SceneComments, AnythingAProgramPutsThereSavesAsCommentsThatReadBack) {
     EXPECT_EQ(back.comments.camera, "# not a comment\n  # spaced\n\n# \r# carriage\n# no newline\n");
 }
 
+// rolling is written after friction, in the order of the spec's table, and reads back exactly.
+TEST(SceneFormat, RollingIsWrittenAndRoundTrips) {
+    Scene s;
+    s.world.rolling = 0.0375f;
+    const std::string text = formatScene(s);
+    EXPECT_NE(text.find("\nworld gravity:9.81 restitution:0.8 friction:0.3 rolling:0.0375 floor:0 ground:1\n"),
+              std::string::npos) << text;
+    expectRoundTrip(s);
+    s.world.rolling = 0.0f;
+    EXPECT_NE(formatScene(s).find(" rolling:0 "), std::string::npos);
+    expectRoundTrip(s);
+    s.world.rolling = std::nextafter(0.02f, 1.0f);
+    expectRoundTrip(s);
+    EXPECT_EQ(parseOk(formatScene(s)).world.rolling, s.world.rolling);
+}
+
 TEST(SceneEquality, ComparesEveryFieldExactly) {
     Scene a = parseOk(kExample), b = a;
     EXPECT_EQ(a, b);
@@ -614,6 +644,9 @@ TEST(SceneEquality, ComparesEveryFieldExactly) {
     EXPECT_NE(a, b);
     b = a;
     b.comments.end = "# a note\n";
+    EXPECT_NE(a, b);
+    b = a;
+    b.world.rolling = 0.03f;
     EXPECT_NE(a, b);
 }
 

@@ -17,6 +17,11 @@ TEST(Fields, RangesFromTheFormat) {
     EXPECT_TRUE(validateField(Field::Fov, 179, &why));
     EXPECT_FALSE(validateField(Field::Gravity, -1, &why));
     EXPECT_TRUE(validateField(Field::Mass, 0, &why));
+    EXPECT_TRUE(validateField(Field::Rolling, 0.0, &why));
+    EXPECT_TRUE(validateField(Field::Rolling, 5.0, &why));  // >= 0; the editor caps it at 100, as friction
+    EXPECT_FALSE(validateField(Field::Rolling, -0.001, &why));
+    EXPECT_EQ(why, "rolling must be between 0 and 100");
+    EXPECT_STREQ(fieldSpec(Field::Rolling).name, "rolling");
 }
 
 TEST(Fields, ExclusiveMinimum) {

@@ -14,7 +14,7 @@ namespace mb {
 
 enum class Field : int {
     // camera, world, render
-    CameraPosition, CameraTarget, Fov, Gravity, Restitution, Friction, Floor,
+    CameraPosition, CameraTarget, Fov, Gravity, Restitution, Friction, Rolling, Floor,
     Steps, Epsilon, Shadows, Reflections, Fog, Aa,
     // material
     ColorChannel, Ka, Kd, Ks, Shininess, Reflectivity,
