@@ -109,7 +109,7 @@ int runRender(const Args& a) {
     Scene scene;
     if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
     simulate(scene, a.seconds);
-    applyQualityPreset(preset, &scene.render, &options.quality);
+    applyQualityPreset(preset, &scene.render, &options);
     Image img;
     std::string error;
     OffscreenRun run;
@@ -181,7 +181,7 @@ int runBench(const Args& a) {
         return kExitUsage;
     Scene scene;
     if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
-    applyQualityPreset(preset, &scene.render, &options.quality);
+    applyQualityPreset(preset, &scene.render, &options);
     OffscreenContext context;
     Renderer renderer;
     ColorTarget target;  // EGL has no default framebuffer: draw where both backends can

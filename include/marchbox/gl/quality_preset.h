@@ -3,7 +3,7 @@
 // (docs/render-report.md, "Quality presets").
 #pragma once
 
-#include "marchbox/gl/shader_source.h"
+#include "marchbox/gl/renderer.h"
 #include "marchbox/scene.h"
 
 #include <string>
@@ -27,10 +27,11 @@ struct QualityPresetSettings {
     int minAa;                         // supersamples per axis
     int shadowSteps;                   // RenderQuality::shadowSteps; 0: the renderer's own
     bool coneEpsilon;                  // true turns RenderQuality::coneEpsilon on
+    float resolution;                  // RenderOptions::resolution: pixels drawn per axis
 };
 const QualityPresetSettings& qualityPresetSettings(QualityPreset p);
 
-// Applies the preset to a scene's render record and the renderer's knobs. Normal changes nothing.
-void applyQualityPreset(QualityPreset p, RenderSettings* render, RenderQuality* quality);
+// Applies the preset to a scene's render record and the renderer's options. Normal changes nothing.
+void applyQualityPreset(QualityPreset p, RenderSettings* render, RenderOptions* options);
 
 }  // namespace mb
