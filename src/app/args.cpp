@@ -55,6 +55,7 @@ static bool applyValue(const std::string& opt, const std::string& v, Args* a, st
     else if (opt == "--mode") a->mode = v;
     else if (opt == "--post") a->post = v;
     else if (opt == "--backend") a->backend = v;
+    else if (opt == "--quality") a->quality = v;
     if (!ok) {
         static const char* expected[][2] = {
             {"-o", "a file path"},
@@ -73,7 +74,7 @@ bool parseArgs(int argc, char** argv, int first, Args* out, std::string* error) 
         if (arg == "--uber") {
             out->uber = true;
         } else if (arg == "-o" || arg == "--size" || arg == "--seconds" || arg == "--frames" || arg == "--mode" ||
-                   arg == "--post" || arg == "--backend") {
+                   arg == "--post" || arg == "--backend" || arg == "--quality") {
             if (i + 1 >= argc) {
                 *error = "missing value after " + arg;
                 return false;

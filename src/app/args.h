@@ -18,6 +18,7 @@ struct Args {
     std::string mode = "shaded";      // --mode
     std::string post = "none";        // --post none|fxaa|fxaa-edges|fxaa-direction
     std::string backend = "osmesa";   // --backend osmesa|egl
+    std::string quality = "normal";   // --quality draft|normal|final
 };
 
 // Parses argv[first..argc). Returns false with *error set on an unknown option, a missing or

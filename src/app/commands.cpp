@@ -2,6 +2,7 @@
 #include "commands.h"
 
 #include "marchbox/gl/offscreen_context.h"
+#include "marchbox/gl/quality_preset.h"
 #include "marchbox/gl/renderer.h"
 #include "marchbox/physics.h"
 #include "marchbox/scene_io.h"
@@ -75,6 +76,13 @@ bool offscreenBackend(const Args& a, OffscreenBackend* out) {
     return false;
 }
 
+// --quality: applied to the scene once it is loaded, after the simulation has run.
+static bool qualityPreset(const Args& a, QualityPreset* out) {
+    if (parseQualityPreset(a.quality, out)) return true;
+    std::cerr << "unknown quality " << quoteArg(a.quality) << ": expected draft, normal or final\n";
+    return false;
+}
+
 static bool renderOptions(const Args& a, RenderOptions* o) {
     o->uber = a.uber;
     if (!parsePost(a.post, &o->post)) {
@@ -94,12 +102,14 @@ static bool printProgress(float done, void*) {
 
 int runRender(const Args& a) {
     RenderOptions options;
-    if (!needOne(a, "marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M] [--post P] [--backend B]") ||
-        !needOutput(a, "render", "OUT.png") || !renderOptions(a, &options))
+    QualityPreset preset;
+    if (!needOne(a, "marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M] [--post P] [--quality Q] [--backend B]") ||
+        !needOutput(a, "render", "OUT.png") || !renderOptions(a, &options) || !qualityPreset(a, &preset))
         return kExitUsage;
     Scene scene;
     if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
     simulate(scene, a.seconds);
+    applyQualityPreset(preset, &scene.render, &options);
     Image img;
     std::string error;
     OffscreenRun run;
@@ -165,11 +175,13 @@ int runShader(const Args& a) {
 int runBench(const Args& a) {
     RenderOptions options;
     OffscreenBackend backend;
-    if (!needOne(a, "marchbox bench SCENE [--uber] [--size WxH] [--frames N] [--backend osmesa|egl]") ||
-        !renderOptions(a, &options) || !offscreenBackend(a, &backend))
+    QualityPreset preset;
+    if (!needOne(a, "marchbox bench SCENE [--uber] [--size WxH] [--frames N] [--quality Q] [--backend osmesa|egl]") ||
+        !renderOptions(a, &options) || !offscreenBackend(a, &backend) || !qualityPreset(a, &preset))
         return kExitUsage;
     Scene scene;
     if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
+    applyQualityPreset(preset, &scene.render, &options);
     OffscreenContext context;
     Renderer renderer;
     ColorTarget target;  // EGL has no default framebuffer: draw where both backends can

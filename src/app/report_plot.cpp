@@ -57,9 +57,15 @@ void drawSeries(std::ostringstream& svg, const PlotSeries& s, const char* colour
                 const Decades& x, const Decades& y) {
     const double x0 = kLeft, x1 = kWidth - kRight, y0 = kHeight - kBottom, y1 = kTop;
     std::ostringstream line;
-    for (auto [vx, vy] : s.points) {
+    for (size_t i = 0; i < s.points.size(); ++i) {
+        auto [vx, vy] = s.points[i];
         if (vx <= 0.0 || vy <= 0.0) continue;
         const double px = x.map(vx, x0, x1), py = y.map(vy, y0, y1);
+        if (i < s.xSpread.size() && s.xSpread[i].first > 0.0) {
+            const double lo = x.map(s.xSpread[i].first, x0, x1), hi = x.map(s.xSpread[i].second, x0, x1);
+            svg << "<path d='M" << lo << ',' << py - 3 << "v6M" << lo << ',' << py << "H" << hi << "M" << hi << ','
+                << py - 3 << "v6' stroke='" << colour << "' fill='none'/>\n";
+        }
         line << px << ',' << py << ' ';
         svg << "<circle cx='" << px << "' cy='" << py << "' r='3.5' fill='" << colour << "'/>\n";
     }

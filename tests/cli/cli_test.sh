@@ -45,6 +45,11 @@ args_cases() {
   expect 2 "$mb" bench "$scene" --frames 0
   expect 2 "$mb" bench "$scene" --frames -5
   expect 2 "$mb" render "$scene" --mode bogus -o "$tmp/x.png"
+  for q in bogus '' Draft fast 'draft ' 1; do
+    expect_says "expected draft, normal or final" 2 "$mb" render "$scene" --quality "$q" -o "$tmp/x.png"
+    expect_says "expected draft, normal or final" 2 "$mb" bench "$scene" --quality "$q"
+  done
+  expect 2 "$mb" render "$scene" -o "$tmp/x.png" --quality
   for opt in --seconds --size -o --frames --mode; do expect 2 "$mb" simulate "$scene" "$opt"; done
   expect_says "unknown command 'foo'" 2 "$mb" foo
   expect_says "unknown command 'rendr'" 2 "$mb" rendr "$scene"

@@ -29,6 +29,7 @@ public:
     // (Re)allocates when the size or format changes; false if the driver rejects the target.
     bool resize(int width, int height, GLenum internalFormat = GL_RGBA16F);
     void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, fbo_); }
+    GLuint framebuffer() const { return fbo_; }
     void bindTexture(GLuint unit) const {
         glActiveTexture(GL_TEXTURE0 + unit);
         glBindTexture(GL_TEXTURE_2D, texture_);
