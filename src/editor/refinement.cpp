@@ -7,10 +7,9 @@
 
 namespace mb {
 
-void PixelCost::add(double ms, long pixels) {
-    if (pixels <= 0 || ms < 0.0) return;
-    double sample = ms / double(pixels);
-    msPerPixel_ = known() ? (1.0 - rate_) * msPerPixel_ + rate_ * sample : sample;
+void RunningMean::add(double sample) {
+    value_ = known_ ? (1.0 - rate_) * value_ + rate_ * sample : sample;
+    known_ = true;
 }
 
 // A preview at divisor d draws width·height/d² pixels.
@@ -18,15 +17,15 @@ static double estimateMs(double msPerPixel, int width, int height, int d) {
     return msPerPixel * double(width) * double(height) / double(d * d);
 }
 
-int previewDivisor(double msPerPixel, int width, int height, int previous,
-                   const RefinementSettings& s) {
-    const int most = std::max(1, s.maxDivisor);
+int previewDivisor(double msPerPixel, int width, int height, int previous, int maxDivisor,
+                   double budgetMs) {
+    const int most = std::max(1, maxDivisor);
     if (previous >= 1 && previous <= most) {
         double ms = estimateMs(msPerPixel, width, height, previous);
-        if (ms >= 0.5 * s.budgetMs && ms <= 1.25 * s.budgetMs) return previous;
+        if (ms >= 0.5 * budgetMs && ms <= 1.25 * budgetMs) return previous;
     }
     // est(d) ≤ budget  ⇔  d ≥ √(width·height·msPerPixel / budget)
-    double d = std::ceil(std::sqrt(estimateMs(msPerPixel, width, height, 1) / s.budgetMs));
+    double d = std::ceil(std::sqrt(estimateMs(msPerPixel, width, height, 1) / budgetMs));
     return std::clamp(int(std::min(d, double(most))), 1, most);
 }
 
@@ -82,7 +81,7 @@ ViewStep Refinement::next() const {
     if (!started_ || done()) return step;
     if (!previewed_) {
         step.kind = StepKind::Preview;
-        step.divisor = cost_.known() ? previewDivisor(cost_.msPerPixel(), width_, height_, divisor_, s_)
+        step.divisor = cost_.known() ? previewDivisor(cost_.value(), width_, height_, divisor_, s_.maxDivisor, budgetMs())
                                      : std::max(1, s_.maxDivisor);  // nothing learnt yet: the cheapest
         step.width = (width_ + step.divisor - 1) / step.divisor;
         step.height = (height_ + step.divisor - 1) / step.divisor;
@@ -92,7 +91,7 @@ ViewStep Refinement::next() const {
     step.kind = StepKind::Band;
     step.width = width_;
     step.height = height_;
-    step.rows = bandRows(cost_.msPerPixel(), width_, height_ - rowsDone_, s_.budgetMs);
+    step.rows = bandRows(cost_.value(), width_, height_ - rowsDone_, budgetMs());
     // Bands run from the sky down into mirrors: the cost learnt from cheap rows underestimates
     // the next ones, so a band may at most double the last.
     if (lastRows_ > 0) step.rows = std::min(step.rows, 2 * lastRows_);
@@ -104,8 +103,17 @@ ViewStep Refinement::next() const {
     return step;
 }
 
+double Refinement::budgetMs() const {
+    double other = otherMs_.known() ? otherMs_.value() : 0.0;
+    return std::max(s_.minSceneMs, s_.frameBudgetMs - other);
+}
+
+void Refinement::otherWork(double ms) {
+    if (ms >= 0.0) otherMs_.add(ms);
+}
+
 void Refinement::finished(const ViewStep& step, double ms) {
-    cost_.add(ms, step.pixels());
+    if (step.pixels() > 0 && ms >= 0.0) cost_.add(ms / double(step.pixels()));
     if (step.kind == StepKind::Preview) {
         previewed_ = true;
         divisor_ = step.divisor;

@@ -24,44 +24,56 @@ static std::vector<ViewStep> drawAll(Refinement& r, double msPerPixel, int limit
     return steps;
 }
 
-TEST(PixelCost, FirstDrawSetsItThenAverages) {
-    PixelCost c(0.25);
-    EXPECT_FALSE(c.known());
-    c.add(100.0, 1000);
-    EXPECT_DOUBLE_EQ(c.msPerPixel(), 0.1);
-    c.add(500.0, 1000);  // 0.5: a quarter of the way there
-    EXPECT_DOUBLE_EQ(c.msPerPixel(), 0.2);
-    c.add(1.0, 0);  // nothing drawn teaches nothing
-    EXPECT_DOUBLE_EQ(c.msPerPixel(), 0.2);
+TEST(RunningMean, FirstSampleSetsItThenAverages) {
+    RunningMean m(0.25);
+    EXPECT_FALSE(m.known());
+    m.add(0.1);
+    EXPECT_DOUBLE_EQ(m.value(), 0.1);
+    m.add(0.5);  // a quarter of the way there
+    EXPECT_DOUBLE_EQ(m.value(), 0.2);
 }
 
+constexpr double kBudget = 40.0;
+
 TEST(PreviewDivisor, SmallestThatFitsTheBudget) {
-    RefinementSettings s;
     for (double cost : {3e-5, 1e-4, 3e-4, 1e-3}) {
-        int d = previewDivisor(cost, 1280, 720, 0, s);
-        EXPECT_LE(cost * 1280 * 720 / (d * d), s.budgetMs) << cost;
+        int d = previewDivisor(cost, 1280, 720, 0, 8, kBudget);
+        EXPECT_LE(cost * 1280 * 720 / (d * d), kBudget) << cost;
         if (d > 1) {
-            EXPECT_GT(cost * 1280 * 720 / ((d - 1) * (d - 1)), s.budgetMs) << cost;
+            EXPECT_GT(cost * 1280 * 720 / ((d - 1) * (d - 1)), kBudget) << cost;
         }
     }
 }
 
 TEST(PreviewDivisor, WithinOneAndTheMinimum) {
-    RefinementSettings s;
-    EXPECT_EQ(previewDivisor(kFast, 1280, 720, 0, s), 1);
-    EXPECT_EQ(previewDivisor(kSlow, 1280, 720, 0, s), 8);  // 72 ms at 1/8 still: never coarser
-    EXPECT_EQ(previewDivisor(1.0, 1280, 720, 0, s), 8);
+    EXPECT_EQ(previewDivisor(kFast, 1280, 720, 0, 8, kBudget), 1);
+    EXPECT_EQ(previewDivisor(kSlow, 1280, 720, 0, 8, kBudget), 8);  // 78 ms at 1/8: never coarser
+    EXPECT_EQ(previewDivisor(1.0, 1280, 720, 0, 8, kBudget), 8);
 }
 
 TEST(PreviewDivisor, KeepsThePreviousWhileNearTheBudget) {
-    RefinementSettings s;
     // 1280x720 at 1/3 is 102,400 pixels: 35 ms at this cost, 0.875 of the budget.
     const double cost = 35.0 / 102400;
-    EXPECT_EQ(previewDivisor(cost, 1280, 720, 0, s), 3);
-    EXPECT_EQ(previewDivisor(cost * 1.3, 1280, 720, 3, s), 3);  // 46 ms: within 1.25 × budget
-    EXPECT_EQ(previewDivisor(cost * 1.6, 1280, 720, 3, s), 4);  // 56 ms: too slow, coarser
-    EXPECT_EQ(previewDivisor(cost * 0.6, 1280, 720, 3, s), 3);  // 21 ms: still over half
-    EXPECT_EQ(previewDivisor(cost * 0.5, 1280, 720, 3, s), 2);  // 17.5 ms: sharper
+    EXPECT_EQ(previewDivisor(cost, 1280, 720, 0, 8, kBudget), 3);
+    EXPECT_EQ(previewDivisor(cost * 1.3, 1280, 720, 3, 8, kBudget), 3);  // 46 ms: within 1.25 × budget
+    EXPECT_EQ(previewDivisor(cost * 1.6, 1280, 720, 3, 8, kBudget), 4);  // 56 ms: too slow, coarser
+    EXPECT_EQ(previewDivisor(cost * 0.6, 1280, 720, 3, 8, kBudget), 3);  // 21 ms: still over half
+    EXPECT_EQ(previewDivisor(cost * 0.5, 1280, 720, 3, 8, kBudget), 2);  // 17.5 ms: sharper
+}
+
+TEST(Refinement, TheSceneGetsWhatTheRestOfTheFrameLeaves) {
+    RefinementSettings s;
+    Refinement r(s);
+    EXPECT_DOUBLE_EQ(r.budgetMs(), s.frameBudgetMs);  // nothing measured yet
+    r.otherWork(20.0);
+    EXPECT_DOUBLE_EQ(r.budgetMs(), s.frameBudgetMs - 20.0);
+    for (int i = 0; i < 50; ++i) r.otherWork(200.0);  // a crawling UI
+    EXPECT_DOUBLE_EQ(r.budgetMs(), s.minSceneMs);
+    // The smaller share makes a coarser preview.
+    r.restart(1280, 720, 1, true);
+    r.finished(r.next(), 160 * 90 * 2e-4);
+    r.restart(1280, 720, 1, true);
+    EXPECT_EQ(r.next().divisor, 5);  // 184 ms in full; 7.4 ms at 1/5 fits 10, 11.5 at 1/4 not
 }
 
 TEST(BandRows, FitTheBudgetAndTheRowsLeft) {
@@ -132,13 +144,14 @@ TEST(Refinement, EveryStepFitsTheBudget) {
     RefinementSettings s;
     for (double cost : {kSlow, 2e-4, kFast}) {
         Refinement r(s);
+        r.otherWork(12.0);
         r.restart(1280, 720, 1, true);
         r.finished(r.next(), 160 * 90 * cost);  // the first preview teaches the cost
         r.restart(1280, 720, 1, true);
         for (const ViewStep& step : drawAll(r, cost)) {
             bool smallest = step.kind == StepKind::Preview ? step.divisor == s.maxDivisor : step.rows == 1;
             if (!smallest) {
-                EXPECT_LE(double(step.pixels()) * cost, s.budgetMs) << cost;
+                EXPECT_LE(double(step.pixels()) * cost, s.frameBudgetMs - 12.0) << cost;
             }
         }
     }

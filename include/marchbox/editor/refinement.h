@@ -16,10 +16,11 @@
 namespace mb {
 
 struct RefinementSettings {
-    double budgetMs = 40.0;  // scene work per frame: with the UI's ~10 ms, a frame of ~50 ms
-    int maxDivisor = 8;      // previews never coarser than 1/8 of the window per axis
-    int jitterSamples = 4;   // samples per pixel, centre first, when the scene's aa is 1
-    double learnRate = 0.3;  // weight of the newest draw in the cost's running average
+    double frameBudgetMs = 50.0;  // a whole frame: the UI's share, measured, and the scene's
+    double minSceneMs = 10.0;     // the scene's least share, however slow the UI
+    int maxDivisor = 8;           // previews never coarser than 1/8 of the window per axis
+    int jitterSamples = 4;        // samples per pixel, centre first, when the scene's aa is 1
+    double learnRate = 0.3;       // weight of the newest figure in the running averages
 };
 
 enum class StepKind { None, Preview, Band };
@@ -39,26 +40,28 @@ struct ViewStep {
     long pixels() const { return long(width) * (kind == StepKind::Band ? rows : height); }
 };
 
-// Milliseconds per pixel, a running average of recent draws (the scene's mix of sky and
-// mirrors makes single draws noisy; the average still follows a camera moving into them).
-class PixelCost {
+// An exponential running average: value ← (1 − rate)·value + rate·sample; the first sample
+// sets it. The scene's mix of sky and mirrors makes single draws noisy; the average still
+// follows a camera moving into them within a few frames.
+class RunningMean {
 public:
-    explicit PixelCost(double learnRate = 0.3) : rate_(learnRate) {}
-    void add(double ms, long pixels);
-    bool known() const { return msPerPixel_ > 0.0; }
-    double msPerPixel() const { return msPerPixel_; }
+    explicit RunningMean(double rate = 0.3) : rate_(rate) {}
+    void add(double sample);
+    bool known() const { return known_; }
+    double value() const { return value_; }
 
 private:
     double rate_;
-    double msPerPixel_ = 0.0;
+    double value_ = 0.0;
+    bool known_ = false;
 };
 
 // The preview's divisor d (its size is the window's over d per axis): the smallest whose
 // estimated draw, width·height/d² pixels at msPerPixel, fits the budget, within 1..maxDivisor.
 // `previous` (0 for none) is kept while its estimate stays within 0.5..1.25 of the budget, so
 // the preview's sharpness does not flicker as the cost wobbles.
-int previewDivisor(double msPerPixel, int width, int height, int previous,
-                   const RefinementSettings& s);
+int previewDivisor(double msPerPixel, int width, int height, int previous, int maxDivisor,
+                   double budgetMs);
 
 // Rows of a band `width` pixels wide that fit the budget; at least 1, at most rowsLeft.
 int bandRows(double msPerPixel, int width, int rowsLeft, double budgetMs);
@@ -73,25 +76,29 @@ glm::vec2 samplePosition(int k, int aa);
 
 class Refinement {
 public:
-    explicit Refinement(const RefinementSettings& s = {}) : s_(s), cost_(s.learnRate) {}
+    explicit Refinement(const RefinementSettings& s = {})
+        : s_(s), cost_(s.learnRate), otherMs_(s.learnRate) {}
 
     // The picture is out of date: the next step is a preview of the whole width × height view.
     void restart(int width, int height, int aa, bool canAverage);
     ViewStep next() const;                            // what to draw now; None once done
     void finished(const ViewStep& step, double ms);   // it was drawn, taking ms
+    void otherWork(double ms);  // the rest of a frame (UI, showing the picture, the swap) took ms
+    double budgetMs() const;    // the scene's share: the frame budget less the rest, measured
 
     bool done() const { return started_ && sample_ >= samples_; }
     bool previewing() const { return !previewed_ || (divisor_ > 1 && sample_ == 0 && rowsDone_ == 0); }
     int pass() const { return sample_ + 1; }          // the full-size pass under way, 1-based
     int samples() const { return samples_; }
     int divisor() const { return divisor_; }          // of the last preview
-    double msPerPixel() const { return cost_.msPerPixel(); }
+    double msPerPixel() const { return cost_.value(); }
     // "160x90 (1/8) preview", "1280x720 refining 2/4", "1280x720 done".
     std::string describe() const;
 
 private:
     RefinementSettings s_;
-    PixelCost cost_;
+    RunningMean cost_;     // ms per pixel
+    RunningMean otherMs_;  // the frame's other work
     bool started_ = false, previewed_ = false;
     int width_ = 0, height_ = 0, aa_ = 1, samples_ = 1;
     int divisor_ = 0;   // of the last preview; kept across restarts for previewDivisor's hysteresis
