@@ -257,4 +257,15 @@ void Renderer::prepareUber(const Scene& scene, const RenderOptions& options) {
     if (startBuild(u, build.get(), &ignored)) uberBuild_ = std::move(build);
 }
 
+void Renderer::rebind() const {
+    if (currentFeatures_.objectsInStorage)
+        objectStore_.bindBase(kObjectsBinding);
+    else
+        objects_.bindBase(kObjectsBinding);
+    materials_.bindBase(kMaterialsBinding);
+    lights_.bindBase(kLightsBinding);
+    gridCells_.bind(kGridCellsUnit);
+    gridItems_.bind(kGridItemsUnit);
+}
+
 }  // namespace mb
