@@ -75,6 +75,17 @@ class Editor:
             prefix, timeout, [l for l in self.events() if not l.startswith('widget')][-12:],
             open(self.err_path).read()[-800:]))
 
+    def settle(self, timeout=90):
+        """Waits for the scene's picture to finish refining: until then it changes from one
+        screenshot to the next. Call it after the last change has been drawn (its preview)."""
+        deadline = time.time() + timeout
+        while time.time() < deadline:
+            frames = [l for l in self.events() if l.startswith('scene-frame ')]
+            if frames and frames[-1].split()[2] == 'done':
+                return frames[-1]
+            time.sleep(0.05)
+        raise Failure('the picture did not finish refining within %ds' % timeout)
+
     def widget(self, name, fresh=True, timeout=30):
         """Centre of a widget as now drawn. fresh: from a mark written after the last event
         waited for (a popup that opened since); otherwise from any mark (the menu bar)."""
@@ -365,7 +376,9 @@ def changed(a, b):
 
 
 def case_camera(app, scene):
-    """The orbit preview (1), flying (W) and FXAA (P) each change the view, one after another."""
+    """The orbit preview (1), flying (W) and FXAA (P) each change the view, one after another.
+    Pictures compared for standing still are finished ones: a refining picture changes."""
+    app.settle()
     check(changed(app.screenshot(), app.screenshot()) == 0, 'the view moves by itself')
     app.key('1')
     time.sleep(1.0)
@@ -374,12 +387,16 @@ def case_camera(app, scene):
     check(changed(a, app.screenshot()) > 20, 'the orbit preview does not turn the camera')
     app.key('1')
     time.sleep(0.5)
+    app.settle()
     still = app.screenshot()
     check(changed(still, app.screenshot()) == 0, 'key 1 did not stop the orbit preview')
     app.key('w')  # held for HOLD seconds: the camera flies forward
     flown = app.screenshot()
     check(changed(still, flown) > 20, 'W did not fly the camera')
+    app.settle()
+    flown = app.screenshot()
     app.key('p')
+    app.settle()
     check(changed(flown, app.screenshot()) > 0, 'P (FXAA) left every edge as it was')
     app.key('Escape')  # moving the view is not an edit: nothing to ask about
     check(app.finish() == 0, 'exit status not 0')
@@ -399,6 +416,14 @@ def case_render(app, scene):
     check((img.width, img.height) == (300, 200), 'the PNG is %dx%d' % (img.width, img.height))
     check(len({img.pixel(x, y) for x in range(0, 300, 15) for y in range(0, 200, 15)}) > 10,
           'the render is nearly uniform')
+    # The window's picture is drawn again after the render (a selection tints it) with the
+    # window's own scene: the render's renderer, gone now, had bound its buffers in its place.
+    app.menu('File', 'Render...')  # closes the dialog, which covers the sphere
+    x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
+    app.click(x, y)
+    app.wait('select object 0')
+    lit = app.screenshot().pixel(x, y)
+    check(lit[0] > 120, 'the view lost the scene after File > Render...: %s' % (lit,))
     app.key('Escape')
     check(app.finish() == 0, 'exit status not 0')
 
