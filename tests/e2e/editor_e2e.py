@@ -474,16 +474,17 @@ def case_live(app, scene):
     full = [l for l in app.events() if l.startswith('scene-frame 1280x720 pass 1/')][0]
     full_ms = int(full.split()[-1])
 
-    # An orbit drag, as a person makes it: press, then keep moving.
+    # An orbit drag, as a person makes it: press, then keep moving, past ImGui's 6-pixel drag
+    # threshold at the first step.
     view = sample_points(400, 250, 1000, 650, 8)
     app.move(700, 450)
-    before = screen.grab(0, 0, 1280, 720)
+    before = screen.grab(400, 250, 600, 400)
     start, changed_after = time.time(), None
     xdotool('mousedown', 1)
-    for step in range(1, 250):
-        xdotool('mousemove', '--window', app.wid, 700 + 3 * step, 450)
+    for step in range(1, 60):
+        xdotool('mousemove', '--window', app.wid, 700 + 8 * step, 450)
         # Refinement changes only edges, a few in a hundred points; a turn moves everything.
-        if differing(before, screen.grab(0, 0, 1280, 720), view, 24) > 0.15 * len(view):
+        if differing(before, screen.grab(400, 250, 600, 400), view, 24) > 0.15 * len(view):
             changed_after = time.time() - start
             break
         if time.time() - start > 5:
