@@ -91,11 +91,14 @@ ViewStep Refinement::next() const {
     step.kind = StepKind::Band;
     step.width = width_;
     step.height = height_;
-    step.rows = bandRows(cost_.value(), width_, height_ - rowsDone_, budgetMs());
+    const int top = height_ - rowsDone_;  // top down, as a person reads
+    int rows = bandRows(cost_.value(), width_, top, budgetMs());
     // Bands run from the sky down into mirrors: the cost learnt from cheap rows underestimates
     // the next ones, so a band may at most double the last.
-    if (lastRows_ > 0) step.rows = std::min(step.rows, 2 * lastRows_);
-    step.y = height_ - rowsDone_ - step.rows;  // top down, as a person reads
+    if (lastRows_ > 0) rows = std::min(rows, 2 * lastRows_);
+    rows = std::max(kBandAlign, rows / kBandAlign * kBandAlign);
+    step.y = std::max(0, top - rows) / kBandAlign * kBandAlign;
+    step.rows = top - step.y;
     step.sample = sample_;
     step.subpixel = samplePosition(sample_, aa_);
     step.weight = 1.0f / float(sample_ + 1);

@@ -149,7 +149,7 @@ TEST(Refinement, EveryStepFitsTheBudget) {
         r.finished(r.next(), 160 * 90 * cost);  // the first preview teaches the cost
         r.restart(1280, 720, 1, true);
         for (const ViewStep& step : drawAll(r, cost)) {
-            bool smallest = step.kind == StepKind::Preview ? step.divisor == s.maxDivisor : step.rows == 1;
+            bool smallest = step.kind == StepKind::Preview ? step.divisor == s.maxDivisor : step.rows <= kBandAlign;
             if (!smallest) {
                 EXPECT_LE(double(step.pixels()) * cost, s.frameBudgetMs - 12.0) << cost;
             }
@@ -178,6 +178,20 @@ TEST(Refinement, BandsCoverEveryRowOncePerSample) {
         for (int n : rows) EXPECT_EQ(n, 1);
     EXPECT_TRUE(r.done());
     EXPECT_EQ(r.describe(), "640x400 done");
+}
+
+TEST(Refinement, BandEdgesFallOnWholeBlocks) {
+    for (int height : {400, 403}) {
+        Refinement r;
+        r.restart(640, height, 1, true);
+        std::vector<ViewStep> steps = drawAll(r, 3e-3);  // bands of about 20 rows
+        for (size_t i = 1; i < steps.size(); ++i) {
+            EXPECT_EQ(steps[i].y % kBandAlign, 0) << "height " << height << " band " << i;
+            if (steps[i].y + steps[i].rows != height) {
+                EXPECT_EQ(steps[i].rows % kBandAlign, 0) << "height " << height << " band " << i;
+            }
+        }
+    }
 }
 
 TEST(Refinement, BandsGoTopDownAndGrowAtMostTwofold) {

@@ -66,6 +66,11 @@ int previewDivisor(double msPerPixel, int width, int height, int previous, int m
 // Rows of a band `width` pixels wide that fit the budget; at least 1, at most rowsLeft.
 int bandRows(double msPerPixel, int width, int rowsLeft, double budgetMs);
 
+// Band edges fall on multiples of this many rows (the first band also takes the height's
+// remainder): llvmpipe runs the fragment shader on whole 4x4 blocks and GPUs on 2x2 quads, so
+// a band whose edge cuts a block pays for rows it does not draw.
+constexpr int kBandAlign = 4;
+
 // Samples per pixel the view adds up: aa² for the scene's aa × aa grid; jitterSamples when aa
 // is 1; 1 where samples must not be averaged (the object-id view).
 int sampleCount(int aa, bool canAverage, const RefinementSettings& s);
