@@ -32,6 +32,15 @@ const char* envOr(const char* name, const char* fallback) {
     return v && *v ? v : fallback;
 }
 
+constexpr double kIdleWaitSeconds = 1.0 / 30.0;
+
+// Milliseconds `draw` took, or 0 when it drew nothing (returned false).
+template <typename Draw>
+double timed(Draw draw) {
+    double start = glfwGetTime();
+    return draw() ? (glfwGetTime() - start) * 1000.0 : 0.0;
+}
+
 class App {
 public:
     ~App();
@@ -40,6 +49,7 @@ public:
     void run();
 
 private:
+    bool idle() const;  // nothing to draw and nothing moving: the loop may sleep
     void frame(double seconds, int width, int height);
     void buildUi(UiContext& c, int width, int height, double seconds);
     void present(int width, int height);
@@ -55,6 +65,7 @@ private:
     RenderDialog renderDialog_;
     FrameStats stats_;
     ViewportInput input_;
+    double frameStart_ = 0.0;  // glfwGetTime() as this frame began
     bool imgui_ = false;
 };
 
@@ -95,7 +106,10 @@ void App::run() {
     double last = glfwGetTime();
     bool ready = false;
     while (!editor_.quitRequested()) {
-        glfwPollEvents();
+        // With the picture finished and nothing moving, sleep until input comes; the timeout
+        // still looks at shaders/, background compiles and ImGui's own timers a few times a second.
+        if (idle()) glfwWaitEventsTimeout(kIdleWaitSeconds);
+        else glfwPollEvents();
         if (window_.closeRequested()) {
             window_.clearCloseRequest();
             std::vector<std::string> none;
@@ -115,7 +129,13 @@ void App::run() {
     }
 }
 
+bool App::idle() const {
+    return view_.done() && !renderDialog_.running() && !editor_.simulation().playing() &&
+           !ui_.previewOrbit && !input_.dragging();
+}
+
 void App::frame(double seconds, int width, int height) {
+    frameStart_ = glfwGetTime();
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -126,6 +146,7 @@ void App::frame(double seconds, int width, int height) {
     present(width, height);
     window_.setTitle(title());
     stats_.add(seconds);
+    stats_.scene = view_.status();
 }
 
 void App::buildUi(UiContext& c, int width, int height, double seconds) {
@@ -158,14 +179,19 @@ void App::present(int width, int height) {
     view_.pollShaders(editor_.scene(), now);
     view_.sync(editor_.scene(), editor_.document().version(), ui_.render, now);
     renderDialog_.work(0.03);  // a few tiles a frame keep the window responsive
+    // A changed scene draws its preview first, so this frame shows the change; bands of
+    // refinement wait until after the swap, so the UI never waits for them.
+    const int selected = editor_.selection().object();
+    double sceneMs = timed([&] { return view_.update(width, height, selected, StepKind::Preview); });
     glViewport(0, 0, width, height);
     glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    view_.draw(width, height, editor_.selection().object());
-    glViewport(0, 0, width, height);
+    view_.show(width, height);  // the last picture of the scene, however far it has got
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     if (ui_.wantScreenshot) screenshot(width, height);
     window_.swap();
+    if (sceneMs == 0.0) sceneMs = timed([&] { return view_.update(width, height, selected, StepKind::Band); });
+    view_.otherWork((glfwGetTime() - frameStart_) * 1000.0 - sceneMs);
 }
 
 void App::screenshot(int width, int height) {

@@ -43,6 +43,7 @@ void RenderDialog::finish() {
 
 void RenderDialog::work(double budgetSeconds) {
     if (!running()) return;
+    renderer_->rebind();  // the window's renderer binds its scene to the same points between tiles
     double until = glfwGetTime() + budgetSeconds;
     while (!tiles_->done() && glfwGetTime() < until) tiles_->step();
     if (tiles_->done()) finish();

@@ -15,11 +15,11 @@ class RenderDialog {
 public:
     void draw(UiContext& c);        // the window, while c.ui.showRender
     void work(double budgetSeconds);  // draws tiles until the budget is spent; needs the context
+    bool running() const { return tiles_ != nullptr; }
 
 private:
     void start(UiContext& c);
     void finish();
-    bool running() const { return tiles_ != nullptr; }
 
     int width_ = 1920, height_ = 1080;
     std::string path_ = "render.png";

@@ -1,4 +1,4 @@
-// scene_view.cpp — renderer upkeep for the window: uploads, highlight, hot reload, screenshots.
+// scene_view.cpp — renderer upkeep for the window: uploads, the picture, hot reload, screenshots.
 #include "scene_view.h"
 
 #include "marchbox/editor/events.h"
@@ -18,6 +18,7 @@ bool SceneView::init(const Scene& scene, std::string* error) {
     // A scene whose shader fails still opens: the log window says why.
     if (!renderer_->setScene(scene, options_, &log_)) emitEvent("shader-error");
     renderer_->prepareUber(scene, options_);  // the stand-in while later edits compile
+    aa_ = scene.render.aa;
     return true;
 }
 
@@ -30,24 +31,26 @@ void SceneView::sync(const Scene& scene, uint64_t version, const RenderOptions& 
     options_ = options;
     version_ = version;
     std::string error;
-    if (renderer_->requestScene(scene, options_, &error)) return;
+    if (renderer_->requestScene(scene, options_, &error)) {
+        aa_ = scene.render.aa;
+        ++content_;
+        return;
+    }
     log_ = error;
     retryAt_ = now + 1.0;
     emitEvent("shader-error");
 }
 
-void SceneView::draw(int width, int height, int selectedObject) {
+bool SceneView::update(int width, int height, int selectedObject, StepKind only) {
     std::string error;
+    const Program* before = renderer_->program();
     if (!renderer_->poll(&error)) {
         log_ = error;
         emitEvent("shader-error");
     }
-    if (const Program* p = renderer_->program()) {
-        // lighting.glsl tints object uHighlight - 1; 0, the default, tints nothing.
-        glUseProgram(p->id());
-        glUniform1i(p->uniform("uHighlight"), selectedObject + 1);
-    }
-    renderer_->draw(width, height);
+    if (renderer_->program() != before) ++content_;  // the scene's own program took over
+    PictureKey key{content_, selectedObject, width, height, aa_, options_.mode != RenderMode::ObjectId};
+    return image_.update(*renderer_, key, only);
 }
 
 void SceneView::pollShaders(const Scene& scene, double now) {
@@ -61,6 +64,7 @@ bool SceneView::reload(const Scene& scene) {
     std::string error;
     if (fresh->init(&error) && fresh->setScene(scene, options_, &error)) {
         renderer_ = std::move(fresh);
+        ++content_;
         log_.clear();
         retryAt_ = 0.0;
         emitEvent("shaders reloaded");

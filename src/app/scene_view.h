@@ -1,9 +1,11 @@
 // scene_view.h — the scene as the window shows it: the raymarching renderer kept in step with
-// the editor, the selection highlighted, shaders reloaded when they change on disk.
+// the editor, its picture refined a step a frame (scene_image.h), the selection highlighted,
+// shaders reloaded when they change on disk.
 #pragma once
 
 #include "marchbox/editor/files.h"
 #include "marchbox/gl/renderer.h"
+#include "scene_image.h"
 
 #include <memory>
 #include <string>
@@ -17,7 +19,13 @@ public:
 
     // Uploads the scene when its version or the options changed since the last call.
     void sync(const Scene& scene, uint64_t version, const RenderOptions& options, double now);
-    void draw(int width, int height, int selectedObject);
+    // The scene's share of a frame: swaps in a program that finished compiling, then draws the
+    // picture's next step if it is of kind `only` (see SceneImage::update); true if it drew.
+    bool update(int width, int height, int selectedObject, StepKind only);
+    void otherWork(double ms) { image_.otherWork(ms); }  // the rest of the frame took ms
+    void show(int width, int height) const { image_.show(width, height); }  // the last picture
+    bool done() const { return image_.done() && !renderer_->compiling(); }  // nothing to draw
+    const PictureStatus& status() const { return image_.status(); }
 
     // Twice a second, looks at shaders/; on a change builds a fresh renderer and swaps it in
     // only when the new program compiles and links, so a broken edit keeps the last good one.
@@ -28,9 +36,12 @@ private:
     bool reload(const Scene& scene);
 
     std::unique_ptr<Renderer> renderer_;
+    SceneImage image_;
     FolderWatch shaders_;
     RenderOptions options_;
     uint64_t version_ = ~0ull;
+    uint64_t content_ = 0;  // grows with each change to what the renderer draws
+    int aa_ = 1;            // the scene's samples per axis, as last uploaded
     double nextPoll_ = 0.0, retryAt_ = 0.0;
     std::string log_;
 };

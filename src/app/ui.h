@@ -5,6 +5,7 @@
 #include "marchbox/editor/editor.h"
 #include "marchbox/editor/recent.h"
 #include "marchbox/gl/renderer.h"
+#include "scene_image.h"
 #include "window.h"
 
 #include <string>
@@ -12,12 +13,14 @@
 
 namespace mb {
 
-// Frame timing for the statistics overlay.
+// Frame timing for the statistics overlay: the window's frames (the UI answers at this rate)
+// and the scene's picture (drawn a step a frame, see scene_image.h), kept apart.
 struct FrameStats {
     static constexpr int kHistory = 120;
     float frameMs[kHistory] = {};  // a ring, newest at `next - 1`
     int next = 0, count = 0;       // count: frames recorded, up to kHistory
-    float fps = 0.0f;              // over the last kHistory / 2 frames
+    float fps = 0.0f, meanMs = 0.0f;  // over the last kHistory / 2 frames: fps = 1000 / meanMs
+    PictureStatus scene;
     void add(double seconds);
 };
 

@@ -31,4 +31,12 @@ bool ColorTarget::resize(int width, int height, GLenum internalFormat) {
     return ok;
 }
 
+void ColorTarget::blitTo(const ColorTarget* to, int width, int height, GLenum filter) const {
+    const GLuint target = to ? to->fbo_ : 0;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width, height, GL_COLOR_BUFFER_BIT, filter);
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+}
+
 }  // namespace mb

@@ -77,6 +77,11 @@ void Renderer::drawRegion(int x, int y, int w, int h) {
 
 void Renderer::endFrame(const ColorTarget* into) {
     if (!accumulating_) return;
+    resolve(into);
+    accumulating_ = false;
+}
+
+void Renderer::resolve(const ColorTarget* into) {
     std::string error;
     const Program* post = postProgram(&error);
     into ? into->bind() : glBindFramebuffer(GL_FRAMEBUFFER, GLuint(frameTarget_));
@@ -86,7 +91,41 @@ void Renderer::endFrame(const ColorTarget* into) {
     post->set("uImage", int(kAccumUnit));
     quad_.bind();
     glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_INT, nullptr);
-    accumulating_ = false;
+}
+
+void Renderer::drawSample(int x, int y, int w, int h, glm::vec2 subpixel, float weight) {
+    if (!current_ || !accumulating_ || w <= 0 || h <= 0) return;
+    const Program& p = *current_;
+    glUseProgram(p.id());
+    p.set("uResolution", glm::vec2(frameWidth_, frameHeight_));
+    p.set("uPixelRadius", tanHalfFov_ / float(frameHeight_));
+    p.set("uSampleWeight", 1.0f);  // the blend below weighs the sample
+    p.set("uSubpixel", subpixel);
+    glViewport(0, 0, frameWidth_, frameHeight_);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x, y, w, h);
+    glEnable(GL_BLEND);
+    glBlendColor(0.0f, 0.0f, 0.0f, weight);
+    glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+    quad_.bind();
+    glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+void Renderer::seedFrame(const ColorTarget& image) {
+    if (accumulating_) image.blitTo(&accum_, frameWidth_, frameHeight_, GL_LINEAR);
+}
+
+void Renderer::resolveFrame(const ColorTarget& into, int x, int y, int w, int h) {
+    if (!accumulating_) return;
+    // post.frag's FXAA reads up to FXAA_SPAN_MAX / 2 + 1 = 5 pixels away, so a changed band
+    // changes the picture that far around it; 8 leaves room for a wider span.
+    const int reach = post_ == PostMode::None ? 0 : 8;
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x - reach, y - reach, w + 2 * reach, h + 2 * reach);
+    resolve(&into);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 // The size drawn at a resolution below 1: at least one pixel.

@@ -79,6 +79,7 @@ static void uploadPadded(UniformBuffer& ub, const std::vector<T>& items, int cap
 }
 
 void Renderer::upload(const GpuScene& g, const ShaderFeatures& f) {
+    objectsInStorage_ = f.objectsInStorage;
     if (f.objectsInStorage) {
         objectStore_.upload(g.objects.data(), g.objects.size() * sizeof(GpuObject), GL_DYNAMIC_DRAW);
         objectStore_.bindBase(kObjectsBinding);
@@ -251,6 +252,17 @@ void Renderer::prepareUber(const Scene& scene, const RenderOptions& options) {
     if (uberBuild_ || !featuresFor(viewedScene(scene, uber, &fogless), uber, &u, &ignored) || cached(u)) return;
     auto build = std::make_unique<Build>();
     if (startBuild(u, build.get(), &ignored)) uberBuild_ = std::move(build);
+}
+
+void Renderer::rebind() const {
+    if (objectsInStorage_)
+        objectStore_.bindBase(kObjectsBinding);
+    else
+        objects_.bindBase(kObjectsBinding);
+    materials_.bindBase(kMaterialsBinding);
+    lights_.bindBase(kLightsBinding);
+    gridCells_.bind(kGridCellsUnit);
+    gridItems_.bind(kGridItemsUnit);
 }
 
 }  // namespace mb

@@ -34,6 +34,12 @@ public:
         glActiveTexture(GL_TEXTURE0 + unit);
         glBindTexture(GL_TEXTURE_2D, texture_);
     }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // Copies the whole image, scaled with `filter` (GL_NEAREST, GL_LINEAR), over the bottom-left
+    // width × height pixels of `to`, or of the window's framebuffer when `to` is null; leaves
+    // that framebuffer bound. The scissor test, if enabled, clips it.
+    void blitTo(const ColorTarget* to, int width, int height, GLenum filter) const;
 
 private:
     void release();

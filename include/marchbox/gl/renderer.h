@@ -62,6 +62,21 @@ public:
     void drawRegion(int x, int y, int w, int h);  // pixels from the bottom-left corner
     void endFrame(const ColorTarget* into = nullptr);
 
+    // A frame refined while it is shown (the editor's view), after beginFrame with `accumulate`.
+    // drawSample adds one sample of each pixel in the region, at `subpixel` inside it, as a
+    // running mean: target·(1 − weight) + sample·weight; with weight 1/k for a pixel's k-th
+    // sample the target holds the mean of its samples whenever it is resolved. seedFrame fills
+    // the target with `image` scaled to the frame: what shows until a pixel's first sample
+    // (weight 1) replaces it. resolveFrame runs the post pass into `into` for the region (and
+    // FXAA's reach around it) and keeps the frame open for more samples.
+    void drawSample(int x, int y, int w, int h, glm::vec2 subpixel, float weight);
+    void seedFrame(const ColorTarget& image);
+    void resolveFrame(const ColorTarget& into, int x, int y, int w, int h);
+
+    // Binds this renderer's scene buffers and grid textures to their binding points again:
+    // another Renderer in the same context (File > Render...'s) binds its own to the same ones.
+    void rebind() const;
+
     const Program* program() const { return current_; }
     int maxUniformBlockBytes() const { return maxUniformBlock_; }
 
@@ -89,6 +104,7 @@ private:
     void setUniforms(const Scene& scene, const GpuScene& g, const ShaderFeatures& f, const RenderQuality& q);
     void uploadGrid(const Scene& scene);
     const Program* postProgram(std::string* error);
+    void resolve(const ColorTarget* into);  // the post pass: accum_ into `into` or frameTarget_
 
     std::vector<Cached> cache_;
     std::unique_ptr<Build> pending_, uberBuild_;
@@ -103,6 +119,7 @@ private:
     IndexBuffer quadIndices_;
     UniformBuffer objects_, materials_, lights_;
     StorageBuffer objectStore_;
+    bool objectsInStorage_ = false;  // which of the two holds the objects (rebind)
     TextureBuffer gridCells_, gridItems_;
     int maxUniformBlock_ = 16384;
     float tanHalfFov_ = 0.0f;
