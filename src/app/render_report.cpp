@@ -474,6 +474,10 @@ int runRenderReport(const std::string& root, OffscreenBackend backend) {
     std::cerr << "render report: object count\n";
     md << "\n## Cost against object count\n\n![scaling](render-scaling.svg)\n\n" << scalingSection(renderer, docs);
     md << workPrecision(renderer, root, docs);
+    // The editor's latency needs a window and a person's input: e2e.live measures it.
+    md << "\n## Editor latency\n\nInput to picture in the editor at 1280x720, and the compiled "
+          "renderer against the looping one before it: `docs/render-compiled.md` (measured by "
+          "`e2e.live`, which holds the menu to 0.5 s and an orbit drag to 1 s).\n";
     if (!writeTextFile(docs + "/render-report.md", md.str())) {
         std::cerr << "cannot write " << docs << "/render-report.md\n";
         return 1;

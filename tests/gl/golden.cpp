@@ -4,6 +4,8 @@
 #include "marchbox/scene_io.h"
 
 #include <gtest/gtest.h>
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -24,6 +26,22 @@ std::string outputPath(const std::string& name) {
     std::filesystem::path dir = std::filesystem::path(MARCHBOX_BINARY_DIR) / "test-output";
     std::filesystem::create_directories(dir);
     return (dir / name).string();
+}
+
+std::vector<std::string> sceneNames() {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(sourcePath("scenes")))
+        if (e.path().extension() == ".txt") names.push_back(e.path().stem().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+double psnr(const Image& a, const Image& b) {
+    double se = 0;
+    for (size_t i = 0; i < a.rgba.size(); ++i)
+        if (i % 4 != 3) se += std::pow(double(a.rgba[i]) - double(b.rgba[i]), 2.0);
+    double mse = se / (3.0 * a.width * a.height);
+    return mse > 0 ? 10 * std::log10(255.0 * 255.0 / mse) : 99.0;
 }
 
 Scene loadSceneOrDie(const std::string& relative) {

@@ -6,6 +6,7 @@
 #include "marchbox/scene.h"
 
 #include <string>
+#include <vector>
 
 namespace mb::test {
 
@@ -24,6 +25,9 @@ std::string outputPath(const std::string& name);       // under build/test-outpu
 Scene loadSceneOrDie(const std::string& relative);     // fails the test on a load error
 Image renderOrDie(const Scene& scene, const RenderOptions& options = {},
                   int width = kGoldenWidth, int height = kGoldenHeight);
+
+std::vector<std::string> sceneNames();                // every scenes/*.txt, by stem, sorted
+double psnr(const Image& a, const Image& b);           // over RGB, in dB; 99 when identical
 
 // Compares with tests/golden/NAME.png. On a mismatch writes NAME.actual.png and NAME.diff.png
 // under build/test-output/. With MARCHBOX_UPDATE_GOLDEN=1 it rewrites the golden instead.

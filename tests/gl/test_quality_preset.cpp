@@ -12,14 +12,6 @@ using namespace mb;
 
 namespace {
 
-double psnr(const Image& a, const Image& b) {
-    double se = 0;
-    for (size_t i = 0; i < a.rgba.size(); ++i)
-        if (i % 4 != 3) se += std::pow(double(a.rgba[i]) - double(b.rgba[i]), 2.0);
-    double mse = se / (3.0 * a.width * a.height);
-    return mse > 0 ? 10 * std::log10(255.0 * 255.0 / mse) : 99.0;
-}
-
 Image renderPreset(Scene scene, QualityPreset p, int w, int h) {
     RenderOptions o;
     applyQualityPreset(p, &scene.render, &o);
@@ -61,7 +53,7 @@ TEST_P(DraftPreset, Within28dBOfConverged) {
     Scene scene = test::loadSceneOrDie(std::string("scenes/") + GetParam() + ".txt");
     Image draft = renderPreset(scene, QualityPreset::Draft, 480, 270);
     Image reference = test::renderOrDie(converged(scene), {}, 480, 270);
-    double db = psnr(draft, reference);
+    double db = test::psnr(draft, reference);
     std::printf("[ measured ] draft %-12s %.1f dB\n", GetParam(), db);
     EXPECT_GE(db, 28.0);
 }
@@ -77,8 +69,8 @@ TEST(QualityPreset, FinalIsNoWorseThanNormal) {
         Scene ref = converged(scene);
         ref.render.aa = 4;
         Image reference = test::renderOrDie(ref, {}, 240, 135);
-        double normal = psnr(renderPreset(scene, QualityPreset::Normal, 240, 135), reference);
-        double final = psnr(renderPreset(scene, QualityPreset::Final, 240, 135), reference);
+        double normal = test::psnr(renderPreset(scene, QualityPreset::Normal, 240, 135), reference);
+        double final = test::psnr(renderPreset(scene, QualityPreset::Final, 240, 135), reference);
         std::printf("[ measured ] %-12s normal %.1f dB, final %.1f dB\n", name, normal, final);
         EXPECT_GE(final, normal) << name;
     }

@@ -49,13 +49,6 @@ constexpr double kMaxOpen = 3.0;
 constexpr double kMaxPenumbraMean = 2.5;
 constexpr double kMaxPenumbra = 12.0;
 
-std::vector<std::string> sceneNames() {
-    std::vector<std::string> names;
-    for (const auto& e : std::filesystem::directory_iterator(test::sourcePath("scenes")))
-        if (e.path().extension() == ".txt") names.push_back(e.path().stem().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
 
 int gpuObjectAt(const Image& ids, int x, int row) {
     const uint8_t* p = ids.pixel(x, row);
@@ -171,5 +164,5 @@ TEST_P(Reference, GpuAgreesWithTheCpuReference) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, Reference, ::testing::ValuesIn(sceneNames()),
+INSTANTIATE_TEST_SUITE_P(Scenes, Reference, ::testing::ValuesIn(test::sceneNames()),
                          [](const auto& info) { return info.param; });

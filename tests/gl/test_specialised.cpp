@@ -12,14 +12,6 @@ using namespace mb;
 
 namespace {
 
-std::vector<std::string> sceneNames() {
-    std::vector<std::string> names;
-    for (const auto& e : std::filesystem::directory_iterator(test::sourcePath("scenes")))
-        if (e.path().extension() == ".txt") names.push_back(e.path().stem().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
 std::string sourceFor(const Scene& s, bool uber = false) {
     std::string src, error;
     EXPECT_TRUE(fragmentSource(shaderFeatures(s, RenderMode::Shaded, uber, 65536), &src, &error)) << error;
@@ -30,7 +22,7 @@ std::string sourceFor(const Scene& s, bool uber = false) {
 
 // Same maths, different control flow: only rounding at silhouettes may differ.
 TEST(Specialised, EverySceneRendersLikeTheUberShader) {
-    for (const std::string& name : sceneNames()) {
+    for (const std::string& name : test::sceneNames()) {
         Scene scene = test::loadSceneOrDie("scenes/" + name + ".txt");
         Image spec = test::renderOrDie(scene, test::options(RenderMode::Shaded), 160, 90);
         Image uber = test::renderOrDie(scene, test::options(RenderMode::Shaded, true), 160, 90);
