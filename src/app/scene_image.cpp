@@ -7,17 +7,12 @@
 
 namespace mb {
 
-bool operator==(const PictureKey& a, const PictureKey& b) {
-    return a.content == b.content && a.selected == b.selected && a.width == b.width &&
-           a.height == b.height && a.aa == b.aa && a.canAverage == b.canAverage;
-}
-
 static double msSince(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
 }
 
 bool SceneImage::update(Renderer& r, const PictureKey& key, StepKind only) {
-    if (!(key == key_)) {
+    if (key != key_) {
         key_ = key;
         policy_.restart(key.width, key.height, key.aa, key.canAverage);
         changedAt_ = Clock::now();

@@ -21,8 +21,9 @@ struct PictureKey {
     int width = 0, height = 0;
     int aa = 1;                // the scene's samples per axis
     bool canAverage = true;    // false for the object-id view
+
+    bool operator==(const PictureKey&) const = default;  // every field: no stale picture
 };
-bool operator==(const PictureKey& a, const PictureKey& b);
 
 // For the statistics overlay.
 struct PictureStatus {

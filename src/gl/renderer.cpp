@@ -98,8 +98,8 @@ static void setCamera(const Program& p, const CameraBasis& b) {
     p.set("uCamUp", b.up);
 }
 
-void Renderer::uploadGrid(const Scene& scene) {
-    ObjectGrid grid = buildObjectGrid(makeSceneSdf(scene));
+void Renderer::uploadGrid(const SceneSdf& sdf) {
+    ObjectGrid grid = buildObjectGrid(sdf);
     gridCells_.upload(grid.cellStart.data(), grid.cellStart.size());
     gridItems_.upload(grid.items.data(), grid.items.size());
     gridCells_.bind(kGridCellsUnit);
@@ -133,7 +133,8 @@ void Renderer::setUniforms(const Scene& scene, const GpuScene& g, const ShaderFe
     tanHalfFov_ = glm::length(basis.up);
     p.set("uEpsilon", scene.render.epsilon);
     p.set("uMaxDist", maxRayDistance(scene));
-    Box bounds = objectBounds(makeSceneSdf(scene));
+    SceneSdf sdf = makeSceneSdf(scene);  // once per update: the bounds and the grid both read it
+    Box bounds = objectBounds(sdf);
     p.set("uBoundLo", bounds.lo);
     p.set("uBoundHi", bounds.hi);
     p.set("uFloor", scene.world.floor);
@@ -141,7 +142,7 @@ void Renderer::setUniforms(const Scene& scene, const GpuScene& g, const ShaderFe
     p.set("uSkyTint", skyTint(scene));
     p.set("uSoftness", q.softness);
     bool useGrid = f.grid && usesGrid(scene, q);  // the uber shader has the grid code, maybe unused
-    if (useGrid) uploadGrid(scene);
+    if (useGrid) uploadGrid(sdf);
     if (!f.uber) return;
     p.set("uUseGrid", int(useGrid));
     p.set("uObjectCount", int(scene.objects.size()));

@@ -9,6 +9,7 @@
 #include "marchbox/gl/shader_source.h"
 #include "marchbox/image.h"
 #include "marchbox/scene.h"
+#include "marchbox/sdf.h"
 
 #include <memory>
 #include <optional>
@@ -102,7 +103,7 @@ private:
     void use(Program* p, const ShaderFeatures& f, const Scene& scene, const RenderOptions& options);
     void upload(const GpuScene& g, const ShaderFeatures& f);
     void setUniforms(const Scene& scene, const GpuScene& g, const ShaderFeatures& f, const RenderQuality& q);
-    void uploadGrid(const Scene& scene);
+    void uploadGrid(const SceneSdf& sdf);
     const Program* postProgram(std::string* error);
     void resolve(const ColorTarget* into);  // the post pass: accum_ into `into` or frameTarget_
 
