@@ -291,16 +291,10 @@ std::vector<Variant> marchingVariants(const Scene& scene) {
     add("cone epsilon", "on", [](auto&, RenderQuality& q) { q.coneEpsilon = true; });
     for (int refl = 0; refl < std::min(r.reflections, 2); ++refl)
         add("reflections", std::to_string(refl), [=](RenderSettings& s, auto&) { s.reflections = refl; });
-    for (float res : {0.7f, 0.5f}) {
-        Variant v{"resolution", fmt("%g per axis, stretched", res), scene, {}};
-        v.options.resolution = res;
-        out.push_back(v);
-    }
     for (QualityPreset p : {QualityPreset::Draft, QualityPreset::Final}) {
         Variant v{"preset", std::string(qualityPresetName(p)) + " (marching only)", scene, {}};
         applyQualityPreset(p, &v.scene.render, &v.options);
         v.scene.render.aa = scene.render.aa;  // sampling belongs to the aliasing sweep
-        v.options.resolution = 1.0f;
         out.push_back(v);
     }
     return out;
@@ -381,8 +375,8 @@ std::string presetSection(Renderer& r, const std::vector<std::string>& names, co
 
 std::string presetSettingsTable() {
     std::ostringstream md;
-    md << "| preset | pixels drawn per axis | march steps | epsilon | reflections | supersampling | shadow steps | cone epsilon |\n"
-          "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    md << "| preset | march steps | epsilon | reflections | supersampling | shadow steps | cone epsilon |\n"
+          "| --- | --- | --- | --- | --- | --- | --- |\n";
     auto cap = [](const char* what, double lo, double hi, const char* fmtText) {
         if (lo > 0 && hi > 0) return std::string("as written");
         if (hi > 0) return std::string("at most ") + fmt(fmtText, hi);
@@ -391,7 +385,7 @@ std::string presetSettingsTable() {
     };
     for (int p = 0; p < kQualityPresetCount; ++p) {
         const QualityPresetSettings& s = qualityPresetSettings(QualityPreset(p));
-        md << "| " << s.name << " | " << (s.resolution < 1 ? fmt("%g, stretched bilinearly", s.resolution) : std::string("all")) << " | " << cap("as written", s.minSteps, s.maxSteps, "%g") << " | "
+        md << "| " << s.name << " | " << cap("as written", s.minSteps, s.maxSteps, "%g") << " | "
            << cap("as written", s.minEpsilon, s.maxEpsilon, "%g") << " | "
            << (s.maxReflections >= 0 ? "at most " + std::to_string(s.maxReflections) : std::string("as written"))
            << " | " << (s.minAa ? "at least " + std::to_string(s.minAa) + "x" + std::to_string(s.minAa) : std::string("as written"))

@@ -13,14 +13,15 @@ namespace {
 // shadow steps move frame time by at most 1.3x on default, csg and reflections, and the spread
 // of repeated frames is as wide; only pile (124 objects) gains, 1.4x from 128 steps, 1.6x from
 // cone epsilon, 1.9x from both with 64 shadow steps, each keeping >= 33 dB. Fewer reflections
-// cost 21 dB on reflections; drawing 0.7 of the pixels per axis and stretching them is 2-3x
-// faster but only 23-27 dB. So draft takes the marching cuts that hold >= 28 dB on every
+// cost 21 dB on reflections; drawing 0.7 or 0.5 of the pixels per axis and stretching them
+// (a variant measured once, on 2026-11-22, and dropped) was 1.5-4.6x faster but only 22-27 dB,
+// and the editor's live view already previews at reduced size. So draft takes the marching cuts that hold >= 28 dB on every
 // scene, and is 2x faster only where marching is the cost (pile).
 constexpr QualityPresetSettings kPresets[kQualityPresetCount] = {
-    //  name      maxSteps minSteps minEps  maxEps  maxRefl minAa shadowSteps cone   resolution
-    {"draft",     128,     0,       0.0f,   0.0f,   -1,     0,    64,         true,  1.0f},
-    {"normal",    0,       0,       0.0f,   0.0f,   -1,     0,    0,          false, 1.0f},
-    {"final",     0,       1024,    0.0f,   1e-4f,  -1,     3,    256,        false, 1.0f},
+    //  name      maxSteps minSteps minEps  maxEps  maxRefl minAa shadowSteps cone
+    {"draft",     128,     0,       0.0f,   0.0f,   -1,     0,    64,         true},
+    {"normal",    0,       0,       0.0f,   0.0f,   -1,     0,    0,          false},
+    {"final",     0,       1024,    0.0f,   1e-4f,  -1,     3,    256,        false},
 };
 
 }  // namespace
@@ -46,7 +47,6 @@ void applyQualityPreset(QualityPreset p, RenderSettings* r, RenderOptions* o) {
     if (s.minAa) r->aa = std::max(r->aa, s.minAa);
     if (s.shadowSteps) q->shadowSteps = s.shadowSteps;
     if (s.coneEpsilon) q->coneEpsilon = true;
-    o->resolution = s.resolution;
 }
 
 }  // namespace mb

@@ -4,7 +4,6 @@
 #include "marchbox/gl/offscreen_context.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace mb {
 
@@ -128,24 +127,11 @@ void Renderer::resolveFrame(const ColorTarget& into, int x, int y, int w, int h)
     glDisable(GL_SCISSOR_TEST);
 }
 
-// The size drawn at a resolution below 1: at least one pixel.
-static int scaled(int side, float resolution) { return std::max(1, int(std::lround(side * resolution))); }
-
 void Renderer::draw(int width, int height) {
     std::string error;
-    const int w = scaled(width, resolution_), h = scaled(height, resolution_);
-    GLint target = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
-    const bool stretch = (w != width || h != height) && lowRes_.resize(w, h, GL_RGBA8);
-    if (stretch) lowRes_.bind();
-    beginFrame(w, h, false, &error);
-    drawRegion(0, 0, w, h);
+    beginFrame(width, height, false, &error);
+    drawRegion(0, 0, width, height);
     endFrame();
-    if (!stretch) return;
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, lowRes_.framebuffer());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(target));
-    glBlitFramebuffer(0, 0, w, h, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
 }
 
 Image readFramebuffer(int width, int height) {
@@ -197,35 +183,12 @@ Image TiledRender::finish() {
     return readFramebuffer(width_, height_);
 }
 
-// What glBlitFramebuffer's GL_LINEAR does, on the CPU: pixel centres mapped onto pixel centres.
-static Image stretchBilinear(const Image& src, int width, int height) {
-    Image out = makeImage(width, height);
-    for (int y = 0; y < height; ++y) {
-        const float fy = std::clamp((y + 0.5f) * src.height / height - 0.5f, 0.0f, float(src.height - 1));
-        const int y0 = int(fy), y1 = std::min(y0 + 1, src.height - 1);
-        for (int x = 0; x < width; ++x) {
-            const float fx = std::clamp((x + 0.5f) * src.width / width - 0.5f, 0.0f, float(src.width - 1));
-            const int x0 = int(fx), x1 = std::min(x0 + 1, src.width - 1);
-            const float tx = fx - x0, ty = fy - y0;
-            for (int c = 0; c < 4; ++c) {
-                const float top = src.pixel(x0, y0)[c] * (1 - tx) + src.pixel(x1, y0)[c] * tx;
-                const float bottom = src.pixel(x0, y1)[c] * (1 - tx) + src.pixel(x1, y1)[c] * tx;
-                out.pixel(x, y)[c] = uint8_t(std::lround(top * (1 - ty) + bottom * ty));
-            }
-        }
-    }
-    return out;
-}
-
 bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width, int height,
                      Image* out, std::string* error, const OffscreenRun& run) {
     OffscreenContext context;
     if (!context.create(1, 1, error, run.backend)) return false;  // pixels go to the renderer's targets
     Renderer renderer;
     if (!renderer.init(error) || !renderer.setScene(scene, options, error)) return false;
-    const float resolution = options.mode == RenderMode::ObjectId ? 1.0f : std::clamp(options.resolution, 0.05f, 1.0f);
-    const int fullWidth = width, fullHeight = height;
-    width = scaled(width, resolution), height = scaled(height, resolution);
     TiledRender tiles(renderer, width, height);
     if (!tiles.start(error)) return false;
     while (!tiles.done()) {
@@ -240,7 +203,7 @@ bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width
         *error = "OpenGL error " + std::to_string(e) + " while rendering";
         return false;
     }
-    *out = width == fullWidth && height == fullHeight ? std::move(img) : stretchBilinear(img, fullWidth, fullHeight);
+    *out = std::move(img);
     return true;
 }
 

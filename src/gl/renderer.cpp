@@ -178,7 +178,6 @@ void Renderer::use(Program* p, const ShaderFeatures& f, const Scene& scene, cons
     current_ = p;
     samples_ = options.mode == RenderMode::ObjectId ? 1 : scene.render.aa;  // ids do not average
     post_ = options.mode == RenderMode::ObjectId ? PostMode::None : options.post;
-    resolution_ = options.mode == RenderMode::ObjectId ? 1.0f : std::clamp(options.resolution, 0.05f, 1.0f);
     GpuScene g = packScene(scene);
     upload(g, f);
     setUniforms(scene, g, f, options.quality);

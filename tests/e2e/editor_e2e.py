@@ -580,9 +580,7 @@ def case_render(app, scene):
     # The window's picture is drawn again after the render (a selection tints it) with the
     # window's own scene: the render's renderer, gone now, had bound its buffers in its place.
     app.menu('File', 'Render...')  # closes the dialog, which covers the sphere
-    x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
-    app.click(x, y)
-    app.wait('select object 0')
+    x, y = select_first(app, scene)
     lit = app.screenshot().pixel(x, y)
     check(lit[0] > 120, 'the view lost the scene after File > Render...: %s' % (lit,))
     app.key('Escape')
@@ -590,10 +588,11 @@ def case_render(app, scene):
 
 
 def select_first(app, scene):
-    """Clicks the red sphere, object 0."""
+    """Clicks the red sphere, object 0; returns where."""
     x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
     app.click(x, y)
     check(app.wait('select ') == 'select object 0', 'the red sphere was not selected')
+    return x, y
 
 
 def case_field_refusal(app, scene):

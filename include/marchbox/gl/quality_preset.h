@@ -27,7 +27,6 @@ struct QualityPresetSettings {
     int minAa;                         // supersamples per axis
     int shadowSteps;                   // RenderQuality::shadowSteps; 0: the renderer's own
     bool coneEpsilon;                  // true turns RenderQuality::coneEpsilon on
-    float resolution;                  // RenderOptions::resolution: pixels drawn per axis
 };
 const QualityPresetSettings& qualityPresetSettings(QualityPreset p);
 

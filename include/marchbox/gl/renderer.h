@@ -28,7 +28,6 @@ struct RenderOptions {
     RenderQuality quality;
     PostMode post = PostMode::None;
     bool fog = true;    // false draws the scene's fog as 0 (the editor's F key); the file keeps it
-    float resolution = 1.0f;  // below 1, draws this fraction of the size per axis and stretches it (draft)
 
     bool operator==(const RenderOptions&) const = default;
 };
@@ -125,8 +124,6 @@ private:
     int maxUniformBlock_ = 16384;
     float tanHalfFov_ = 0.0f;
     int samples_ = 1;                // supersamples per axis
-    float resolution_ = 1.0f;        // RenderOptions::resolution
-    ColorTarget lowRes_;             // where a frame below full resolution is drawn
     PostMode post_ = PostMode::None;
     std::unique_ptr<Program> postPrograms_[kPostModeCount];
     ColorTarget accum_;
