@@ -102,6 +102,7 @@ struct Branch {
     bool parentActive;  // the enclosing block is emitted
     bool taken;         // some branch of this chain was already true
     bool active;        // the current branch is emitted
+    int line;           // of its #if
 };
 
 std::string directive(const std::string& line, std::string* rest) {
@@ -118,16 +119,22 @@ std::string directive(const std::string& line, std::string* rest) {
 }  // namespace
 
 bool resolveConditionals(const std::string& source, const Defines& defines, std::string* out,
-                         std::string* error) {
+                         std::string* error, LineMap* lines) {
     std::istringstream in(source);
     std::vector<Branch> stack;
     std::string line, rest, result;
+    LineMap kept;
     int lineNo = 0;
+    auto where = [&](int n) {
+        if (!lines) return "line " + std::to_string(n);
+        const LineOrigin& o = lines->at(size_t(n - 1));
+        return o.file + ':' + std::to_string(o.line);
+    };
     auto active = [&] { return stack.empty() || stack.back().active; };
     auto condition = [&](bool* value) {
         long v = 0;
         if (!Expr(rest, defines).eval(&v)) {
-            *error = "line " + std::to_string(lineNo) + ": cannot evaluate '#if" + rest + "'";
+            *error = where(lineNo) + ": cannot evaluate '#if" + rest + "'";
             return false;
         }
         *value = v != 0;
@@ -139,10 +146,10 @@ bool resolveConditionals(const std::string& source, const Defines& defines, std:
         bool value = false;
         if (word == "if") {
             if (!condition(&value)) return false;
-            stack.push_back({active(), value, active() && value});
+            stack.push_back({active(), value, active() && value, lineNo});
         } else if (word == "elif" || word == "else" || word == "endif") {
             if (stack.empty()) {
-                *error = "line " + std::to_string(lineNo) + ": #" + word + " without #if";
+                *error = where(lineNo) + ": #" + word + " without #if";
                 return false;
             }
             Branch& b = stack.back();
@@ -155,13 +162,15 @@ bool resolveConditionals(const std::string& source, const Defines& defines, std:
             }
         } else if (active()) {
             result += line + '\n';
+            if (lines) kept.push_back(lines->at(size_t(lineNo - 1)));
         }
     }
     if (!stack.empty()) {
-        *error = "#if without #endif";
+        *error = where(stack.back().line) + ": #if without #endif";
         return false;
     }
     *out = std::move(result);
+    if (lines) *lines = std::move(kept);
     return true;
 }
 

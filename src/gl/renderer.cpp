@@ -39,11 +39,13 @@ Renderer::Cached* Renderer::cached(const ShaderFeatures& f) {
 
 bool Renderer::startBuild(const ShaderFeatures& f, Build* b, std::string* error) {
     std::string source;
-    if (!fragmentSource(f, &source, error) || !readShaderSource(shaderDir() + "/fullscreen.vert", &b->vertexSource, error))
+    LineMap fragmentLines, vertexLines;
+    if (!fragmentSource(f, &source, error, &fragmentLines) ||
+        !readShaderSource(shaderDir() + "/fullscreen.vert", &b->vertexSource, &vertexLines, error))
         return false;
     b->features = f;
-    b->vs.start(GL_VERTEX_SHADER, b->vertexSource);
-    b->fs.start(GL_FRAGMENT_SHADER, source);
+    b->vs.start(GL_VERTEX_SHADER, b->vertexSource, std::move(vertexLines));
+    b->fs.start(GL_FRAGMENT_SHADER, source, std::move(fragmentLines));
     b->program = std::make_unique<Program>();
     b->program->startLink(b->vs, b->fs);
     return true;

@@ -16,7 +16,7 @@ std::string shaderDir() {
 }
 
 static bool expandIncludes(const std::string& path, std::set<std::string>* seen, std::string* out,
-                           std::string* error) {
+                           LineMap* lines, std::string* error) {
     std::ifstream in(path);
     if (!in) {
         *error = "cannot read shader '" + path + "'";
@@ -25,31 +25,35 @@ static bool expandIncludes(const std::string& path, std::set<std::string>* seen,
     seen->insert(path);
     std::string line;
     const std::string directive = "#include \"";
-    while (std::getline(in, line)) {
+    for (int lineNo = 1; std::getline(in, line); ++lineNo) {
         if (line.compare(0, directive.size(), directive) != 0) {
             *out += line + "\n";
+            lines->push_back({path, lineNo});
             continue;
         }
         std::string name = line.substr(directive.size(), line.find('"', directive.size()) - directive.size());
         std::string inc = shaderDir() + "/" + name;
-        if (!seen->count(inc) && !expandIncludes(inc, seen, out, error)) return false;
+        if (!seen->count(inc) && !expandIncludes(inc, seen, out, lines, error)) return false;
     }
     return true;
 }
 
-bool readShaderSource(const std::string& path, std::string* out, std::string* error) {
+bool readShaderSource(const std::string& path, std::string* out, LineMap* lines, std::string* error) {
     std::set<std::string> seen;
     out->clear();
-    return expandIncludes(path, &seen, out, error);
+    lines->clear();
+    return expandIncludes(path, &seen, out, lines, error);
 }
 
 Shader::~Shader() {
     if (id_) glDeleteShader(id_);
 }
-Shader::Shader(Shader&& o) noexcept : id_(std::exchange(o.id_, 0)), log_(std::move(o.log_)) {}
+Shader::Shader(Shader&& o) noexcept
+    : id_(std::exchange(o.id_, 0)), log_(std::move(o.log_)), lines_(std::move(o.lines_)) {}
 Shader& Shader::operator=(Shader&& o) noexcept {
     std::swap(id_, o.id_);
     std::swap(log_, o.log_);
+    std::swap(lines_, o.lines_);
     return *this;
 }
 
@@ -61,12 +65,13 @@ static std::string infoLog(GLuint id, bool program) {
     return buf.data();
 }
 
-bool Shader::compile(GLenum type, const std::string& source) {
-    start(type, source);
+bool Shader::compile(GLenum type, const std::string& source, LineMap lines) {
+    start(type, source, std::move(lines));
     return finish();
 }
 
-void Shader::start(GLenum type, const std::string& source) {
+void Shader::start(GLenum type, const std::string& source, LineMap lines) {
+    lines_ = std::move(lines);
     if (!id_) id_ = glCreateShader(type);
     const char* src = source.c_str();
     glShaderSource(id_, 1, &src, nullptr);
@@ -76,14 +81,15 @@ void Shader::start(GLenum type, const std::string& source) {
 bool Shader::finish() {
     GLint ok = 0;
     glGetShaderiv(id_, GL_COMPILE_STATUS, &ok);
-    log_ = infoLog(id_, false);
+    log_ = rewriteShaderLog(infoLog(id_, false), lines_);
     return ok == GL_TRUE;
 }
 
 bool Shader::compileFile(GLenum type, const std::string& path, const std::string& prefix) {
     std::string body;
-    if (!readShaderSource(path, &body, &log_)) return false;
-    return compile(type, prefix + body);
+    LineMap lines;
+    if (!readShaderSource(path, &body, &lines, &log_)) return false;
+    return compile(type, prefix + body, withPrefix(prefix, lines));
 }
 
 Program::~Program() {

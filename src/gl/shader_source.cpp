@@ -120,23 +120,27 @@ std::string shaderPrefix(const ShaderFeatures& f) {
     return o.str();
 }
 
-bool fragmentSource(const ShaderFeatures& f, std::string* out, std::string* error) {
+bool fragmentSource(const ShaderFeatures& f, std::string* out, std::string* error, LineMap* lines) {
     std::string body, resolved;
-    if (!readShaderSource(shaderDir() + "/march.frag", &body, error)) return false;
+    LineMap map;
+    if (!readShaderSource(shaderDir() + "/march.frag", &body, &map, error)) return false;
     auto list = featureDefines(f);
     Defines defines(list.begin(), list.end());
-    if (!resolveConditionals(body, defines, &resolved, error)) {
-        *error = "march.frag: " + *error;
-        return false;
-    }
+    if (!resolveConditionals(body, defines, &resolved, error, &map)) return false;
     const std::string marker = "#pragma marchbox scene\n";
     size_t at = resolved.find(marker);
     if (at == std::string::npos) {
         *error = "march.frag: no '#pragma marchbox scene' line for the compiled scene";
         return false;
     }
-    resolved.replace(at, marker.size(), f.compiled ? compileSceneMap(f.layout) : compileShapeSwitch(f.shapes));
-    *out = shaderPrefix(f) + resolved;
+    std::string scene = f.compiled ? compileSceneMap(f.layout) : compileShapeSwitch(f.shapes);
+    resolved.replace(at, marker.size(), scene);
+    auto markerLine = map.begin() + std::count(resolved.begin(), resolved.begin() + long(at), '\n');
+    LineMap sceneLines = linesOf("<scene code>", scene);
+    map.insert(map.erase(markerLine), sceneLines.begin(), sceneLines.end());
+    std::string prefix = shaderPrefix(f);
+    *out = prefix + resolved;
+    if (lines) *lines = withPrefix(prefix, map);
     return true;
 }
 

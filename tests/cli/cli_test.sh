@@ -96,14 +96,21 @@ gl_cases() {
   MB_ENV=MARCHBOX_SHADERS=/nonexistent expect_says "/nonexistent" 3 "${r[@]}"
   MB_ENV=MARCHBOX_SHADERS=/nonexistent expect 3 "$mb" bench "$scene" --frames 1 --size 8x8
   MB_ENV=MARCHBOX_SHADERS=/nonexistent expect 3 "$mb" shader "$scene"
-  # A syntax error in an included file, then in the vertex shader: the driver's first error line.
+  # A syntax error in an included file, then in the vertex shader: the driver's first error
+  # line, naming the file and line that hold it. sdf.glsl has #if blocks that the shader drops
+  # before its last line; lighting.glsl comes after the code compiled for the scene.
   cp -r "$src/shaders" "$tmp/shaders"
   echo "float broken() { return ; }" >>"$tmp/shaders/sdf.glsl"
-  MB_ENV=MARCHBOX_SHADERS=$tmp/shaders expect_says "fragment shader: " 3 "${r[@]}"
+  MB_ENV=MARCHBOX_SHADERS=$tmp/shaders expect_says \
+    "fragment shader: $tmp/shaders/sdf.glsl:$(wc -l <"$tmp/shaders/sdf.glsl")(" 3 "${r[@]}"
   grep -q "error" "$tmp/err" || { echo "FAIL: no error line: $(cat "$tmp/err")" >&2; failures=$((failures + 1)); }
   cp "$src/shaders/sdf.glsl" "$tmp/shaders/sdf.glsl"
+  sed -i '4s/^/garbage /' "$tmp/shaders/lighting.glsl"
+  MB_ENV=MARCHBOX_SHADERS=$tmp/shaders expect_says "$tmp/shaders/lighting.glsl:4(" 3 "${r[@]}"
+  cp "$src/shaders/lighting.glsl" "$tmp/shaders/lighting.glsl"
   echo "garbage" >>"$tmp/shaders/fullscreen.vert"
-  MB_ENV=MARCHBOX_SHADERS=$tmp/shaders expect_says "vertex shader: " 3 "${r[@]}"
+  MB_ENV=MARCHBOX_SHADERS=$tmp/shaders expect_says \
+    "vertex shader: $tmp/shaders/fullscreen.vert:$(wc -l <"$tmp/shaders/fullscreen.vert")(" 3 "${r[@]}"
 }
 
 "${group}_cases"

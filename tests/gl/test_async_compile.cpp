@@ -5,6 +5,7 @@
 
 #include "marchbox/gl/offscreen_context.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -76,14 +77,18 @@ TEST(AsyncCompile, ABrokenShaderKeepsTheLastGoodProgramAndSaysWhy) {
     const Program* good = r.program();
     std::ifstream in(dir / "raymarch.glsl");
     std::string text((std::istreambuf_iterator<char>(in)), {});
-    text.replace(text.find("float softShadow("), 17, "float softShadow(not glsl ");
+    size_t at = text.find("float softShadow(");
+    text.replace(at, 17, "float softShadow(not glsl ");
     std::ofstream(dir / "raymarch.glsl") << text;
+    int line = 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
 
     s.render.shadows = 2;
     bool started = r.requestScene(s, {}, &error), failed = false;
     for (int i = 0; started && i < 6000 && r.compiling(); ++i) failed = !r.poll(&error);
     EXPECT_TRUE(failed || !started) << "the broken shader must be reported";
     EXPECT_NE(error.find("error"), std::string::npos) << error;
+    std::string where = (dir / "raymarch.glsl").string() + ':' + std::to_string(line) + '(';
+    EXPECT_NE(error.find(where), std::string::npos) << "names " << where << ": " << error;
     EXPECT_EQ(r.program(), good) << "the last good program keeps drawing";
     std::string again;
     EXPECT_FALSE(r.requestScene(s, {}, &again)) << "the same broken features are not rebuilt";

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "marchbox/gl/gl.h"
+#include "marchbox/gl/shader_lines.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -11,8 +12,9 @@
 namespace mb {
 
 // Reads a GLSL file and replaces each `#include "name"` line with the file shaders/name,
-// recursively (each file once). Errors say which file could not be read.
-bool readShaderSource(const std::string& path, std::string* out, std::string* error);
+// recursively (each file once), and gives each line's origin. Errors say which file could not
+// be read.
+bool readShaderSource(const std::string& path, std::string* out, LineMap* lines, std::string* error);
 
 // Where shaders/ is: $MARCHBOX_SHADERS if set, else the source tree's shaders/.
 std::string shaderDir();
@@ -26,9 +28,10 @@ public:
     Shader(const Shader&) = delete;
     Shader& operator=(const Shader&) = delete;
 
-    bool compile(GLenum type, const std::string& source);  // keeps the info log either way
-    void start(GLenum type, const std::string& source);    // compile without waiting
-    bool finish();                                         // wait, keep the log, say if it built
+    // The log names lines by `lines`, the origin of each line of `source`, where it has one.
+    bool compile(GLenum type, const std::string& source, LineMap lines = {});  // keeps the log either way
+    void start(GLenum type, const std::string& source, LineMap lines = {});    // compile without waiting
+    bool finish();  // wait, keep the log, say if it built
     bool compileFile(GLenum type, const std::string& path, const std::string& prefix = "");
 
     GLuint id() const { return id_; }
@@ -37,6 +40,7 @@ public:
 private:
     GLuint id_ = 0;
     std::string log_;
+    LineMap lines_;
 };
 
 class Program {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "marchbox/gl/scene_compiler.h"
+#include "marchbox/gl/shader_lines.h"
 #include "marchbox/scene.h"
 
 #include <string>
@@ -69,6 +70,9 @@ ShaderFeatures shaderFeatures(const Scene& scene, RenderMode mode, bool uber,
 std::string shaderPrefix(const ShaderFeatures& f);
 
 // The complete fragment source: prefix plus shaders/march.frag with its includes expanded.
-bool fragmentSource(const ShaderFeatures& f, std::string* out, std::string* error);
+// `lines`, when given, gets each line's origin: a file of shaders/, `<defines>` for the prefix,
+// `<scene code>` for the code compiled for the scene (line n of that part).
+bool fragmentSource(const ShaderFeatures& f, std::string* out, std::string* error,
+                    LineMap* lines = nullptr);
 
 }  // namespace mb
