@@ -127,9 +127,13 @@ private:
 //-----------------------------------------------------------------------------
 // [SECTION] Driving it
 //-----------------------------------------------------------------------------
+// Called each time another hundredth of a run's steps is done, with the fraction done.
+using SimulateProgress = void (*)(double done);
+
 // Exactly round(seconds / dt) steps, then writes the state back. Deterministic: the same scene
 // and settings give the same bytes. Returns the number of steps taken.
-int simulate(Scene& scene, double seconds, const PhysicsSettings& settings = {});
+int simulate(Scene& scene, double seconds, const PhysicsSettings& settings = {},
+             SimulateProgress progress = nullptr);
 
 // Turns variable frame times into whole fixed steps, so the result does not depend on the frame
 // rate. Frames longer than maxFrame are clamped: a hitch slows the scene, it cannot explode it.

@@ -94,11 +94,16 @@ static bool renderOptions(const Args& a, RenderOptions* o) {
     return false;
 }
 
-// Large renders report progress on a terminal; scripts reading stderr see only errors.
-static bool printProgress(float done, void*) {
-    std::fprintf(stderr, "\rrendering %3d%%%s", int(done * 100.0f + 0.5f), done >= 1.0f ? "\n" : "");
+// Large renders and simulations report progress on a terminal; scripts reading stderr see
+// only errors.
+static void showProgress(const char* doing, double done) {
+    std::fprintf(stderr, "\r%s %3d%%%s", doing, int(done * 100.0 + 0.5), done >= 1.0 ? "\n" : "");
+}
+static bool printRenderProgress(float done, void*) {
+    showProgress("rendering", done);
     return true;
 }
+static void printSimulateProgress(double done) { showProgress("simulating", done); }
 
 int runRender(const Args& a) {
     RenderOptions options;
@@ -114,7 +119,7 @@ int runRender(const Args& a) {
     std::string error;
     OffscreenRun run;
     if (!offscreenBackend(a, &run.backend)) return kExitUsage;
-    if (a.width * a.height > 1024 * 1024 && isatty(STDERR_FILENO)) run.progress = printProgress;
+    if (a.width * a.height > 1024 * 1024 && isatty(STDERR_FILENO)) run.progress = printRenderProgress;
     if (!renderOffscreen(scene, options, a.width, a.height, &img, &error, run)) return glFailure("render", error);
     if (!savePng(a.output, img, &error)) {
         std::cerr << error << '\n';
@@ -127,7 +132,8 @@ int runSimulate(const Args& a) {
     if (!needOne(a, "marchbox simulate SCENE --seconds T [-o OUT.txt]")) return kExitUsage;
     Scene scene;
     if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
-    simulate(scene, a.seconds);
+    // Ctrl-C keeps its default: the process ends at once, before anything is written.
+    simulate(scene, a.seconds, {}, isatty(STDERR_FILENO) ? printSimulateProgress : nullptr);
     if (a.output.empty()) {
         std::cout << formatScene(scene);
         return flushStdout();

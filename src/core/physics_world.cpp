@@ -351,10 +351,13 @@ void PhysicsWorld::updateStats() {
     for (int i = 0; i < bodyCount(); ++i) stats_.awake += bodies_[i].awake ? 1 : 0;
 }
 
-int simulate(Scene& scene, double seconds, const PhysicsSettings& settings) {
+int simulate(Scene& scene, double seconds, const PhysicsSettings& settings, SimulateProgress progress) {
     PhysicsWorld world(scene, settings);
     const int steps = int(std::llround(seconds / settings.dt));
-    for (int i = 0; i < steps; ++i) world.step();
+    for (long long i = 1; i <= steps; ++i) {
+        world.step();
+        if (progress && i * 100 / steps != (i - 1) * 100 / steps) progress(double(i) / steps);
+    }
     world.writeBack(scene);
     return steps;
 }

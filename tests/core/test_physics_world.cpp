@@ -4,8 +4,10 @@
 #include "physics_test_util.h"
 
 #include <gtest/gtest.h>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 using namespace mb;
 
@@ -46,6 +48,21 @@ TEST(PhysicsWorld, SimulateTakesRoundedStepsAndWritesStateBack) {
     Scene t = projectileScene({0.0f, 0.0f, 0.0f});
     EXPECT_EQ(simulate(t, 0.5041), 60);  // 60.49 steps round down
     EXPECT_EQ(simulate(t, 0.5042), 61);  // 60.50 rounds up
+}
+
+// A run of 250 steps reports each hundredth once, in order, ending at the whole run; the
+// state is the one a run without progress reaches.
+TEST(PhysicsWorld, SimulateReportsEachHundredthOfItsSteps) {
+    static std::vector<double> reported;
+    reported.clear();
+    Scene s = projectileScene({1.0f, 2.0f, 0.0f}), quiet = s;
+    EXPECT_EQ(simulate(s, 250.0 / 120, {}, [](double done) { reported.push_back(done); }), 250);
+    ASSERT_EQ(reported.size(), 100u);
+    for (size_t i = 0; i < reported.size(); ++i)  // step ceil(2.5 (i + 1)) is the first past i + 1 %
+        EXPECT_DOUBLE_EQ(reported[i], std::ceil(2.5 * double(i + 1)) / 250.0) << i;
+    simulate(quiet, 250.0 / 120);
+    EXPECT_EQ(s.objects[0].pos, quiet.objects[0].pos);
+    EXPECT_EQ(s.objects[0].vel, quiet.objects[0].vel);
 }
 
 TEST(PhysicsWorld, AccumulatorClampsALongFrame) {
