@@ -36,7 +36,12 @@ static bool needOutput(const Args& a, const char* command, const char* what) {
 
 // A driver's log runs to several lines (warnings, the error, a blank); the CLI promises one line
 // per error, and the first error is the one to fix. The label in front ("fragment shader: ")
-// is kept when the error is further down.
+// is kept when the error is further down. Drivers write `...: error:` (Mesa, NVIDIA) or
+// `ERROR: ...` (AMD, Intel); a bare "error" could be part of a shader's path.
+static bool isErrorLine(const std::string& line) {
+    return line.find(": error") != std::string::npos || line.find("ERROR: ") != std::string::npos;
+}
+
 static std::string firstErrorLine(const std::string& text) {
     const std::string first = text.substr(0, text.find('\n'));
     for (size_t at = 0; at < text.size();) {
@@ -44,7 +49,7 @@ static std::string firstErrorLine(const std::string& text) {
         std::string line = text.substr(at, end - at);
         if (!line.empty() && line.back() == '\r') line.pop_back();
         size_t label = first.find(": ");
-        if (line.find("error") != std::string::npos)
+        if (isErrorLine(line))
             return at == 0 || label == std::string::npos ? line : first.substr(0, label + 2) + line;
         at = end + 1;
     }

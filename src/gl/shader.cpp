@@ -2,6 +2,7 @@
 #include "marchbox/gl/shader.h"
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -15,6 +16,16 @@ std::string shaderDir() {
     return env && *env ? env : MARCHBOX_SHADER_DIR;
 }
 
+// A file under the working folder is named from there, as a person would type it
+// (`shaders/lighting.glsl:42`); anything else keeps the path it was opened by.
+static std::string displayPath(const std::string& path) {
+    std::error_code ec;
+    const std::filesystem::path cwd = std::filesystem::current_path(ec);
+    if (ec || !std::filesystem::path(path).is_absolute()) return path;
+    const std::filesystem::path rel = std::filesystem::path(path).lexically_relative(cwd);
+    return rel.empty() || *rel.begin() == ".." ? path : rel.string();
+}
+
 static bool expandIncludes(const std::string& path, std::set<std::string>* seen, std::string* out,
                            LineMap* lines, std::string* error) {
     std::ifstream in(path);
@@ -23,12 +34,13 @@ static bool expandIncludes(const std::string& path, std::set<std::string>* seen,
         return false;
     }
     seen->insert(path);
+    const std::string shown = displayPath(path);
     std::string line;
     const std::string directive = "#include \"";
     for (int lineNo = 1; std::getline(in, line); ++lineNo) {
         if (line.compare(0, directive.size(), directive) != 0) {
             *out += line + "\n";
-            lines->push_back({path, lineNo});
+            lines->push_back({shown, lineNo});
             continue;
         }
         std::string name = line.substr(directive.size(), line.find('"', directive.size()) - directive.size());

@@ -107,6 +107,9 @@ gl_cases() {
   cp "$src/shaders/sdf.glsl" "$tmp/shaders/sdf.glsl"
   sed -i '4s/^/garbage /' "$tmp/shaders/lighting.glsl"
   MB_ENV=MARCHBOX_SHADERS=$tmp/shaders expect_says "$tmp/shaders/lighting.glsl:4(" 3 "${r[@]}"
+  # Run from the folder that holds shaders/, the file is named as a person would type it.
+  MB_ENV=MARCHBOX_SHADERS=$tmp/shaders expect_says ": shaders/lighting.glsl:4(" 3 \
+    sh -c 'cd "$0" && exec "$@"' "$tmp" "${r[@]}"
   cp "$src/shaders/lighting.glsl" "$tmp/shaders/lighting.glsl"
   echo "garbage" >>"$tmp/shaders/fullscreen.vert"
   MB_ENV=MARCHBOX_SHADERS=$tmp/shaders expect_says \
