@@ -23,12 +23,14 @@ Inverse inverseOf(const PhysicsBody& a, const PhysicsBody& b) {
     return {a.invMass, a.invInertia, b.invMass, b.invInertia};
 }
 
-// Linear impulse p at the contact point: −p on a, +p on b.
+// Linear impulse p at the contact point: −p on a, +p on b. Both arms lie along the normal, so
+// the torques are r_a·(n × p) on a and r_b·(n × p) on b, against their spins: one cross product.
 void applyImpulse(PhysicsBody& a, PhysicsBody& b, const Contact& c, const Inverse& w, const dvec3& p) {
+    const dvec3 np = glm::cross(c.normal, p);
     a.vel -= w.massA * p;
-    a.spin -= w.inertiaA * glm::cross(c.normal * c.armA, p);
+    a.spin -= (w.inertiaA * c.armA) * np;
     b.vel += w.massB * p;
-    b.spin += w.inertiaB * glm::cross(-c.normal * c.armB, p);
+    b.spin -= (w.inertiaB * c.armB) * np;
 }
 
 // An impulse along the normal: both arms are parallel to it, so it exerts no torque (the cross
@@ -83,10 +85,10 @@ void solveNormal(Contact& c, PhysicsBody& a, PhysicsBody& b, const SolverContext
 
 void solveFriction(Contact& c, PhysicsBody& a, PhysicsBody& b, const Inverse& w, double tangentMass,
                    double friction) {
-    const dvec3 va = a.vel + glm::cross(a.spin, c.normal * c.armA);
-    const dvec3 vb = b.vel + glm::cross(b.spin, -c.normal * c.armB);
-    dvec3 vt = vb - va;
-    vt -= glm::dot(vt, c.normal) * c.normal;
+    // The contact points move at v_a + ω_a × r_a·n and v_b − ω_b × r_b·n; the spin terms lie in
+    // the tangent plane already.
+    dvec3 vt = b.vel - a.vel;
+    vt -= glm::dot(vt, c.normal) * c.normal + glm::cross(c.armA * a.spin + c.armB * b.spin, c.normal);
     const dvec3 total = clampLength(c.tangentImpulse - tangentMass * vt, friction * c.normalImpulse);
     applyImpulse(a, b, c, w, total - c.tangentImpulse);
     c.tangentImpulse = total;
