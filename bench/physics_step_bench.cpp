@@ -1,6 +1,6 @@
 // physics_step_bench.cpp — times PhysicsWorld::step on the report's pile, for profiling.
 //
-//   physics_step_bench COUNT STEPS [FROM]   (pileScene(COUNT, 7), default settings)
+//   physics_step_bench COUNT STEPS [FROM [THREADS]]   (pileScene(COUNT, 7), default settings)
 // Prints ms per step, the last step's contacts and awake bodies, and a state checksum so that
 // an optimisation can be checked to leave the results bit for bit alone. Small STEPS under
 // valgrind --tool=callgrind give deterministic instruction counts; with --instr-atstart=no only
@@ -22,7 +22,9 @@ int main(int argc, char** argv) {
     const int count = argc > 1 ? std::atoi(argv[1]) : 1000;
     const int steps = argc > 2 ? std::atoi(argv[2]) : 180;
     const int from = argc > 3 ? std::atoi(argv[3]) : 0;
-    mb::PhysicsWorld world(mb::pileScene(count, 7));
+    mb::PhysicsSettings settings;
+    if (argc > 4) settings.threads = std::atoi(argv[4]);
+    mb::PhysicsWorld world(mb::pileScene(count, 7), settings);
     double busy = 0.0;
     for (int i = 0; i < steps; ++i) {
         if (i == from) CALLGRIND_START_INSTRUMENTATION;

@@ -50,6 +50,8 @@ struct Softness {
 };
 Softness makeSoftness(double hertz, double dampingRatio, double h);
 
+class Worker;
+
 struct SolverContext {
     std::vector<PhysicsBody>& bodies;    // the static body last
     std::vector<Contact>& contacts;
@@ -60,6 +62,11 @@ struct SolverContext {
     double rolling;                      // rolling resistance: torque = rolling · radius · normal force
     double h;                            // substep, s
     Softness soft;
+    // The contacts come in three runs: [0, split[0]) and [split[0], split[1]) share no dynamic
+    // body, so the solver takes the two at once, the first on `worker` (null: one thread), with
+    // the same result as one after the other; [split[1], end) joins them, after both.
+    int split[2] = {0, 0};
+    Worker* worker = nullptr;
 };
 
 // Impacts slower than this do not bounce: settings.restitutionThreshold under gravity, where

@@ -57,6 +57,8 @@ struct PhysicsSettings {
     double sleepSpeed = 0.05;           // m/s (and rad/s · radius) below which a body may sleep
     double timeToSleep = 0.5;           // s an island must stay slow before it sleeps
     double maxSpeed = 1e4;              // m/s, a guard against runaway input
+    int threads = 1;                    // 1 or 2: the solver's second thread, where the contacts
+                                        // are many; the result is the same either way
 };
 
 //-----------------------------------------------------------------------------
@@ -81,6 +83,7 @@ struct PhysicsBody {
 struct PhysicsStats {
     int contacts = 0;             // contact constraints in the last step (speculative included)
     int awake = 0;                // awake dynamic bodies
+    int halves = 0;               // contacts in the two halves that two threads may solve at once
     double maxPenetration = 0.0;  // m, deepest overlap at the end of the last step
 };
 
@@ -110,6 +113,7 @@ private:
     void collide();                  // this step's contacts, warm started from the last step
     void collideStatic(int body);
     void orderAndWarmStart();        // bottom-up solve order; impulses of persisting contacts
+    void splitInHalves();            // which contacts two threads may solve at once
     void keepImpulses();             // for the next step's warm start
     void integrateVelocities(double h);
     void integratePositions(double h);

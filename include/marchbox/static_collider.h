@@ -59,7 +59,9 @@ private:
     // Every group within `reach` of `centre`, moved to `origin`, in chain order.
     void localiseNear(const glm::dvec3& origin, const glm::dvec3& centre, double reach);
     double groundDistance(const glm::dvec3& p) const;
-    StaticHit localHit(int group, double radius);  // of the group localised at the centre
+    double localDistance() const;  // to the localised group, from the local origin
+    // The group localised at the centre, `d` its localDistance().
+    StaticHit localHit(int group, double radius, double d) const;
 
     std::vector<SdfObject> statics_;
     std::vector<Group> groups_;

@@ -90,7 +90,7 @@ int runPhysicsReport(const std::string& repoRoot) {
     std::filesystem::create_directories(docs, ec);
     std::ostringstream md;
     md << "# Physics report\n\nReproduce: `build/marchbox report physics` (RelWithDebInfo build). "
-          "Every number below was measured in one run on one core.\n\n"
+          "Every number below was measured in one run, on one core unless a row says 2 threads.\n\n"
        << "Machine: " << machineDescription() << "; "
        << "compiler " << __VERSION__ << ".\n\n"
        << "## Work precision\n\nEach analytic case runs under every step size (4 substeps, 1 iteration), "

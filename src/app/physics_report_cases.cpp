@@ -64,6 +64,18 @@ double slideError(const PhysicsSettings& settings) {
     return std::abs(w.body(0).pos.x - (v0 * ts - 0.5 * mu * kG * ts * ts + v * (t - ts)));
 }
 
+// A sphere spinning in place at ω0 = 10 rad/s on the ground, μ = 0.3: friction turns the spin into
+// rolling at v = 2/7·ω0·r (angular momentum about the contact point is kept).
+double spinError(const PhysicsSettings& s) {
+    const double w0 = 10.0;
+    Scene scene = spinScene(float(w0), 0.3f);
+    scene.world.rolling = 0.0f;  // pure Coulomb friction: rolling resistance would slow it down
+    PhysicsWorld w(scene, s);
+    for (int i = 0; i < int(std::llround(3.0 / s.dt)); ++i) w.step();
+    const double v = 2.0 / 7.0 * w0 * w.body(0).radius;
+    return std::abs(w.body(0).vel.x / v - 1.0);
+}
+
 // Kinetic energy of 64 elastic, frictionless spheres in a closed box after 30 s, against the start.
 double gasError(const PhysicsSettings& s) {
     PhysicsWorld w(gasScene(64, 3), s);
@@ -117,6 +129,7 @@ std::vector<AnalyticCase> analyticCases() {
             {"Bounce", "|third apex − e⁶·h|, m (h = 1 m, e = 0.8)", 3.0, bounceError},
             {"Head-on collision", "max |v − exact| after impact, m/s (e = 0.5, 1:3)", 1.0, headOnError},
             {"Slide to roll", "|x − exact| after 2 s, m (v0 = 5 m/s, μ = 0.3)", 2.0, slideError},
+            {"Spin to roll", "|v/(2/7·ω0·r) − 1| after 3 s (ω0 = 10 rad/s, r = 0.5 m, μ = 0.3)", 3.0, spinError},
             {"Elastic gas", "|KE(30 s)/KE(0) − 1| of 64 spheres in a box (e = 1, μ = 0)", 30.0, gasError},
             {"Newton's cradle", "max |v − exact| after 1 s, m/s (striker at 2 m/s, row of 4, e = 1)", 1.0,
              cradleError},

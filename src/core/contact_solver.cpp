@@ -1,6 +1,8 @@
 // contact_solver.cpp — normal, friction and rolling rows of sphere contacts.
 #include "marchbox/contact_solver.h"
 
+#include "marchbox/worker.h"
+
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -23,23 +25,30 @@ Inverse inverseOf(const PhysicsBody& a, const PhysicsBody& b) {
     return {a.invMass, a.invInertia, b.invMass, b.invInertia};
 }
 
-// Linear impulse p at the contact point: −p on a, +p on b.
+// Linear impulse p at the contact point: −p on a, +p on b. Both arms lie along the normal, so
+// the torques are r_a·(n × p) on a and r_b·(n × p) on b, against their spins: one cross product.
+// Body a is left alone where its inverse mass is 0 (the static body, or the lower body under
+// shock propagation): nothing would change, and the static body, shared by both halves of the
+// contacts, is never written while two threads solve them.
 void applyImpulse(PhysicsBody& a, PhysicsBody& b, const Contact& c, const Inverse& w, const dvec3& p) {
-    a.vel -= w.massA * p;
-    a.spin -= w.inertiaA * glm::cross(c.normal * c.armA, p);
+    const dvec3 np = glm::cross(c.normal, p);
+    if (w.massA > 0.0) {
+        a.vel -= w.massA * p;
+        a.spin -= (w.inertiaA * c.armA) * np;
+    }
     b.vel += w.massB * p;
-    b.spin += w.inertiaB * glm::cross(-c.normal * c.armB, p);
+    b.spin -= (w.inertiaB * c.armB) * np;
 }
 
 // An impulse along the normal: both arms are parallel to it, so it exerts no torque (the cross
 // products would only add rounding noise).
 void applyNormal(PhysicsBody& a, PhysicsBody& b, const Inverse& w, const dvec3& p) {
-    a.vel -= w.massA * p;
+    if (w.massA > 0.0) a.vel -= w.massA * p;
     b.vel += w.massB * p;
 }
 
 void applyAngular(PhysicsBody& a, PhysicsBody& b, const Inverse& w, const dvec3& l) {
-    a.spin -= w.inertiaA * l;
+    if (w.massA > 0.0) a.spin -= w.inertiaA * l;
     b.spin += w.inertiaB * l;
 }
 
@@ -83,10 +92,10 @@ void solveNormal(Contact& c, PhysicsBody& a, PhysicsBody& b, const SolverContext
 
 void solveFriction(Contact& c, PhysicsBody& a, PhysicsBody& b, const Inverse& w, double tangentMass,
                    double friction) {
-    const dvec3 va = a.vel + glm::cross(a.spin, c.normal * c.armA);
-    const dvec3 vb = b.vel + glm::cross(b.spin, -c.normal * c.armB);
-    dvec3 vt = vb - va;
-    vt -= glm::dot(vt, c.normal) * c.normal;
+    // The contact points move at v_a + ω_a × r_a·n and v_b − ω_b × r_b·n; the spin terms lie in
+    // the tangent plane already.
+    dvec3 vt = b.vel - a.vel;
+    vt -= glm::dot(vt, c.normal) * c.normal + glm::cross(c.armA * a.spin + c.armB * b.spin, c.normal);
     const dvec3 total = clampLength(c.tangentImpulse - tangentMass * vt, friction * c.normalImpulse);
     applyImpulse(a, b, c, w, total - c.tangentImpulse);
     c.tangentImpulse = total;
@@ -138,6 +147,19 @@ Inverse fixingLower(const Contact& c, const PhysicsBody& a, const PhysicsBody& b
     return aIsLower ? Inverse{0.0, 0.0, b.invMass, b.invInertia} : Inverse{a.invMass, a.invInertia, 0.0, 0.0};
 }
 
+// Runs rows(begin, end) over the two halves at once, the first on the worker, then over the
+// contacts that join them.
+template <class Rows>
+void inRuns(SolverContext& ctx, const Rows& rows) {
+    const int n = int(ctx.contacts.size());
+    auto first = [&] { rows(0, ctx.split[0]); };
+    if (ctx.worker) ctx.worker->post(first);
+    else first();
+    rows(ctx.split[0], ctx.split[1]);
+    if (ctx.worker) ctx.worker->wait();
+    rows(ctx.split[1], n);
+}
+
 }  // namespace
 
 double bounceThreshold(const SolverContext& ctx) {
@@ -170,31 +192,39 @@ void prepareContacts(SolverContext& ctx) {
 }
 
 void warmStartContacts(SolverContext& ctx) {
-    for (Contact& c : ctx.contacts) {
-        if (idle(c)) continue;
-        PhysicsBody& a = ctx.bodies[c.a];
-        PhysicsBody& b = ctx.bodies[c.b];
-        const Inverse w = inverseOf(a, b);
-        applyNormal(a, b, w, c.normalImpulse * c.normal);
-        applyImpulse(a, b, c, w, c.tangentImpulse);
-        applyAngular(a, b, w, c.rollImpulse);
-    }
+    inRuns(ctx, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            const Contact& c = ctx.contacts[size_t(i)];
+            if (idle(c)) continue;
+            PhysicsBody& a = ctx.bodies[c.a];
+            PhysicsBody& b = ctx.bodies[c.b];
+            const Inverse w = inverseOf(a, b);
+            applyNormal(a, b, w, c.normalImpulse * c.normal);
+            applyImpulse(a, b, c, w, c.tangentImpulse);
+            applyAngular(a, b, w, c.rollImpulse);
+        }
+    });
 }
 
 void solveContacts(SolverContext& ctx, bool useBias) {
     if (useBias)
         for (PhysicsBody& b : ctx.bodies) b.supported = false;
-    for (Contact& c : ctx.contacts) {
-        PhysicsBody& a = ctx.bodies[c.a];
-        PhysicsBody& b = ctx.bodies[c.b];
-        if (!useBias && c.shock) {
-            solveRows(c, a, b, ctx, c.shockMass, fixingLower(c, a, b), false);
-        } else {
-            solveRows(c, a, b, ctx, c.mass, inverseOf(a, b), useBias);
+    inRuns(ctx, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            Contact& c = ctx.contacts[size_t(i)];
+            PhysicsBody& a = ctx.bodies[c.a];
+            PhysicsBody& b = ctx.bodies[c.b];
+            if (!useBias && c.shock) {
+                solveRows(c, a, b, ctx, c.shockMass, fixingLower(c, a, b), false);
+                continue;
+            }
+            const Inverse w = inverseOf(a, b);
+            solveRows(c, a, b, ctx, c.mass, w, useBias);
             // Marked here, while the bodies are in cache, rather than in a pass of its own.
-            if (useBias && c.normalImpulse > 0.0) a.supported = b.supported = true;
+            if (useBias && c.normalImpulse > 0.0) b.supported = true;
+            if (useBias && c.normalImpulse > 0.0 && w.massA > 0.0) a.supported = true;
         }
-    }
+    });
 }
 
 // Box2D's restitution pass: only contacts that touched this step and met at more than the

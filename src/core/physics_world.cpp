@@ -6,6 +6,7 @@
 #include "marchbox/impacts.h"
 #include "marchbox/island.h"
 #include "marchbox/static_collider.h"
+#include "marchbox/worker.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,6 +30,7 @@ struct PhysicsWorld::Impl {
         double height;
         std::uint64_t key;
         int index;
+        int run;  // SolverContext::split: 0 or 1, one half; 2, both
         bool operator<(const Order& o) const { return std::tie(height, key) < std::tie(o.height, o.key); }
     };
     struct Warm {  // a contact's impulses, kept for the next step
@@ -44,6 +46,10 @@ struct PhysicsWorld::Impl {
     std::vector<Contact> contacts, sorted;
     std::vector<int> curved;  // contacts on curved static surfaces, followed every substep
     std::vector<Order> order;
+    std::vector<double> xs;
+    std::vector<char> side;  // per body: the half it is in, by x
+    int split[2] = {0, 0};
+    std::unique_ptr<Worker> worker;  // started with the first step that splits
     // Last step's impulses grouped by the contact's first dynamic body (the key's top bits):
     // body i's are warm[warmBegin[i] .. warmBegin[i + 1]), a handful, searched linearly.
     std::vector<Warm> warm;
@@ -141,6 +147,12 @@ void PhysicsWorld::step() {
     SolverContext ctx{bodies_, w.contacts, settings_, w.gravity, w.friction, w.restitution, w.rolling, h,
                       makeSoftness(std::min(settings_.contactHertz, 0.25 / h),
                                    settings_.contactDampingRatio, h)};
+    ctx.split[0] = w.split[0];
+    ctx.split[1] = w.split[1];
+    if (settings_.threads > 1 && w.split[1] > 0) {
+        if (!w.worker) w.worker = std::make_unique<Worker>();
+        ctx.worker = w.worker.get();
+    }
     if (settings_.impacts) w.impacts.resolve(ctx);
     prepareContacts(ctx);
     for (PhysicsBody& b : bodies_) b.delta = dvec3(0.0);
@@ -211,11 +223,14 @@ void PhysicsWorld::orderAndWarmStart() {
     const int staticBody = bodyCount();
     w.order.clear();
     for (size_t i = 0; i < w.contacts.size(); ++i)
-        w.order.push_back({contactHeight(w.contacts[i], bodies_), contactKey(w.contacts[i], staticBody), int(i)});
+        w.order.push_back({contactHeight(w.contacts[i], bodies_), contactKey(w.contacts[i], staticBody), int(i), 2});
     std::sort(w.order.begin(), w.order.end());
+    splitInHalves();
+    // Each run keeps the bottom-up order: a stable partition, by counting.
+    int next[3] = {0, w.split[0], w.split[1]};
     w.sorted.resize(w.contacts.size());
     for (size_t i = 0; i < w.order.size(); ++i) {
-        Contact& c = w.sorted[i] = w.contacts[size_t(w.order[i].index)];
+        Contact& c = w.sorted[size_t(next[w.order[i].run]++)] = w.contacts[size_t(w.order[i].index)];
         if (const Impl::Warm* old = w.findWarm(w.order[i].key)) {
             c.normalImpulse = old->normal;
             c.tangentImpulse = old->tangent;
@@ -226,6 +241,33 @@ void PhysicsWorld::orderAndWarmStart() {
     w.curved.clear();
     for (size_t i = 0; i < w.contacts.size(); ++i)
         if (w.contacts[i].curved) w.curved.push_back(int(i));
+}
+
+// Bodies left of the median x form one half, the rest the other; a contact within one half goes
+// to its run, one across the cut to the joining run, solved after both. The cut depends on the
+// bodies alone, never on the thread count, so one thread or two give the same bytes. Few
+// contacts are not worth a second thread: they all go to the joining run, in order.
+void PhysicsWorld::splitInHalves() {
+    constexpr size_t kMinContacts = 512;
+    Impl& w = *impl_;
+    const int n = bodyCount();
+    w.split[0] = w.split[1] = 0;
+    if (w.order.size() < kMinContacts) return;
+    w.xs.resize(size_t(n));
+    for (int i = 0; i < n; ++i) w.xs[size_t(i)] = bodies_[i].pos.x;
+    const auto middle = w.xs.begin() + n / 2;
+    std::nth_element(w.xs.begin(), middle, w.xs.end());
+    w.side.resize(size_t(n) + 1);
+    for (int i = 0; i < n; ++i) w.side[size_t(i)] = bodies_[i].pos.x < *middle ? 0 : 1;
+    int count[3] = {0, 0, 0};
+    for (Impl::Order& o : w.order) {
+        const Contact& c = w.contacts[size_t(o.index)];
+        const int sb = w.side[size_t(c.b)];
+        o.run = c.a == n || w.side[size_t(c.a)] == sb ? sb : 2;
+        ++count[o.run];
+    }
+    w.split[0] = count[0];
+    w.split[1] = count[0] + count[1];
 }
 
 // The bend of each curved surface along the move the body would make this substep at its
@@ -346,6 +388,7 @@ void PhysicsWorld::sweepFast() {
 void PhysicsWorld::updateStats() {
     stats_ = PhysicsStats{};
     stats_.contacts = int(impl_->contacts.size());
+    stats_.halves = impl_->split[1];
     for (const Contact& c : impl_->contacts)
         stats_.maxPenetration = std::max(stats_.maxPenetration, -contactSeparation(c, bodies_));
     for (int i = 0; i < bodyCount(); ++i) stats_.awake += bodies_[i].awake ? 1 : 0;

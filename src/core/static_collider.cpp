@@ -72,18 +72,21 @@ void StaticCollider::query(const glm::dvec3& centre, double radius, double reach
     for (size_t g = 0; g < groups_.size(); ++g) {
         if (lowerBound(groups_[g], centre) - radius >= reach) continue;
         localise(groups_[g], centre, false);
-        const StaticHit h = localHit(int(g), radius);
-        if (h.separation < reach) out.push_back(h);
+        // The distance alone rules most groups out (a pile's far walls); only a surface in
+        // reach pays for the four samples of its normal.
+        const double d = localDistance();
+        if (d - radius < reach) out.push_back(localHit(int(g), radius, d));
     }
 }
 
 StaticHit StaticCollider::hit(int feature, const glm::dvec3& centre, double radius) {
     localise(groups_[size_t(feature - 1)], centre, false);
-    return localHit(feature - 1, radius);
+    return localHit(feature - 1, radius, localDistance());
 }
 
-StaticHit StaticCollider::localHit(int group, double radius) {
-    const double d = mapObjects(local_, glm::vec3(0.0f)).d;
+double StaticCollider::localDistance() const { return mapObjects(local_, glm::vec3(0.0f)).d; }
+
+StaticHit StaticCollider::localHit(int group, double radius, double d) const {
     // Tetrahedral central difference (Quilez): four samples at the corners k of a tetrahedron,
     // n ∝ Σ k·f(h·k). Error O(h²·curvature); h scales with the sphere so it stays above the
     // float noise of the local distances.
