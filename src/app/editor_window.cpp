@@ -3,6 +3,7 @@
 #include "editor_window.h"
 
 #include "args.h"
+#include "imgui_input.h"
 #include "marchbox/editor/events.h"
 #include "marchbox/editor/files.h"
 #include "marchbox/gl/gl.h"
@@ -64,7 +65,8 @@ private:
     UiState ui_;
     RenderDialog renderDialog_;
     FrameStats stats_;
-    ViewportInput input_;
+    InputState input_;  // this frame's, taken from the window's queue
+    ViewportInput viewport_;
     double frameStart_ = 0.0;  // glfwGetTime() as this frame began
     bool imgui_ = false;
 };
@@ -94,7 +96,7 @@ bool App::start(std::string* error) {
     imgui_ = true;
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working folder
     ImGui::StyleColorsDark();
-    ImGui_ImplGlfw_InitForOpenGL(window_.handle(), true);
+    ImGui_ImplGlfw_InitForOpenGL(window_.handle(), false);  // the window queues the input
     ImGui_ImplOpenGL3_Init("#version 330");
     return view_.init(editor_.scene(), error);
 }
@@ -106,9 +108,10 @@ void App::run() {
     double last = glfwGetTime();
     bool ready = false;
     while (!editor_.quitRequested()) {
-        // With the picture finished and nothing moving, sleep until input comes; the timeout
-        // still looks at shaders/, background compiles and ImGui's own timers a few times a second.
-        if (idle()) glfwWaitEventsTimeout(kIdleWaitSeconds);
+        // With the picture finished, nothing moving and no input waiting for its frame, sleep
+        // until input comes; the timeout still looks at shaders/, background compiles and
+        // ImGui's own timers a few times a second.
+        if (idle() && window_.input().empty()) glfwWaitEventsTimeout(kIdleWaitSeconds);
         else glfwPollEvents();
         if (window_.closeRequested()) {
             window_.clearCloseRequest();
@@ -131,13 +134,15 @@ void App::run() {
 
 bool App::idle() const {
     return view_.done() && !renderDialog_.running() && !editor_.simulation().playing() &&
-           !ui_.previewOrbit && !input_.dragging();
+           !ui_.previewOrbit && !viewport_.dragging();
 }
 
 void App::frame(double seconds, int width, int height) {
     frameStart_ = glfwGetTime();
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    window_.input().takeFrame(&input_, frameStart_, ImGui::GetIO().WantTextInput);
+    feedImGui(input_, seconds);
     ImGui::NewFrame();
     UiContext c{editor_, ui_, stats_, view_.shaderLog()};
     buildUi(c, width, height, seconds);
@@ -150,9 +155,9 @@ void App::frame(double seconds, int width, int height) {
 }
 
 void App::buildUi(UiContext& c, int width, int height, double seconds) {
-    handleShortcuts(c, window_.takeKeys());
+    handleShortcuts(c, input_.presses);
     openDrops(c);
-    input_.update(c, glm::vec2(width, height), float(seconds));
+    viewport_.update(c, glm::vec2(width, height), float(seconds));
     drawMenuBar(c);
     drawEditWindows(c);
     drawSimulationWindow(c);
@@ -160,7 +165,7 @@ void App::buildUi(UiContext& c, int width, int height, double seconds) {
     drawDialogs(c);
     renderDialog_.draw(c);
     // A released widget or drag ends its undo step; the next change starts a new one.
-    if (!ImGui::IsAnyItemActive() && !input_.dragging()) editor_.endEdit();
+    if (!ImGui::IsAnyItemActive() && !viewport_.dragging()) editor_.endEdit();
 }
 
 void App::openDrops(UiContext& c) {

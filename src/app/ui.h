@@ -3,10 +3,10 @@
 #pragma once
 
 #include "marchbox/editor/editor.h"
+#include "marchbox/editor/input_queue.h"
 #include "marchbox/editor/recent.h"
 #include "marchbox/gl/renderer.h"
 #include "scene_image.h"
-#include "window.h"
 
 #include <string>
 #include <vector>

@@ -5,6 +5,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <imgui.h>
 
 namespace mb {
@@ -53,10 +54,19 @@ void ViewportInput::press(UiContext& c) {
 
 void ViewportInput::hold(UiContext& c) {
     ImGuiIO& io = ImGui::GetIO();
-    if (!ImGui::IsMouseDown(button_)) return release(c);
-    moved_ = moved_ || ImGui::IsMouseDragging(button_);
+    // The frame that sees the button up still moves by the motion before the release: a drag
+    // whose press and release reach one frame apart moves all the same. ImGui stops counting
+    // the distance dragged once the button is up, so it is measured here.
+    const ImVec2 from = io.MouseClickedPos[button_], to = io.MousePos;
+    if (ImGui::IsMousePosValid(&to) && ImGui::IsMousePosValid(&from))
+        moved_ = moved_ || glm::distance(glm::vec2(to.x, to.y), glm::vec2(from.x, from.y)) >= io.MouseDragThreshold;
     glm::vec2 delta(io.MouseDelta.x, io.MouseDelta.y);
-    if (!moved_ || delta == glm::vec2(0.0f)) return;
+    if (moved_ && delta != glm::vec2(0.0f)) follow(c, delta);
+    if (!ImGui::IsMouseDown(button_)) release(c);
+}
+
+void ViewportInput::follow(UiContext& c, glm::vec2 delta) {
+    ImGuiIO& io = ImGui::GetIO();
     switch (drag_) {
         case Drag::Orbit: orbitCamera(c.editor.view(), delta, controls_); break;
         case Drag::Pan: panCamera(c.editor.view(), delta * scale_.y, view_.y); break;

@@ -21,6 +21,7 @@ private:
     glm::vec2 pixel(glm::vec2 mouse) const;  // window coordinates to a bottom-up view pixel
     void press(UiContext& c);
     void hold(UiContext& c);
+    void follow(UiContext& c, glm::vec2 delta);  // the drag moved the mouse by delta
     void release(UiContext& c);
     void keys(UiContext& c, float seconds);
 

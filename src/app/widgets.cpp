@@ -188,6 +188,8 @@ void markItem(const std::string& name) {
     static std::map<std::string, Mark> last;
     ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
     ImVec2 centre((lo.x + hi.x) * 0.5f, (lo.y + hi.y) * 0.5f);
+    // Nor from a frame where the window has yet to grow to a new row: it is drawn clipped.
+    if (!ImGui::GetCurrentWindow()->ClipRect.Contains(centre)) return;
     const int frame = ImGui::GetFrameCount();
     auto it = last.find(name);
     // Written when the widget moves or shows again after a gap (a popup reopened), so a test

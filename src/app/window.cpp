@@ -35,7 +35,13 @@ bool Window::create(const std::string& title, int width, int height, std::string
     glfwSwapInterval(1);  // vsync: the editor need not draw faster than the screen shows
     glfwSetWindowUserPointer(window_, this);
     glfwSetDropCallback(window_, onDrop);
+    // No focus callback: GLFW releases the keys and buttons held when the window loses focus.
+    glfwSetCursorPosCallback(window_, onMove);
+    glfwSetCursorEnterCallback(window_, onEnter);
+    glfwSetMouseButtonCallback(window_, onButton);
+    glfwSetScrollCallback(window_, onScroll);
     glfwSetKeyCallback(window_, onKey);
+    glfwSetCharCallback(window_, onChar);
     return loadGl(false, error);
 }
 
@@ -58,12 +64,6 @@ std::vector<std::string> Window::takeDrops() {
     return out;
 }
 
-std::vector<KeyPress> Window::takeKeys() {
-    std::vector<KeyPress> out;
-    out.swap(keys_);
-    return out;
-}
-
 void Window::swap() { glfwSwapBuffers(window_); }
 
 void Window::onDrop(GLFWwindow* w, int count, const char** paths) {
@@ -71,9 +71,35 @@ void Window::onDrop(GLFWwindow* w, int count, const char** paths) {
     for (int i = 0; i < count; ++i) self->drops_.push_back(paths[i]);
 }
 
+// Each event is stamped with the time it is received: during the poll that follows it.
+static void enqueue(GLFWwindow* w, InputEvent e) {
+    e.time = glfwGetTime();
+    static_cast<Window*>(glfwGetWindowUserPointer(w))->input().push(e);
+}
+
+void Window::onMove(GLFWwindow* w, double x, double y) {
+    enqueue(w, {.kind = InputEvent::Kind::Move, .at = {float(x), float(y)}});
+}
+
+void Window::onEnter(GLFWwindow* w, int entered) {
+    if (!entered) enqueue(w, {.kind = InputEvent::Kind::Leave});  // entering also moves the mouse
+}
+
+void Window::onButton(GLFWwindow* w, int button, int action, int) {
+    enqueue(w, {.kind = InputEvent::Kind::Button, .code = button, .down = action == GLFW_PRESS});
+}
+
+void Window::onScroll(GLFWwindow* w, double x, double y) {
+    enqueue(w, {.kind = InputEvent::Kind::Wheel, .at = {float(x), float(y)}});
+}
+
 void Window::onKey(GLFWwindow* w, int key, int, int action, int mods) {
-    if (action != GLFW_PRESS) return;
-    static_cast<Window*>(glfwGetWindowUserPointer(w))->keys_.push_back({key, mods});
+    if (action == GLFW_REPEAT) return;  // ImGui repeats held keys itself
+    enqueue(w, {.kind = InputEvent::Kind::Key, .code = key, .down = action == GLFW_PRESS, .mods = mods});
+}
+
+void Window::onChar(GLFWwindow* w, unsigned int codepoint) {
+    enqueue(w, {.kind = InputEvent::Kind::Text, .code = int(codepoint)});
 }
 
 }  // namespace mb
