@@ -135,7 +135,8 @@ bool fragmentSource(const ShaderFeatures& f, std::string* out, std::string* erro
         *error = "march.frag: no '#pragma marchbox scene' line for the compiled scene";
         return false;
     }
-    resolved.replace(at, marker.size(), f.compiled ? compileSceneMap(f.layout) : compileShapeSwitch(f.shapes));
+    std::string scene = (f.compiled ? compileSceneMap(f.layout) + "\n" : "") + compileShapeSwitch(f.shapes);
+    resolved.replace(at, marker.size(), scene);
     *out = shaderPrefix(f) + resolved;
     return true;
 }

@@ -268,14 +268,41 @@ def case_save_as(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+def frames_done(app):
+    return sum(1 for l in app.events() if l.startswith('scene-frame ') and l.split()[2] == 'done')
+
+
+def settle_after(app, done):
+    """Waits for a picture to finish refining after the `done` finished already."""
+    deadline = time.time() + 90
+    while frames_done(app) <= done:
+        check(time.time() < deadline, 'the picture did not finish refining within 90 s')
+        time.sleep(0.05)
+
+
+def is_orange(rgb):  # the selection outline's (255, 153, 25)
+    return rgb[0] > 220 and 120 < rgb[1] < 190 and rgb[2] < 70
+
+
 def case_select(app, scene):
-    """A click on a sphere selects and highlights it; Delete removes it; Ctrl+Z brings it back."""
-    x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
-    before = app.screenshot().pixel(x, y)
+    """A click on a sphere selects it: an orange ring shows around it and its own colour stays
+    as it was; Delete removes it; Ctrl+Z brings it back."""
+    pos, radius = scene_values(scene, 'object', 'pos')[0], scene_values(scene, 'object', 'radius')[0][0]
+    x, y = project(scene, pos)
+    r = y - project(scene, [pos[0], pos[1] + radius, pos[2]])[1]  # its outline's radius, near enough
+    ring = [(int(x + (r + dr) * math.cos(a / 18 * math.pi)), int(y + (r + dr) * math.sin(a / 18 * math.pi)))
+            for a in range(36) for dr in (1, 2)]
+    app.settle()
+    before, done = app.screenshot(), frames_done(app)
     app.click(x, y)
     check(app.wait('select ') == 'select object 0', 'the red sphere was not selected')
-    after = app.screenshot().pixel(x, y)
-    check(after[1] > before[1] + 40, 'no highlight: %s then %s' % (before, after))
+    settle_after(app, done)
+    after = app.screenshot()
+    changed = max(abs(p - q) for p, q in zip(before.pixel(x, y), after.pixel(x, y)))
+    check(changed <= 2, 'the selected sphere changed colour: %s then %s' % (before.pixel(x, y), after.pixel(x, y)))
+    orange = [sum(1 for p in ring if is_orange(img.pixel(*p))) for img in (before, after)]
+    check(orange[0] == 0 and orange[1] > len(ring) // 3,
+          'no orange ring around the sphere: %d then %d of %d points' % (orange[0], orange[1], len(ring)))
     app.click(390, 60)  # the sky
     check(app.wait('select ') == 'select none', 'clicking the sky kept a selection')
     app.click(x, y)
@@ -577,7 +604,7 @@ def case_render(app, scene):
     check((img.width, img.height) == (300, 200), 'the PNG is %dx%d' % (img.width, img.height))
     check(len({img.pixel(x, y) for x in range(0, 300, 15) for y in range(0, 200, 15)}) > 10,
           'the render is nearly uniform')
-    # The window's picture is drawn again after the render (a selection tints it) with the
+    # The window's picture is drawn again after the render (a selection outlines it) with the
     # window's own scene: the render's renderer, gone now, had bound its buffers in its place.
     app.menu('File', 'Render...')  # closes the dialog, which covers the sphere
     x, y = select_first(app, scene)

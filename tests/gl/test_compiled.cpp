@@ -121,5 +121,5 @@ TEST(Compiled, TheSceneMapIsOneLinePerObject) {
                            "sdTorus(p - o2.posBound.xyz, o2.shape.x, o2.sizeMinor.w), 0.0, 2.0);  // 2: torus",
                            "sdCapsule(o6.toLocal * (p - o6.posBound.xyz), o6.shape.y, o6.shape.x), 0.0, 6.0);  // 6: capsule, turned"};
     for (const char* line : lines) EXPECT_NE(map.find(line), std::string::npos) << line << "\nin\n" << map;
-    EXPECT_EQ(src.find("float sdObjectLocal("), std::string::npos) << "no type switch in a compiled scene";
+    EXPECT_EQ(map.find("sdObjectLocal("), std::string::npos) << "no type switch in a compiled map";
 }
