@@ -161,6 +161,7 @@ void App::buildUi(UiContext& c, int width, int height, double seconds) {
     renderDialog_.draw(c);
     // A released widget or drag ends its undo step; the next change starts a new one.
     if (!ImGui::IsAnyItemActive() && !input_.dragging()) editor_.endEdit();
+    ui_.messages.endFrame(editor_.selection(), ImGui::GetTime());
 }
 
 void App::openDrops(UiContext& c) {
@@ -200,7 +201,7 @@ void App::screenshot(int width, int height) {
     if (saveScreenshot(width, height, envOr("MARCHBOX_SCREENSHOT_DIR", "."), &path, &error))
         emitEvent("screenshot " + path);
     else
-        ui_.message = error;
+        *ui_.messages.at(Place::Status) = error;
 }
 
 std::string App::title() const {

@@ -47,8 +47,14 @@ static void recentMenu(UiContext& c) {
     ImGui::Separator();
     if (menuItem("Open Recent", "Clear list")) {
         std::string why = c.ui.recent.clear();
-        if (!why.empty()) c.ui.message = why;
+        if (!why.empty()) *c.ui.messages.at(Place::Status) = why;
     }
+}
+
+// Why Delete refused: in the selection's panel when it is open, else on the status line.
+static std::string* deleteMessage(UiContext& c) {
+    const Place panel = itemPlace(c.editor.selection().kind);
+    return c.ui.messages.at(c.ui.messages.onScreen(panel) ? panel : Place::Status);
 }
 
 static void fileMenu(UiContext& c) {
@@ -79,7 +85,7 @@ static void editMenu(UiContext& c) {
     if (menuItem("Edit", "Lights", nullptr, c.ui.showLights)) c.ui.showLights = !c.ui.showLights;
     ImGui::Separator();
     if (menuItem("Edit", "Delete selected", "Del", false, !e.selection().empty()))
-        e.removeSelected(&c.ui.message);
+        e.removeSelected(deleteMessage(c));
     if (menuItem("Edit", "Random velocities", "J")) e.kick();
 }
 
@@ -171,7 +177,7 @@ static void plainShortcut(UiContext& c, const KeyPress& k) {
     Editor& e = c.editor;
     switch (k.key) {
         case GLFW_KEY_SPACE: e.togglePlay(); break;
-        case GLFW_KEY_DELETE: e.removeSelected(&c.ui.message); break;
+        case GLFW_KEY_DELETE: e.removeSelected(deleteMessage(c)); break;
         case GLFW_KEY_J: e.kick(); break;
         case GLFW_KEY_1: c.ui.previewOrbit = !c.ui.previewOrbit; break;
         case GLFW_KEY_F: c.ui.render.fog = !c.ui.render.fog; break;

@@ -24,7 +24,7 @@ static const char* const kShadowNames[] = {"none", "hard", "soft"};
 
 static void cameraFields(UiContext& c) {
     Camera cam = c.editor.scene().camera;
-    FieldEdit e{false, 0, &c.ui.message};
+    FieldEdit e{false, 0, c.ui.messages.at(Place::View)};
     fieldVec3("position", Field::CameraPosition, &cam.pos, e);
     fieldVec3("target", Field::CameraTarget, &cam.target, e);
     fieldFloat("fov", Field::Fov, &cam.fov, e);
@@ -35,7 +35,7 @@ static void cameraFields(UiContext& c) {
 
 static void renderFields(UiContext& c) {
     RenderSettings r = c.editor.scene().render;
-    FieldEdit e{false, 0, &c.ui.message};
+    FieldEdit e{false, 0, c.ui.messages.at(Place::View)};
     fieldInt("steps", Field::Steps, &r.steps, e);
     fieldFloat("epsilon", Field::Epsilon, &r.epsilon, e);
     fieldCombo("shadows", &r.shadows, kShadowNames, 3, e, "None, hard, or soft (softness below).");
@@ -60,6 +60,7 @@ static void debugView(UiState& ui) {
     itemTooltip(itemPath("post pass"), "FXAA smooths edges after the march. Not saved.");
     ImGui::SliderFloat("shadow softness", &ui.render.quality.softness, 2.0f, 64.0f, "k = %.1f",
                        ImGuiSliderFlags_Logarithmic);
+    markItem(itemPath("shadow softness"));
     itemTooltip(itemPath("shadow softness"), "k of the soft-shadow estimate, 2 to 64: lower is softer.\nNot saved.");
 }
 
@@ -71,8 +72,7 @@ void postModeCombo(UiState& ui) {
 
 static void viewWindow(UiContext& c) {
     if (!c.ui.showView) return;
-    ImGui::SetNextWindowPos(ImVec2(380, 260), ImGuiCond_FirstUseEver);
-    if (ImGui::Begin("View", &c.ui.showView, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (beginPanel(c, Panel::View, "View", &c.ui.showView)) {
         ImGui::TextDisabled("Camera");
         cameraFields(c);
         ImGui::Separator();
@@ -80,14 +80,14 @@ static void viewWindow(UiContext& c) {
         renderFields(c);
         ImGui::Separator();
         debugView(c.ui);
-        fieldErrorLine(c.ui.message);
+        messageLine(c, Place::View);
     }
     ImGui::End();
 }
 
-static void helpWindow(UiState& ui) {
-    if (!ui.showHelp) return;
-    if (ImGui::Begin("Controls", &ui.showHelp, ImGuiWindowFlags_AlwaysAutoResize)) {
+static void helpWindow(UiContext& c) {
+    if (!c.ui.showHelp) return;
+    if (beginPanel(c, Panel::Controls, "Controls", &c.ui.showHelp)) {
         ImGui::TextUnformatted(
             "Left drag            orbit the camera about its target\n"
             "Wheel                zoom\n"
@@ -110,6 +110,7 @@ static void helpWindow(UiState& ui) {
 }
 
 static void statsOverlay(UiContext& c) {
+    c.ui.statsBottom = 0.0f;  // the right column may go up to the menu bar
     if (!c.ui.showStats) return;
     const FrameStats& s = c.stats;
     ImGuiIO& io = ImGui::GetIO();
@@ -134,6 +135,7 @@ static void statsOverlay(UiContext& c) {
                          std::max(worst, 1.0f), ImVec2(200, 24));
         ImGui::Text("%zu objects%s", c.editor.scene().objects.size(),
                     c.editor.simulation().playing() ? "   playing" : "");
+        c.ui.statsBottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
     }
     ImGui::End();
 }
@@ -156,11 +158,25 @@ static void shaderLogWindow(const std::string& log) {
     ImGui::End();
 }
 
+// Failures no panel owns, along the bottom until Messages lets them go.
+static void statusLine(UiContext& c) {
+    const std::string& text = c.ui.messages.text(Place::Status);
+    if (text.empty()) return;
+    ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y - 10), ImGuiCond_Always, ImVec2(0.5f, 1));
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+    if (ImGui::Begin("##status", nullptr, flags)) messageLine(c, Place::Status);
+    ImGui::End();
+}
+
 void drawViewWindows(UiContext& c) {
     viewWindow(c);
-    helpWindow(c.ui);
+    helpWindow(c);
     statsOverlay(c);
     shaderLogWindow(c.shaderLog);
+    statusLine(c);
 }
 
 }  // namespace mb

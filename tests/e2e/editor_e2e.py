@@ -23,7 +23,7 @@ from xscreen import Screen  # noqa: E402
 WINDOW = (640, 400)  # small: a software renderer draws it a few times a second
 HOLD = 0.4           # s a key or button stays down: longer than a slow frame
 # Cases that need another window or scene than the small default (paths from the source tree).
-SIZES = {'live': (1280, 720)}
+SIZES = {'live': (1280, 720), 'panels': (960, 600)}
 SCENES = {'live': 'tests/e2e/live_scene.txt'}
 
 
@@ -729,6 +729,109 @@ def case_live(app, scene):
     if full_ms < 1000:
         raise Skip('a full-quality frame takes %d ms here: the bounds hold without the live view' % full_ms)
     app.key('Escape')  # the camera moved, nothing was edited: no question
+    check(app.finish() == 0, 'exit status not 0')
+
+
+# [panels] ---------------------------------------------------------------------
+def panel(app, name):
+    """The panel's rectangle as last drawn, (x0, y0, x1, y1), from its "panel" marks."""
+    for line in reversed(app.events()):
+        if line.startswith('panel %s ' % name):
+            x, y, w, h = map(int, line.split()[-4:])
+            return x, y, x + w, y + h
+    raise Failure('panel %s never drawn' % name)
+
+
+def overlap(a, b):
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def scroll_into(app, name, rect, timeout=20):
+    """Turns the wheel over rect until widget name shows inside it; returns its centre."""
+    app.move((rect[0] + rect[2]) // 2, (rect[1] + rect[3]) // 2)
+    deadline = time.time() + timeout
+    while time.time() < deadline:
+        x, y = app.widget(name, fresh=False)
+        if rect[1] + 20 < y < rect[3] - 10:
+            return x, y
+        xdotool('click', 5)  # the wheel, down
+        time.sleep(0.2)
+    raise Failure('%s stayed at %d,%d, outside %s, however the wheel turned' % (name, x, y, rect))
+
+
+def case_panels(app, scene):
+    """At 960x600 every panel fits the window: with Simulation open beside it, the View panel's
+    last field is out of sight until the wheel scrolls it up; Materials and Lights open clear
+    of Objects, View and Simulation."""
+    app.menu('Simulation', 'Settings')
+    app.menu('View', 'Camera and render')
+    app.wait('panel View ')
+    time.sleep(0.5)  # an auto-sized window settles in a frame or two
+    view = panel(app, 'View')
+    check(view[3] <= WINDOW[1], 'the View panel runs off the bottom: %s' % (view,))
+    last = 'View/shadow softness'
+    check(app.widget(last, fresh=False)[1] > view[3], '%s shows unscrolled: nothing to scroll' % last)
+    x, y = scroll_into(app, last, view)
+    # Its label, right of the 208-pixel field, light on the panel's dark background.
+    check(text_in(app.screenshot(), x + 150, y), 'no label drawn beside %d,%d after scrolling' % (x, y))
+    app.menu('Edit', 'Materials')
+    app.wait('panel Materials ')
+    app.menu('Edit', 'Lights')
+    app.wait('panel Lights ')
+    time.sleep(0.5)
+    names = ('Objects', 'Materials', 'Lights', 'View', 'Simulation')
+    rects = {n: panel(app, n) for n in names}
+    for n, r in rects.items():
+        check(r[0] >= 0 and r[1] >= 19 and r[2] <= WINDOW[0] and r[3] <= WINDOW[1],
+              '%s lies outside the window: %s' % (n, r))
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            check(not overlap(rects[a], rects[b]), '%s %s overlaps %s %s' % (a, rects[a], b, rects[b]))
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+# [messages] -------------------------------------------------------------------
+def red_text(img, rect):
+    """Pixels of fieldErrorLine's red (255, 115, 102) inside rect (x0, y0, x1, y1)."""
+    return sum(1 for x in range(max(rect[0], 0), min(rect[2], img.width))
+               for y in range(max(rect[1], 0), min(rect[3], img.height))
+               if img.pixel(x, y)[0] > 230 and 95 < img.pixel(x, y)[1] < 135 and 80 < img.pixel(x, y)[2] < 120)
+
+
+def case_messages(app, scene):
+    """A refusal shows in the panel that raised it and goes when the selection changes; a Save
+    As failure shows in its dialog and goes with it, never in the Objects panel."""
+    app.menu('Edit', 'Lights')
+    app.click_widget('Lights/0 point')
+    app.wait('select light 0')
+    scroll_into(app, 'Lights/intensity', panel(app, 'Lights'))
+    app.type_into('Lights/intensity', '1e9', fresh=False)
+    app.wait('refuse intensity ')
+    app.move(WINDOW[0] - 20, WINDOW[1] - 20)  # no tooltip over the panel
+    time.sleep(0.5)
+    check(red_text(app.screenshot(), panel(app, 'Lights')) > 20, 'the refusal is not in the Lights panel')
+    select_first(app, scene)
+    time.sleep(0.3)
+    img = app.screenshot()
+    for name in ('Objects', 'Lights'):
+        check(red_text(img, panel(app, name)) == 0, 'the Lights refusal still shows in %s' % name)
+
+    app.menu('File', 'Save As...')
+    app.wait('typing Save scene as/path')
+    app.type('/no-such-folder/scene.txt')
+    app.key('Return')
+    app.wait('save-failed ')
+    time.sleep(0.3)
+    img = app.screenshot()
+    check(red_text(img, panel(app, 'Save scene as')) > 20, 'the Save As failure is not in its dialog')
+    app.key('Escape')
+    app.wait('popup Save scene as closed')
+    time.sleep(0.3)
+    img = app.screenshot()
+    for name in ('Objects', 'Lights'):
+        check(red_text(img, panel(app, name)) == 0, 'the Save As failure shows in %s' % name)
+    app.key('Escape')
     check(app.finish() == 0, 'exit status not 0')
 
 
