@@ -103,6 +103,19 @@ static void togglePost(RenderOptions& o, PostMode mode) {
     o.post = o.post == PostMode::None ? mode : PostMode::None;
 }
 
+static const char* kNoFog = "this scene has no fog to show: set View > fog above 0 first";
+
+// F and View > Fog show or hide the scene's fog. A scene without fog has none to show: rather
+// than tick a box that changes nothing, the key says so and the menu item is disabled.
+static void toggleFog(UiContext& c) {
+    if (c.editor.scene().render.fog > 0.0f) {
+        c.ui.render.fog = !c.ui.render.fog;
+        return;
+    }
+    *c.ui.messages.at(Place::Status) = kNoFog;
+    emitEvent(std::string("refuse ") + kNoFog);
+}
+
 static void viewMenu(UiContext& c) {
     UiState& ui = c.ui;
     if (menuItem("View", "Camera and render", nullptr, ui.showView)) ui.showView = !ui.showView;
@@ -112,7 +125,9 @@ static void viewMenu(UiContext& c) {
                 ui.render.mode = RenderMode(m);
         ImGui::EndMenu();
     }
-    if (menuItem("View", "Fog", "F", ui.render.fog)) ui.render.fog = !ui.render.fog;
+    const bool fog = c.editor.scene().render.fog > 0.0f;
+    if (menuItem("View", "Fog", "F", fog && ui.render.fog, fog)) toggleFog(c);
+    if (!fog) itemTooltip("View/Fog", kNoFog);
     if (menuItem("View", "FXAA", "P", ui.render.post != PostMode::None)) togglePost(ui.render, PostMode::Fxaa);
     if (menuItem("View", "Orbit preview", "1", ui.previewOrbit)) ui.previewOrbit = !ui.previewOrbit;
     if (menuItem("View", "Statistics", nullptr, ui.showStats)) ui.showStats = !ui.showStats;
@@ -180,7 +195,7 @@ static void plainShortcut(UiContext& c, const KeyPress& k) {
         case GLFW_KEY_DELETE: e.removeSelected(deleteMessage(c)); break;
         case GLFW_KEY_J: e.kick(); break;
         case GLFW_KEY_1: c.ui.previewOrbit = !c.ui.previewOrbit; break;
-        case GLFW_KEY_F: c.ui.render.fog = !c.ui.render.fog; break;
+        case GLFW_KEY_F: toggleFog(c); break;
         case GLFW_KEY_P: togglePost(c.ui.render, PostMode::Fxaa); break;
         case GLFW_KEY_ESCAPE: request(c, Leave::Exit); break;
         default: break;

@@ -3,6 +3,8 @@
 #include "ui.h"
 #include "widgets.h"
 
+#include "marchbox/editor/controls.h"
+
 #include <algorithm>
 #include <imgui.h>
 
@@ -46,7 +48,8 @@ static void renderFields(UiContext& c) {
     if (e.changed) c.editor.edit("Edit render settings", [&](Scene& s) { s.render = r; }, e.key);
 }
 
-static void debugView(UiState& ui) {
+static void debugView(UiContext& c) {
+    UiState& ui = c.ui;
     const char* names[kRenderModeCount];
     for (int m = 0; m < kRenderModeCount; ++m) names[m] = renderModeName(RenderMode(m));
     int mode = int(ui.render.mode);
@@ -54,8 +57,14 @@ static void debugView(UiState& ui) {
     itemTooltip(itemPath("debug view"), "What the view shows: the shaded picture or one of its parts.\nNot saved.");
     ImGui::Checkbox("uber shader", &ui.render.uber);
     itemTooltip(itemPath("uber shader"), "Draw with the general shader instead of the one compiled\nfor this scene. Not saved.");
-    ImGui::Checkbox("fog (F)", &ui.render.fog);
-    itemTooltip(itemPath("fog (F)"), "Shows the scene's fog (render fog density). Not saved.");
+    // A scene without fog has none to show: unticked and disabled, not a box that does nothing.
+    const bool sceneFog = c.editor.scene().render.fog > 0.0f;
+    bool shown = sceneFog && ui.render.fog;
+    ImGui::BeginDisabled(!sceneFog);
+    if (ImGui::Checkbox("fog (F)", &shown)) ui.render.fog = shown;
+    ImGui::EndDisabled();
+    itemTooltip(itemPath("fog (F)"), sceneFog ? "Shows the scene's fog (render fog above). Not saved."
+                                              : "This scene has no fog: set fog above 0 to see it.");
     postModeCombo(ui);
     itemTooltip(itemPath("post pass"), "FXAA smooths edges after the march. Not saved.");
     ImGui::SliderFloat("shadow softness", &ui.render.quality.softness, 2.0f, 64.0f, "k = %.1f",
@@ -79,32 +88,27 @@ static void viewWindow(UiContext& c) {
         ImGui::TextDisabled("Render (saved with the scene)");
         renderFields(c);
         ImGui::Separator();
-        debugView(c.ui);
+        debugView(c);
         messageLine(c, Place::View);
     }
     ImGui::End();
 }
 
+// Help > Controls: editorControls(), the table README's editor section lists too.
 static void helpWindow(UiContext& c) {
     if (!c.ui.showHelp) return;
-    if (beginPanel(c, Panel::Controls, "Controls", &c.ui.showHelp)) {
-        ImGui::TextUnformatted(
-            "Left drag            orbit the camera about its target\n"
-            "Wheel                zoom\n"
-            "Middle / Shift drag  pan\n"
-            "W A S D, Q E         fly; 1 toggles an orbit preview\n"
-            "Left click           select the object under the mouse\n"
-            "Right click          edit the object under the mouse\n"
-            "Ctrl drag            move the selected object over the ground\n"
-            "Delete               delete the selection\n"
-            "J                    random velocities for the dynamic spheres\n"
-            "Space                play / pause the simulation\n"
-            "Ctrl+Z, Ctrl+Y       undo, redo (a simulation run is one step)\n"
-            "Ctrl+N, Ctrl+O, Ctrl+S   new, open, save\n"
-            "F12                  screenshot (PNG)\n"
-            "Esc                  close the open menu, popup or dialog; with none,\n"
-            "                     quit, asking first about unsaved changes\n"
-            "Drop a .txt file on the window to open it.");
+    if (beginPanel(c, Panel::Controls, "Controls", &c.ui.showHelp) &&
+        ImGui::BeginTable("controls", 2, ImGuiTableFlags_RowBg)) {
+        ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 120.0f);
+        ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
+        for (const Control& k : editorControls()) {
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(k.keys);
+            ImGui::TableNextColumn();
+            ImGui::TextWrapped("%s", k.action);
+        }
+        ImGui::EndTable();
+        markItem("Controls/table");
     }
     ImGui::End();
 }

@@ -155,7 +155,8 @@ void itemTooltip(const std::string& name, const std::string& text) {
     static double since = 0.0;
     static int seenFrame = -2, shownFrame = -2;
     const int frame = ImGui::GetFrameCount();
-    if (!ImGui::IsItemHovered() || ImGui::IsItemActive()) {
+    // A disabled item still says why it is disabled.
+    if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) || ImGui::IsItemActive()) {
         if (resting == name) resting.clear();
         return;
     }

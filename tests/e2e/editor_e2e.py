@@ -835,6 +835,42 @@ def case_messages(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+# [fog] ------------------------------------------------------------------------
+def case_fog(app, scene):
+    """F in a scene without fog says so and changes nothing; once View gives the scene fog,
+    F hides it and shows it again."""
+    app.settle()
+    plain = app.screenshot()
+    app.key('f')
+    check(app.wait('refuse ').startswith('refuse this scene has no fog'), 'F did not say why')
+    time.sleep(0.5)
+    said = app.screenshot()
+    check(red_text(said, (0, WINDOW[1] - 40) + WINDOW) > 20, 'no message along the bottom')
+    check(changed(plain, said) == 0, 'F changed the picture of a scene without fog')
+    app.menu('View', 'Camera and render')
+    app.wait('panel View ')
+    scroll_into(app, 'View/fog', panel(app, 'View'))
+    app.type_into('View/fog', '0.08', fresh=False)
+    app.wait('edit Edit render settings')
+    app.menu('View', 'Camera and render')  # closed: it covers the view's middle
+    time.sleep(0.5)
+    app.settle()
+    fogged = app.screenshot()
+    check(changed(plain, fogged) > 20, 'fog 0.08 did not show')
+    done = frames_done(app)
+    app.key('f')
+    settle_after(app, done)
+    check(changed(plain, app.screenshot()) == 0, 'F did not hide the fog')
+    done = frames_done(app)
+    app.key('f')
+    settle_after(app, done)
+    check(changed(fogged, app.screenshot()) == 0, 'F did not show the fog again')
+    app.key('Escape')
+    app.wait('ask exit')  # the fog density is an edit
+    app.click_widget("Unsaved changes/Don't save")
+    check(app.finish() == 0, 'exit status not 0')
+
+
 CASES = {name[5:]: fn for name, fn in globals().items() if name.startswith('case_')}
 
 
