@@ -20,7 +20,6 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <iostream>
 
 namespace mb {
@@ -139,7 +138,7 @@ void App::frame(double seconds, int width, int height) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    UiContext c{editor_, ui_, stats_, view_.shaderLog()};
+    UiContext c{editor_, ui_, stats_, view_};
     buildUi(c, width, height, seconds);
     editor_.frame(seconds);
     ImGui::Render();
@@ -205,9 +204,7 @@ void App::screenshot(int width, int height) {
 }
 
 std::string App::title() const {
-    const std::string& path = editor_.document().path();
-    std::string name = path.empty() ? "untitled" : std::filesystem::path(path).filename().string();
-    return "Marchbox - " + name + (editor_.document().dirty() ? " *" : "");
+    return "Marchbox - " + editor_.document().name() + (editor_.document().dirty() ? " *" : "");
 }
 
 }  // namespace

@@ -169,6 +169,7 @@ static void listButtons(UiContext& c, ItemKind k) {
     const int chosen = sel.kind == k ? sel.index : -1;
     std::string* why = c.ui.messages.at(itemPlace(k));
     if (ImGui::Button("Add")) e.add(k, why);
+    markItem(itemPath("Add"));
     ImGui::SameLine();
     ImGui::BeginDisabled(chosen < 0);
     if (ImGui::Button("Duplicate")) e.duplicate(k, chosen, why);

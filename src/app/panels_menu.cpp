@@ -6,6 +6,7 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <algorithm>
 #include <filesystem>
 #include <imgui.h>
 #include <imgui_internal.h>  // the popup stack: Esc closes the topmost popup before it quits
@@ -160,6 +161,23 @@ static void noteRecentFile(UiContext& c) {
     if (!why.empty()) emitEvent("recent-failed " + why);
 }
 
+// The file's name at the bar's right end and, while saving would change the file, "unsaved
+// changes" beside it: the title's `*` is out of sight in a full-screen window.
+static void fileStatus(const Document& d) {
+    const std::string name = d.name();
+    const char* unsaved = "unsaved changes";
+    const ImGuiStyle& style = ImGui::GetStyle();
+    float width = ImGui::CalcTextSize(name.c_str()).x + style.FramePadding.x;
+    if (d.dirty()) width += ImGui::CalcTextSize(unsaved).x + style.ItemSpacing.x;
+    ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowWidth() - width - style.WindowPadding.x));
+    if (d.dirty()) {
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", unsaved);
+        markItem("menu/unsaved");
+        ImGui::SameLine();
+    }
+    ImGui::TextDisabled("%s", name.c_str());
+}
+
 void drawMenuBar(UiContext& c) {
     noteRecentFile(c);
     if (!ImGui::BeginMainMenuBar()) return;
@@ -172,6 +190,7 @@ void drawMenuBar(UiContext& c) {
         if (menuItem("Help", "About Marchbox", nullptr, c.ui.showAbout)) c.ui.showAbout = !c.ui.showAbout;
         ImGui::EndMenu();
     }
+    fileStatus(c.editor.document());
     ImGui::EndMainMenuBar();
     aboutWindow(c.ui);
 }

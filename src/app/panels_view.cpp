@@ -79,6 +79,19 @@ void postModeCombo(UiState& ui) {
     if (ImGui::Combo("post pass", &post, names, kPostModeCount)) ui.render.post = PostMode(post);
 }
 
+// What the program drawing the view was built for (describeFeatures): the scene compiler's
+// choices, so a user sees why an edit compiles anew and what the scene costs.
+static void shaderFeatures(UiContext& c) {
+    const ShaderFeatures* f = c.view.features();
+    if (!f) return;
+    ImGui::Separator();
+    ImGui::TextDisabled("Shader%s", c.view.compiling() ? " (the scene's own is compiling)" : "");
+    for (const std::string& line : describeFeatures(*f)) {
+        ImGui::BulletText("%s", line.c_str());
+        markItem("View/shader " + line);
+    }
+}
+
 static void viewWindow(UiContext& c) {
     if (!c.ui.showView) return;
     if (beginPanel(c, Panel::View, "View", &c.ui.showView)) {
@@ -90,6 +103,7 @@ static void viewWindow(UiContext& c) {
         ImGui::Separator();
         debugView(c);
         messageLine(c, Place::View);
+        shaderFeatures(c);
     }
     ImGui::End();
 }
@@ -137,8 +151,16 @@ static void statsOverlay(UiContext& c) {
             ImGui::Text("%.0f ms/step", s.scene.stepMs);
         ImGui::PlotLines("##frames", s.frameMs, FrameStats::kHistory, s.next, "UI frame ms", 0.0f,
                          std::max(worst, 1.0f), ImVec2(200, 24));
-        ImGui::Text("%zu objects%s", c.editor.scene().objects.size(),
-                    c.editor.simulation().playing() ? "   playing" : "");
+        const PhysicsWorld* world = c.editor.simulation().world();
+        const double simulated = world ? double(world->stepCount()) * world->settings().dt : 0.0;
+        ImGui::Text("%zu objects   simulated %.2f s%s", c.editor.scene().objects.size(), simulated,
+                    c.editor.simulation().playing() ? ", playing" : "");
+        markItem("Statistics/simulated");
+        // The scene's own program on its way: meanwhile the uber stand-in or the last program draws.
+        if (c.view.compiling()) {
+            ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "compiling the scene's shader...");
+            markItem("Statistics/compiling");
+        }
         c.ui.statsBottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
     }
     ImGui::End();
@@ -179,7 +201,7 @@ void drawViewWindows(UiContext& c) {
     viewWindow(c);
     helpWindow(c);
     statsOverlay(c);
-    shaderLogWindow(c.shaderLog);
+    shaderLogWindow(c.view.shaderLog());
     statusLine(c);
 }
 

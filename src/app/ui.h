@@ -8,6 +8,7 @@
 #include "marchbox/editor/recent.h"
 #include "marchbox/gl/renderer.h"
 #include "scene_image.h"
+#include "scene_view.h"
 #include "window.h"
 
 #include <array>
@@ -60,7 +61,7 @@ struct UiContext {
     Editor& editor;
     UiState& ui;
     const FrameStats& stats;
-    const std::string& shaderLog;
+    const SceneView& view;
 };
 
 // [widgets.cpp] Begin for a docked panel: put where layoutPanels() says whenever that place

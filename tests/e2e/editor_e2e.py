@@ -247,8 +247,49 @@ def case_startup(app, scene):
     check(differ > len(region) // 4, 'no tooltip beside the radius field (%d of %d pixels changed)'
           % (differ, len(region)))
     check(text_in(shown, rx + 60, ry + 25, w=50, h=15), 'the tooltip has no text')
+    check_missing_list(app)
     app.key('Escape')
     check(app.finish() == 0, 'exit status not 0')
+
+
+def pixels_in(img, x, y, w, h, test):
+    return sum(1 for px in range(max(x - w, 0), min(x + w, img.width))
+               for py in range(max(y - h, 0), min(y + h + 1, img.height)) if test(img.pixel(px, py)))
+
+
+def is_yellow(rgb):  # the overlay's and menu bar's notes, (255, 204, 77)
+    return rgb[0] > 220 and 170 < rgb[1] < 230 and rgb[2] < 120
+
+
+def check_missing_list(app):
+    """What the issue found missing, on screen: simulated time on the overlay, an unsaved
+    marker in the menu bar while an edit is unsaved, the features the scene's shader was built
+    for in View, and a note on the overlay while an added object's shader compiles."""
+    img = app.screenshot()
+    x, y = app.widget('Statistics/simulated', fresh=False)
+    check(pixels_in(img, x, y, 60, 5, lambda p: min(p) > 170) > 20, 'no simulated time at %d,%d' % (x, y))
+    check(not any(l.startswith('widget menu/unsaved ') for l in app.events()), 'unsaved before any edit')
+
+    app.key('j')
+    app.wait('edit Random velocities')
+    x, y = app.widget('menu/unsaved')
+    check(pixels_in(app.screenshot(), x, y, 40, 5, is_yellow) > 20, 'no unsaved marker at %d,%d' % (x, y))
+    app.key('ctrl+z')
+    app.wait('undo Random velocities')
+    time.sleep(0.5)
+    check(pixels_in(app.screenshot(), x, y, 40, 5, is_yellow) == 0, 'the unsaved marker outlived the undo')
+
+    app.menu('View', 'Camera and render')
+    app.wait('panel View ')
+    x, y = scroll_into(app, 'View/shader compiled: 3 objects, a line each', panel(app, 'View'))
+    check(text_in(app.screenshot(), x, y), 'no shader features at %d,%d' % (x, y))
+    app.menu('View', 'Camera and render')
+
+    app.click_widget('Objects/Add', fresh=False)  # a fourth object: the scene's shader compiles anew
+    app.wait('edit Add')
+    x, y = app.widget('Statistics/compiling', timeout=20)
+    app.key('ctrl+z')
+    app.wait('undo Add')
 
 
 def case_save_as(app, scene):
