@@ -57,7 +57,8 @@ shaders/lighting.glsl | phong(s, p, n, rd, L.vec.xyz,                     | phon
 shaders/lighting.glsl | rd, toLight / max(dist, 1e-6),                    | rd, toLight,                                      | point-light direction not normalised
 shaders/raymarch.glsl | return uEpsilon;                                  | return 20.0 * uEpsilon;                           | hit epsilon 20x: surfaces swell
 shaders/march.frag    | / uResolution.y;                                  | / uResolution.x;                                  | camera rays squashed: wrong aspect
-shaders/lighting.glsl | vec3(1.0, 0.6, 0.1), 0.6)                         | vec3(1.0, 0.6, 0.1), 0.2)                         | editor's selection tint faint
+shaders/outline.glsl  | kOutlinePixels = 2.0;                             | kOutlinePixels = 0.5;                             | editor's selection outline a quarter as wide
+shaders/outline.glsl  | ? kOutlineColor : col;                            | ? col : col;                                      | editor's selection outline gone
 shaders/post.frag     | lB < lMin || lB > lMax ? a : b                    | lB < lMin || lB > lMax ? b : a                    | FXAA keeps the wrong blend
 src/core/sdf.cpp      | vec2(r, 0.5f * height)                            | vec2(r, 0.25f * height)                           | mirror: cylinder of half its height
 src/core/sdf.cpp      | vec2(p.x, p.z)) - major                           | vec2(p.x, p.z)) - 0.9f * major                    | mirror: torus major radius 0.9x

@@ -46,17 +46,13 @@ struct Surface {
     float kr;    // mirror reflectivity
 };
 
-uniform int uHighlight;  // the editor's selected object + 1; 0, the default, highlights nothing
-
 Surface surfaceAt(vec3 p, int id) {
     if (id < 0) {  // the ground: 1 m checkers aligned to x and z
         float c = mod(floor(p.x) + floor(p.z), 2.0);
         return Surface(mix(vec3(0.80), vec3(0.35), c), vec4(0.1, 0.8, 0.1, 16.0), 0.0);
     }
     int m = uObjects[id].info.z;
-    Surface s = Surface(uMaterials[m].color.rgb, uMaterials[m].coeffs, uMaterials[m].color.a);
-    if (id == uHighlight - 1) s.albedo = mix(s.albedo, vec3(1.0, 0.6, 0.1), 0.6);  // selection tint
-    return s;
+    return Surface(uMaterials[m].color.rgb, uMaterials[m].coeffs, uMaterials[m].color.a);
 }
 
 // One light's diffuse and specular share, shadowed. l points towards the light.

@@ -5,6 +5,7 @@
 #include "scene_map.glsl"
 #include "raymarch.glsl"
 #include "lighting.glsl"
+#include "outline.glsl"
 
 out vec4 fragColor;
 
@@ -17,9 +18,9 @@ vec3 surfaceColor(vec3 ro, vec3 rd, vec3 hit, out Surface s, out vec3 p, out vec
     return applyFog(shade(s, p, n, rd), rd, hit.x);
 }
 
+// hit: castRay(ro, rd), which main() made for the outline too.
 #if REFLECTIONS == 0
-vec3 render(vec3 ro, vec3 rd) {
-    vec3 hit = castRay(ro, rd);
+vec3 render(vec3 ro, vec3 rd, vec3 hit) {
     if (hit.y < -1.5) return sky(rd);
     Surface s;
     vec3 p, n;
@@ -27,10 +28,10 @@ vec3 render(vec3 ro, vec3 rd) {
 }
 #else
 // Mirror bounces: each surface keeps (1 - Kr) of its own colour and passes Kr on.
-vec3 render(vec3 ro, vec3 rd) {
+vec3 render(vec3 ro, vec3 rd, vec3 hit) {
     vec3 acc = vec3(0.0), weight = vec3(1.0);
     for (int bounce = 0; bounce <= REFLECTIONS; ++bounce) {
-        vec3 hit = castRay(ro, rd);
+        if (bounce > 0) hit = castRay(ro, rd);
         if (hit.y < -1.5) return acc + weight * sky(rd);
         Surface s;
         vec3 p, n;
@@ -50,8 +51,7 @@ vec3 render(vec3 ro, vec3 rd) {
 #endif
 #else
 // Debug views of the primary hit.
-vec3 render(vec3 ro, vec3 rd) {
-    vec3 hit = castRay(ro, rd);
+vec3 render(vec3 ro, vec3 rd, vec3 hit) {
 #if MODE == 3
     float heat = hit.z / float(MAX_STEPS);
     return clamp(vec3(3.0 * heat, 3.0 * heat - 1.0, 3.0 * heat - 2.0), 0.0, 1.0);
@@ -95,6 +95,10 @@ void main() {
 #if COMPILED
     loadObjects();
 #endif
-    vec3 col = render(uCamPos, cameraRay(floor(gl_FragCoord.xy) + uSubpixel));
+    vec3 rd = cameraRay(floor(gl_FragCoord.xy) + uSubpixel), hit = castRay(uCamPos, rd);
+    vec3 col = render(uCamPos, rd, hit);
+#if MODE == 0
+    col = outlineSelection(col, uCamPos, rd, hit);
+#endif
     fragColor = vec4(clamp(col, 0.0, 1.0), 1.0) * uSampleWeight;
 }

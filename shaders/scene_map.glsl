@@ -2,7 +2,7 @@
 // ground. Twin of mapScene().
 
 // Replaced by src/gl/scene_compiler.cpp: a compiled scene's loadObjects() and mapObjects(),
-// else the loop's per-type SDF switch, with a case for each type present.
+// then the per-type SDF switch (the loop's, and the outline's), a case for each type present.
 #pragma marchbox scene
 
 #if !COMPILED

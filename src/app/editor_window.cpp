@@ -21,7 +21,6 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <iostream>
 
 namespace mb {
@@ -144,7 +143,7 @@ void App::frame(double seconds, int width, int height) {
     window_.input().takeFrame(&input_, frameStart_, ImGui::GetIO().WantTextInput);
     feedImGui(input_, seconds);
     ImGui::NewFrame();
-    UiContext c{editor_, ui_, stats_, view_.shaderLog()};
+    UiContext c{editor_, ui_, stats_, view_};
     buildUi(c, width, height, seconds);
     editor_.frame(seconds);
     ImGui::Render();
@@ -166,6 +165,7 @@ void App::buildUi(UiContext& c, int width, int height, double seconds) {
     renderDialog_.draw(c);
     // A released widget or drag ends its undo step; the next change starts a new one.
     if (!ImGui::IsAnyItemActive() && !viewport_.dragging()) editor_.endEdit();
+    ui_.messages.endFrame(editor_.selection(), ImGui::GetTime());
 }
 
 void App::openDrops(UiContext& c) {
@@ -205,13 +205,11 @@ void App::screenshot(int width, int height) {
     if (saveScreenshot(width, height, envOr("MARCHBOX_SCREENSHOT_DIR", "."), &path, &error))
         emitEvent("screenshot " + path);
     else
-        ui_.message = error;
+        *ui_.messages.at(Place::Status) = error;
 }
 
 std::string App::title() const {
-    const std::string& path = editor_.document().path();
-    std::string name = path.empty() ? "untitled" : std::filesystem::path(path).filename().string();
-    return "Marchbox - " + name + (editor_.document().dirty() ? " *" : "");
+    return "Marchbox - " + editor_.document().name() + (editor_.document().dirty() ? " *" : "");
 }
 
 }  // namespace

@@ -91,10 +91,11 @@ static void motionFields(Object& o, FieldEdit& e) {
     if (!o.dynamic()) ImGui::TextDisabled("static collider: only dynamic spheres move");
 }
 
-static void objectFields(UiContext& c, int i) {
+// place: the Objects panel or the object popup, whichever shows the fields.
+static void objectFields(UiContext& c, int i, Place place) {
     const Scene& s = c.editor.scene();
     Object o = s.objects[size_t(i)];
-    FieldEdit e{false, 0, &c.ui.message};
+    FieldEdit e{false, 0, c.ui.messages.at(place)};
     ImGui::PushID(i);
     shapeFields(o, e);
     materialCombo(s, &o.material, e);
@@ -105,7 +106,8 @@ static void objectFields(UiContext& c, int i) {
 
 static void materialFields(UiContext& c, int i) {
     Material m = c.editor.scene().materials[size_t(i)];
-    FieldEdit e{false, 0, &c.ui.message};
+    std::string& message = *c.ui.messages.at(Place::Materials);
+    FieldEdit e{false, 0, &message};
     ImGui::PushID(i);
     swatch(m, 48.0f);
     std::string name = m.name, why;
@@ -113,10 +115,10 @@ static void materialFields(UiContext& c, int i) {
         if (validateName(name, &why)) {
             m.name = name;
             e.changed = true;
-            c.ui.message.clear();
+            message.clear();
         } else {
-            c.ui.message = why + ": '" + name + "' refused, '" + m.name + "' kept";
-            emitEvent("refuse " + c.ui.message);
+            message = why + ": '" + name + "' refused, '" + m.name + "' kept";
+            emitEvent("refuse " + message);
         }
     }
     itemTooltip(itemPath("name"), "Letters, digits, '_', '.' or '-'. Return takes it.");
@@ -132,7 +134,7 @@ static void materialFields(UiContext& c, int i) {
 
 static void lightFields(UiContext& c, int i) {
     Light l = c.editor.scene().lights[size_t(i)];
-    FieldEdit e{false, 0, &c.ui.message};
+    FieldEdit e{false, 0, c.ui.messages.at(Place::Lights)};
     ImGui::PushID(i);
     int kind = l.directional ? 1 : 0;
     fieldCombo("kind", &kind, kLightKinds, 2, e,
@@ -152,7 +154,7 @@ static void lightFields(UiContext& c, int i) {
 
 static void itemFields(UiContext& c, ItemKind k, int i) {
     switch (k) {
-        case ItemKind::Object: return objectFields(c, i);
+        case ItemKind::Object: return objectFields(c, i, Place::Objects);
         case ItemKind::Material: return materialFields(c, i);
         case ItemKind::Light: return lightFields(c, i);
     }
@@ -165,12 +167,14 @@ static void listButtons(UiContext& c, ItemKind k) {
     Editor& e = c.editor;
     const Selection& sel = e.selection();
     const int chosen = sel.kind == k ? sel.index : -1;
-    if (ImGui::Button("Add")) e.add(k, &c.ui.message);
+    std::string* why = c.ui.messages.at(itemPlace(k));
+    if (ImGui::Button("Add")) e.add(k, why);
+    markItem(itemPath("Add"));
     ImGui::SameLine();
     ImGui::BeginDisabled(chosen < 0);
-    if (ImGui::Button("Duplicate")) e.duplicate(k, chosen, &c.ui.message);
+    if (ImGui::Button("Duplicate")) e.duplicate(k, chosen, why);
     ImGui::SameLine();
-    if (ImGui::Button("Delete")) e.remove(k, chosen, &c.ui.message);
+    if (ImGui::Button("Delete")) e.remove(k, chosen, why);
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::BeginDisabled(itemCount(e.scene(), k) == 0);
@@ -178,7 +182,7 @@ static void listButtons(UiContext& c, ItemKind k) {
     ImGui::EndDisabled();
 }
 
-static void itemList(UiContext& c, ItemKind k) {
+static void itemList(UiContext& c, ItemKind k, const char* title) {
     const Scene& s = c.editor.scene();
     ImGui::BeginChild("list", ImVec2(0, 150), true);
     for (int i = 0; i < itemCount(s, k); ++i) {
@@ -188,23 +192,22 @@ static void itemList(UiContext& c, ItemKind k) {
             swatch(s.materials[size_t(m)]);
             ImGui::SameLine();
         }
-        if (ImGui::Selectable(itemName(s, k, i).c_str(), c.editor.selection().is(k, i)))
-            c.editor.select(k, i);
+        const std::string name = itemName(s, k, i);
+        if (ImGui::Selectable(name.c_str(), c.editor.selection().is(k, i))) c.editor.select(k, i);
+        markItem(std::string(title) + "/" + name);
         ImGui::PopID();
     }
     ImGui::EndChild();
 }
 
-static void itemWindow(UiContext& c, ItemKind k, const char* title, bool* open, float y) {
+static void itemWindow(UiContext& c, ItemKind k, Panel p, const char* title, bool* open) {
     if (!*open) return;
-    ImGui::SetNextWindowPos(ImVec2(10, y), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_Always);  // height 0: fits the fields
-    if (ImGui::Begin(title, open)) {
+    if (beginPanel(c, p, title, open)) {
         listButtons(c, k);
-        itemList(c, k);
+        itemList(c, k, title);
         const Selection& sel = c.editor.selection();
         if (sel.kind == k && !sel.empty()) itemFields(c, k, sel.index);
-        fieldErrorLine(c.ui.message);
+        messageLine(c, itemPlace(k));
     }
     ImGui::End();
 }
@@ -222,18 +225,19 @@ static void objectPopup(UiContext& c) {
         return;
     }
     ImGui::Text("object %d", i);
-    objectFields(c, i);
-    if (ImGui::Button("Duplicate")) c.editor.duplicate(ItemKind::Object, i, &c.ui.message);
+    objectFields(c, i, Place::ObjectPopup);
+    std::string* why = c.ui.messages.at(Place::ObjectPopup);
+    if (ImGui::Button("Duplicate")) c.editor.duplicate(ItemKind::Object, i, why);
     ImGui::SameLine();
-    if (ImGui::Button("Delete")) c.editor.remove(ItemKind::Object, i, &c.ui.message);
-    fieldErrorLine(c.ui.message);
+    if (ImGui::Button("Delete")) c.editor.remove(ItemKind::Object, i, why);
+    messageLine(c, Place::ObjectPopup);
     ImGui::EndPopup();
 }
 
 void drawEditWindows(UiContext& c) {
-    itemWindow(c, ItemKind::Object, "Objects", &c.ui.showObjects, 30);
-    itemWindow(c, ItemKind::Material, "Materials", &c.ui.showMaterials, 60);
-    itemWindow(c, ItemKind::Light, "Lights", &c.ui.showLights, 90);
+    itemWindow(c, ItemKind::Object, Panel::Objects, "Objects", &c.ui.showObjects);
+    itemWindow(c, ItemKind::Material, Panel::Materials, "Materials", &c.ui.showMaterials);
+    itemWindow(c, ItemKind::Light, Panel::Lights, "Lights", &c.ui.showLights);
     objectPopup(c);
 }
 

@@ -22,6 +22,7 @@ static const char* kErrorsPopup = "Cannot open";
 static bool beginModal(const char* name) {
     bool open = ImGui::BeginPopupModal(name, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
     markPopup(name, open);
+    if (open) markPanel();
     return open;
 }
 
@@ -35,7 +36,8 @@ void saveFile(UiContext& c) {
         c.ui.wantSaveAs = true;
         return;
     }
-    if (!c.editor.save(&c.ui.message)) c.ui.wantSaveAs = true;  // e.g. a read-only file
+    // A read-only file, say: Save As opens with the reason.
+    if (!c.editor.save(c.ui.messages.at(Place::SaveAs))) c.ui.wantSaveAs = true;
 }
 
 // Esc over a dialog: the dialog's Cancel (handleShortcuts raised it).
@@ -122,9 +124,10 @@ static void saveAsDialog(UiContext& c) {
     ImGui::SameLine();
     bool cancel = button(kSaveAsPopup, "Cancel") || escaped(c);
     go = confirmedTarget(c, go) && !cancel;
-    fieldErrorLine(c.ui.message);
-    bool saved = go && c.editor.saveAs(c.ui.pathField, &c.ui.message);
-    if (saved) c.ui.message.clear();
+    messageLine(c, Place::SaveAs);
+    std::string* why = c.ui.messages.at(Place::SaveAs);
+    bool saved = go && c.editor.saveAs(c.ui.pathField, why);
+    if (saved) why->clear();
     if (saved || cancel) {
         c.ui.replacePath.clear();
         ImGui::CloseCurrentPopup();
@@ -146,7 +149,7 @@ static void unsavedPrompt(UiContext& c) {
     ImGui::EndPopup();
     if (cancel) c.editor.cancelLeave();
     if (discard) c.editor.confirmLeave();
-    if (save && !c.editor.document().path().empty() && c.editor.save(&c.ui.message))
+    if (save && !c.editor.document().path().empty() && c.editor.save(c.ui.messages.at(Place::SaveAs)))
         c.editor.confirmLeave();
     else if (save) {  // no file yet, or it could not be written: ask where
         c.ui.saveThenLeave = true;
@@ -172,7 +175,6 @@ void drawDialogs(UiContext& c) {
         ImGui::OpenPopup(ui.wantOpen ? kOpenPopup : kSaveAsPopup);
         ui.pathField = ui.wantOpen ? c.editor.document().path()
                                    : proposeSavePath(c.editor.document().path(), c.editor.lastFile());
-        ui.message.clear();
     }
     if (c.editor.pendingLeave() != Leave::None && !ui.saveThenLeave) ImGui::OpenPopup(kUnsavedPopup);
     if (!ui.openErrors.empty()) ImGui::OpenPopup(kErrorsPopup);

@@ -6,6 +6,7 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <algorithm>
 #include <filesystem>
 #include <imgui.h>
 #include <imgui_internal.h>  // the popup stack: Esc closes the topmost popup before it quits
@@ -47,8 +48,14 @@ static void recentMenu(UiContext& c) {
     ImGui::Separator();
     if (menuItem("Open Recent", "Clear list")) {
         std::string why = c.ui.recent.clear();
-        if (!why.empty()) c.ui.message = why;
+        if (!why.empty()) *c.ui.messages.at(Place::Status) = why;
     }
+}
+
+// Why Delete refused: in the selection's panel when it is open, else on the status line.
+static std::string* deleteMessage(UiContext& c) {
+    const Place panel = itemPlace(c.editor.selection().kind);
+    return c.ui.messages.at(c.ui.messages.onScreen(panel) ? panel : Place::Status);
 }
 
 static void fileMenu(UiContext& c) {
@@ -79,7 +86,7 @@ static void editMenu(UiContext& c) {
     if (menuItem("Edit", "Lights", nullptr, c.ui.showLights)) c.ui.showLights = !c.ui.showLights;
     ImGui::Separator();
     if (menuItem("Edit", "Delete selected", "Del", false, !e.selection().empty()))
-        e.removeSelected(&c.ui.message);
+        e.removeSelected(deleteMessage(c));
     if (menuItem("Edit", "Random velocities", "J")) e.kick();
 }
 
@@ -97,6 +104,19 @@ static void togglePost(RenderOptions& o, PostMode mode) {
     o.post = o.post == PostMode::None ? mode : PostMode::None;
 }
 
+static const char* kNoFog = "this scene has no fog to show: set View > fog above 0 first";
+
+// F and View > Fog show or hide the scene's fog. A scene without fog has none to show: rather
+// than tick a box that changes nothing, the key says so and the menu item is disabled.
+static void toggleFog(UiContext& c) {
+    if (c.editor.scene().render.fog > 0.0f) {
+        c.ui.render.fog = !c.ui.render.fog;
+        return;
+    }
+    *c.ui.messages.at(Place::Status) = kNoFog;
+    emitEvent(std::string("refuse ") + kNoFog);
+}
+
 static void viewMenu(UiContext& c) {
     UiState& ui = c.ui;
     if (menuItem("View", "Camera and render", nullptr, ui.showView)) ui.showView = !ui.showView;
@@ -106,7 +126,9 @@ static void viewMenu(UiContext& c) {
                 ui.render.mode = RenderMode(m);
         ImGui::EndMenu();
     }
-    if (menuItem("View", "Fog", "F", ui.render.fog)) ui.render.fog = !ui.render.fog;
+    const bool fog = c.editor.scene().render.fog > 0.0f;
+    if (menuItem("View", "Fog", "F", fog && ui.render.fog, fog)) toggleFog(c);
+    if (!fog) itemTooltip("View/Fog", kNoFog);
     if (menuItem("View", "FXAA", "P", ui.render.post != PostMode::None)) togglePost(ui.render, PostMode::Fxaa);
     if (menuItem("View", "Orbit preview", "1", ui.previewOrbit)) ui.previewOrbit = !ui.previewOrbit;
     if (menuItem("View", "Statistics", nullptr, ui.showStats)) ui.showStats = !ui.showStats;
@@ -139,6 +161,23 @@ static void noteRecentFile(UiContext& c) {
     if (!why.empty()) emitEvent("recent-failed " + why);
 }
 
+// The file's name at the bar's right end and, while saving would change the file, "unsaved
+// changes" beside it: the title's `*` is out of sight in a full-screen window.
+static void fileStatus(const Document& d) {
+    const std::string name = d.name();
+    const char* unsaved = "unsaved changes";
+    const ImGuiStyle& style = ImGui::GetStyle();
+    float width = ImGui::CalcTextSize(name.c_str()).x + style.FramePadding.x;
+    if (d.dirty()) width += ImGui::CalcTextSize(unsaved).x + style.ItemSpacing.x;
+    ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowWidth() - width - style.WindowPadding.x));
+    if (d.dirty()) {
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", unsaved);
+        markItem("menu/unsaved");
+        ImGui::SameLine();
+    }
+    ImGui::TextDisabled("%s", name.c_str());
+}
+
 void drawMenuBar(UiContext& c) {
     noteRecentFile(c);
     if (!ImGui::BeginMainMenuBar()) return;
@@ -151,6 +190,7 @@ void drawMenuBar(UiContext& c) {
         if (menuItem("Help", "About Marchbox", nullptr, c.ui.showAbout)) c.ui.showAbout = !c.ui.showAbout;
         ImGui::EndMenu();
     }
+    fileStatus(c.editor.document());
     ImGui::EndMainMenuBar();
     aboutWindow(c.ui);
 }
@@ -171,10 +211,10 @@ static void plainShortcut(UiContext& c, const KeyPress& k) {
     Editor& e = c.editor;
     switch (k.key) {
         case GLFW_KEY_SPACE: e.togglePlay(); break;
-        case GLFW_KEY_DELETE: e.removeSelected(&c.ui.message); break;
+        case GLFW_KEY_DELETE: e.removeSelected(deleteMessage(c)); break;
         case GLFW_KEY_J: e.kick(); break;
         case GLFW_KEY_1: c.ui.previewOrbit = !c.ui.previewOrbit; break;
-        case GLFW_KEY_F: c.ui.render.fog = !c.ui.render.fog; break;
+        case GLFW_KEY_F: toggleFog(c); break;
         case GLFW_KEY_P: togglePost(c.ui.render, PostMode::Fxaa); break;
         case GLFW_KEY_ESCAPE: request(c, Leave::Exit); break;
         default: break;

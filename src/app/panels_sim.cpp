@@ -20,7 +20,7 @@ static void controls(UiContext& c) {
 
 static void worldFields(UiContext& c) {
     World w = c.editor.scene().world;
-    FieldEdit e{false, 0, &c.ui.message};
+    FieldEdit e{false, 0, c.ui.messages.at(Place::Simulation)};
     fieldFloat("gravity", Field::Gravity, &w.gravity, e);
     fieldFloat("restitution", Field::Restitution, &w.restitution, e);
     fieldFloat("friction", Field::Friction, &w.friction, e);
@@ -43,12 +43,11 @@ static void statistics(const Simulation& sim) {
 
 void drawSimulationWindow(UiContext& c) {
     if (!c.ui.showSimulation) return;
-    ImGui::SetNextWindowPos(ImVec2(380, 30), ImGuiCond_FirstUseEver);
-    if (ImGui::Begin("Simulation", &c.ui.showSimulation, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (beginPanel(c, Panel::Simulation, "Simulation", &c.ui.showSimulation)) {
         controls(c);
         ImGui::Separator();
         worldFields(c);
-        fieldErrorLine(c.ui.message);
+        messageLine(c, Place::Simulation);
         ImGui::Separator();
         statistics(c.editor.simulation());
     }

@@ -3,6 +3,8 @@
 #include "ui.h"
 #include "widgets.h"
 
+#include "marchbox/editor/controls.h"
+
 #include <algorithm>
 #include <imgui.h>
 
@@ -24,7 +26,7 @@ static const char* const kShadowNames[] = {"none", "hard", "soft"};
 
 static void cameraFields(UiContext& c) {
     Camera cam = c.editor.scene().camera;
-    FieldEdit e{false, 0, &c.ui.message};
+    FieldEdit e{false, 0, c.ui.messages.at(Place::View)};
     fieldVec3("position", Field::CameraPosition, &cam.pos, e);
     fieldVec3("target", Field::CameraTarget, &cam.target, e);
     fieldFloat("fov", Field::Fov, &cam.fov, e);
@@ -35,7 +37,7 @@ static void cameraFields(UiContext& c) {
 
 static void renderFields(UiContext& c) {
     RenderSettings r = c.editor.scene().render;
-    FieldEdit e{false, 0, &c.ui.message};
+    FieldEdit e{false, 0, c.ui.messages.at(Place::View)};
     fieldInt("steps", Field::Steps, &r.steps, e);
     fieldFloat("epsilon", Field::Epsilon, &r.epsilon, e);
     fieldCombo("shadows", &r.shadows, kShadowNames, 3, e, "None, hard, or soft (softness below).");
@@ -46,7 +48,8 @@ static void renderFields(UiContext& c) {
     if (e.changed) c.editor.edit("Edit render settings", [&](Scene& s) { s.render = r; }, e.key);
 }
 
-static void debugView(UiState& ui) {
+static void debugView(UiContext& c) {
+    UiState& ui = c.ui;
     const char* names[kRenderModeCount];
     for (int m = 0; m < kRenderModeCount; ++m) names[m] = renderModeName(RenderMode(m));
     int mode = int(ui.render.mode);
@@ -54,12 +57,19 @@ static void debugView(UiState& ui) {
     itemTooltip(itemPath("debug view"), "What the view shows: the shaded picture or one of its parts.\nNot saved.");
     ImGui::Checkbox("uber shader", &ui.render.uber);
     itemTooltip(itemPath("uber shader"), "Draw with the general shader instead of the one compiled\nfor this scene. Not saved.");
-    ImGui::Checkbox("fog (F)", &ui.render.fog);
-    itemTooltip(itemPath("fog (F)"), "Shows the scene's fog (render fog density). Not saved.");
+    // A scene without fog has none to show: unticked and disabled, not a box that does nothing.
+    const bool sceneFog = c.editor.scene().render.fog > 0.0f;
+    bool shown = sceneFog && ui.render.fog;
+    ImGui::BeginDisabled(!sceneFog);
+    if (ImGui::Checkbox("fog (F)", &shown)) ui.render.fog = shown;
+    ImGui::EndDisabled();
+    itemTooltip(itemPath("fog (F)"), sceneFog ? "Shows the scene's fog (render fog above). Not saved."
+                                              : "This scene has no fog: set fog above 0 to see it.");
     postModeCombo(ui);
     itemTooltip(itemPath("post pass"), "FXAA smooths edges after the march. Not saved.");
     ImGui::SliderFloat("shadow softness", &ui.render.quality.softness, 2.0f, 64.0f, "k = %.1f",
                        ImGuiSliderFlags_Logarithmic);
+    markItem(itemPath("shadow softness"));
     itemTooltip(itemPath("shadow softness"), "k of the soft-shadow estimate, 2 to 64: lower is softer.\nNot saved.");
 }
 
@@ -69,47 +79,56 @@ void postModeCombo(UiState& ui) {
     if (ImGui::Combo("post pass", &post, names, kPostModeCount)) ui.render.post = PostMode(post);
 }
 
+// What the program drawing the view was built for (describeFeatures): the scene compiler's
+// choices, so a user sees why an edit compiles anew and what the scene costs.
+static void shaderFeatures(UiContext& c) {
+    const ShaderFeatures* f = c.view.features();
+    if (!f) return;
+    ImGui::Separator();
+    ImGui::TextDisabled("Shader%s", c.view.compiling() ? " (the scene's own is compiling)" : "");
+    for (const std::string& line : describeFeatures(*f)) {
+        ImGui::BulletText("%s", line.c_str());
+        markItem("View/shader " + line);
+    }
+}
+
 static void viewWindow(UiContext& c) {
     if (!c.ui.showView) return;
-    ImGui::SetNextWindowPos(ImVec2(380, 260), ImGuiCond_FirstUseEver);
-    if (ImGui::Begin("View", &c.ui.showView, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (beginPanel(c, Panel::View, "View", &c.ui.showView)) {
         ImGui::TextDisabled("Camera");
         cameraFields(c);
         ImGui::Separator();
         ImGui::TextDisabled("Render (saved with the scene)");
         renderFields(c);
         ImGui::Separator();
-        debugView(c.ui);
-        fieldErrorLine(c.ui.message);
+        debugView(c);
+        messageLine(c, Place::View);
+        shaderFeatures(c);
     }
     ImGui::End();
 }
 
-static void helpWindow(UiState& ui) {
-    if (!ui.showHelp) return;
-    if (ImGui::Begin("Controls", &ui.showHelp, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::TextUnformatted(
-            "Left drag            orbit the camera about its target\n"
-            "Wheel                zoom\n"
-            "Middle / Shift drag  pan\n"
-            "W A S D, Q E         fly; 1 toggles an orbit preview\n"
-            "Left click           select the object under the mouse\n"
-            "Right click          edit the object under the mouse\n"
-            "Ctrl drag            move the selected object over the ground\n"
-            "Delete               delete the selection\n"
-            "J                    random velocities for the dynamic spheres\n"
-            "Space                play / pause the simulation\n"
-            "Ctrl+Z, Ctrl+Y       undo, redo (a simulation run is one step)\n"
-            "Ctrl+N, Ctrl+O, Ctrl+S   new, open, save\n"
-            "F12                  screenshot (PNG)\n"
-            "Esc                  close the open menu, popup or dialog; with none,\n"
-            "                     quit, asking first about unsaved changes\n"
-            "Drop a .txt file on the window to open it.");
+// Help > Controls: editorControls(), the table README's editor section lists too.
+static void helpWindow(UiContext& c) {
+    if (!c.ui.showHelp) return;
+    if (beginPanel(c, Panel::Controls, "Controls", &c.ui.showHelp) &&
+        ImGui::BeginTable("controls", 2, ImGuiTableFlags_RowBg)) {
+        ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 120.0f);
+        ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
+        for (const Control& k : editorControls()) {
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(k.keys);
+            ImGui::TableNextColumn();
+            ImGui::TextWrapped("%s", k.action);
+        }
+        ImGui::EndTable();
+        markItem("Controls/table");
     }
     ImGui::End();
 }
 
 static void statsOverlay(UiContext& c) {
+    c.ui.statsBottom = 0.0f;  // the right column may go up to the menu bar
     if (!c.ui.showStats) return;
     const FrameStats& s = c.stats;
     ImGuiIO& io = ImGui::GetIO();
@@ -132,8 +151,17 @@ static void statsOverlay(UiContext& c) {
             ImGui::Text("%.0f ms/step", s.scene.stepMs);
         ImGui::PlotLines("##frames", s.frameMs, FrameStats::kHistory, s.next, "UI frame ms", 0.0f,
                          std::max(worst, 1.0f), ImVec2(200, 24));
-        ImGui::Text("%zu objects%s", c.editor.scene().objects.size(),
-                    c.editor.simulation().playing() ? "   playing" : "");
+        const PhysicsWorld* world = c.editor.simulation().world();
+        const double simulated = world ? double(world->stepCount()) * world->settings().dt : 0.0;
+        ImGui::Text("%zu objects   simulated %.2f s%s", c.editor.scene().objects.size(), simulated,
+                    c.editor.simulation().playing() ? ", playing" : "");
+        markItem("Statistics/simulated");
+        // The scene's own program on its way: meanwhile the uber stand-in or the last program draws.
+        if (c.view.compiling()) {
+            ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "compiling the scene's shader...");
+            markItem("Statistics/compiling");
+        }
+        c.ui.statsBottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
     }
     ImGui::End();
 }
@@ -156,11 +184,25 @@ static void shaderLogWindow(const std::string& log) {
     ImGui::End();
 }
 
+// Failures no panel owns, along the bottom until Messages lets them go.
+static void statusLine(UiContext& c) {
+    const std::string& text = c.ui.messages.text(Place::Status);
+    if (text.empty()) return;
+    ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y - 10), ImGuiCond_Always, ImVec2(0.5f, 1));
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+    if (ImGui::Begin("##status", nullptr, flags)) messageLine(c, Place::Status);
+    ImGui::End();
+}
+
 void drawViewWindows(UiContext& c) {
     viewWindow(c);
-    helpWindow(c.ui);
+    helpWindow(c);
     statsOverlay(c);
-    shaderLogWindow(c.shaderLog);
+    shaderLogWindow(c.view.shaderLog());
+    statusLine(c);
 }
 
 }  // namespace mb

@@ -51,8 +51,7 @@ void RenderDialog::work(double budgetSeconds) {
 
 void RenderDialog::draw(UiContext& c) {
     if (!c.ui.showRender) return;
-    ImGui::SetNextWindowPos(ImVec2(420, 120), ImGuiCond_FirstUseEver);
-    if (ImGui::Begin("Render", &c.ui.showRender, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (beginPanel(c, Panel::Render, "Render", &c.ui.showRender)) {
         ImGui::BeginDisabled(running());
         ImGui::InputInt("width", &width_);
         markItem("render/width");

@@ -28,6 +28,12 @@ void SceneView::sync(const Scene& scene, uint64_t version, const RenderOptions& 
     // After a failure, a scene that changes every frame (a running simulation) would recompile
     // the broken shader every frame: try again at most once a second.
     if (now < retryAt_ && options == options_) return;
+    // A driver without background compiles blocks while it builds: the UI draws its note first.
+    if (!announced_ && renderer_->wouldCompile(scene, options)) {
+        announced_ = true;
+        return;
+    }
+    announced_ = false;
     options_ = options;
     version_ = version;
     std::string error;

@@ -31,6 +31,8 @@ public:
     // only when the new program compiles and links, so a broken edit keeps the last good one.
     void pollShaders(const Scene& scene, double now);
     const std::string& shaderLog() const { return log_; }  // the last failure, empty when fine
+    bool compiling() const { return announced_ || renderer_->compilingScene(); }  // the scene's program is not ready
+    const ShaderFeatures* features() const { return renderer_->features(); }  // of the one drawing
 
 private:
     bool reload(const Scene& scene);
@@ -42,6 +44,7 @@ private:
     uint64_t version_ = ~0ull;
     uint64_t content_ = 0;  // grows with each change to what the renderer draws
     int aa_ = 1;            // the scene's samples per axis, as last uploaded
+    bool announced_ = false;  // a compile is due: the UI says so for a frame before it starts
     double nextPoll_ = 0.0, retryAt_ = 0.0;
     std::string log_;
 };

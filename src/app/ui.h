@@ -4,10 +4,14 @@
 
 #include "marchbox/editor/editor.h"
 #include "marchbox/editor/input_queue.h"
+#include "marchbox/editor/messages.h"
+#include "marchbox/editor/panel_layout.h"
 #include "marchbox/editor/recent.h"
 #include "marchbox/gl/renderer.h"
 #include "scene_image.h"
+#include "scene_view.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -38,12 +42,18 @@ struct UiState {
     std::string replacePath;               // Save As warned once that this file exists
     bool escape = false;                   // Esc this frame: the open dialog cancels
 
-    std::string message;                   // the last refusal or failure, shown in red
+    Messages messages;                     // refusals and failures, each in its place, in red
     RenderOptions render;                  // debug view and uber shader
     bool previewOrbit = false;             // key 1
     std::string scenesDir;                 // scenes/ of the source tree, for File > Open
     RecentFiles recent{recentFilesPath()}; // File > Open Recent
     std::string recentNoted;               // the editor's last file, as last put in `recent`
+
+    // Docked panels (panel_layout.h): where each was last put, and the statistics' bottom edge
+    // as last drawn (0 while hidden).
+    std::array<PanelRect, kPanelCount> placed{};
+    float statsBottom = 0.0f;
+    unsigned openPanels() const;  // panelBit of each panel shown
 };
 
 // What the panels need from the rest of the window.
@@ -51,8 +61,16 @@ struct UiContext {
     Editor& editor;
     UiState& ui;
     const FrameStats& stats;
-    const std::string& shaderLog;
+    const SceneView& view;
 };
+
+// [widgets.cpp] Begin for a docked panel: put where layoutPanels() says whenever that place
+// changes (a panel opened or closed, the window resized), else left where it was dragged; as
+// tall as its fields up to its place's height and the window's bottom, scrolling past that.
+bool beginPanel(UiContext& c, Panel p, const char* title, bool* open);
+
+// [widgets.cpp] The place's message in red, if it has one; the place is on screen this frame.
+void messageLine(UiContext& c, Place p);
 
 // [panels_menu.cpp] the main menu bar, Help > About's window, and the shortcuts that mirror the
 // menus' items; each frame it puts the file last opened or saved first in the recent files.

@@ -2,6 +2,7 @@
 #include "widgets.h"
 
 #include "marchbox/editor/events.h"
+#include "ui.h"
 
 #include <imgui_internal.h>  // the active item's text state: typing is told apart from dragging
 
@@ -154,7 +155,8 @@ void itemTooltip(const std::string& name, const std::string& text) {
     static double since = 0.0;
     static int seenFrame = -2, shownFrame = -2;
     const int frame = ImGui::GetFrameCount();
-    if (!ImGui::IsItemHovered() || ImGui::IsItemActive()) {
+    // A disabled item still says why it is disabled.
+    if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) || ImGui::IsItemActive()) {
         if (resting == name) resting.clear();
         return;
     }
@@ -177,28 +179,74 @@ std::string itemPath(const char* label) {
     return std::string(ImGui::GetCurrentWindowRead()->Name) + "/" + label;
 }
 
+// Writes `line` when it differs from the last one written for `name`, or when `name` shows
+// again after a gap of a frame or more.
+static void markChange(const std::string& name, const std::string& line) {
+    struct Mark {
+        std::string line;
+        int frame;
+    };
+    static std::map<std::string, Mark> last;
+    const int frame = ImGui::GetFrameCount();
+    auto it = last.find(name);
+    bool same = it != last.end() && it->second.frame == frame - 1 && it->second.line == line;
+    last[name] = {line, frame};
+    if (!same) emitEvent(line);
+}
+
+static std::string whole(float v) { return std::to_string(int(v)); }
+
 void markItem(const std::string& name) {
     // A window's first frame lays it out before it knows its size (auto-resized popups move
     // on the next frame): a mark from then would send a click to the wrong place.
     if (!eventsOn() || ImGui::IsWindowAppearing()) return;
-    struct Mark {
-        ImVec2 centre;
-        int frame;
-    };
-    static std::map<std::string, Mark> last;
     ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
     ImVec2 centre((lo.x + hi.x) * 0.5f, (lo.y + hi.y) * 0.5f);
     // Nor from a frame where the window has yet to grow to a new row: it is drawn clipped.
     if (!ImGui::GetCurrentWindow()->ClipRect.Contains(centre)) return;
-    const int frame = ImGui::GetFrameCount();
-    auto it = last.find(name);
     // Written when the widget moves or shows again after a gap (a popup reopened), so a test
     // can wait for a mark that belongs to what is on screen now.
-    bool same = it != last.end() && it->second.frame == frame - 1 &&
-                it->second.centre.x == centre.x && it->second.centre.y == centre.y;
-    last[name] = {centre, frame};
-    if (same) return;
-    emitEvent("widget " + name + " " + std::to_string(int(centre.x)) + " " + std::to_string(int(centre.y)));
+    markChange("widget " + name, "widget " + name + " " + whole(centre.x) + " " + whole(centre.y));
+}
+
+void markPanel() {
+    if (!eventsOn() || ImGui::IsWindowAppearing()) return;
+    const std::string name = ImGui::GetCurrentWindowRead()->Name;
+    ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    markChange("panel " + name, "panel " + name + " " + whole(pos.x) + " " + whole(pos.y) + " " +
+                                    whole(size.x) + " " + whole(size.y));
+}
+
+unsigned UiState::openPanels() const {
+    const bool shown[kPanelCount] = {showObjects, showMaterials, showLights, showView,
+                                     showSimulation, showRender, showHelp};
+    unsigned open = 0;
+    for (int p = 0; p < kPanelCount; ++p) open |= shown[p] ? panelBit(Panel(p)) : 0u;
+    return open;
+}
+
+bool beginPanel(UiContext& c, Panel p, const char* title, bool* open) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const PanelFrame frame{io.DisplaySize.x, io.DisplaySize.y, ImGui::GetFrameHeight(), c.ui.statsBottom};
+    const PanelRect r = layoutPanels(frame, c.ui.openPanels())[size_t(p)];
+    PanelRect& placed = c.ui.placed[size_t(p)];
+    const bool moved = !(r == placed);
+    placed = r;
+    ImGui::SetNextWindowPos(ImVec2(r.x, r.y), moved ? ImGuiCond_Always : ImGuiCond_Appearing);
+    // A panel dragged lower has less room before the window's bottom.
+    const ImGuiWindow* w = ImGui::FindWindowByName(title);
+    const float top = moved || !w ? r.y : w->Pos.y;
+    const float room = std::max(frame.height - kPanelMargin - top, kPanelMinHeight);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(r.width, 0.0f), ImVec2(r.width, std::min(r.height, room)));
+    bool shown = ImGui::Begin(title, open, ImGuiWindowFlags_AlwaysAutoResize);
+    markPanel();
+    return shown;
+}
+
+void messageLine(UiContext& c, Place p) {
+    c.ui.messages.shown(p);
+    fieldErrorLine(c.ui.messages.text(p));
+    if (c.ui.messages.isNew(p)) ImGui::SetScrollHereY(1.0f);  // below a panel's fold it would go unseen
 }
 
 void markPopup(const std::string& name, bool open) {

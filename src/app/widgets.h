@@ -16,7 +16,7 @@ namespace mb {
 struct FieldEdit {
     bool changed = false;
     ImGuiID key = 0;
-    std::string* error = nullptr;  // the panel's message line
+    std::string* error = nullptr;  // the message of the panel's place (messages.h)
 };
 
 // Sliders where the field's spec asks for one, drags for the rest; Ctrl+click types a value,
@@ -42,6 +42,10 @@ void fieldErrorLine(const std::string& error);
 // With the event log on, writes "widget NAME X Y" (the last item's centre in window pixels)
 // when the item shows up or moves.
 void markItem(const std::string& name);
+
+// With the event log on, writes "panel NAME X Y W H" (the window being drawn, in window pixels)
+// when it shows up, moves or changes size.
+void markPanel();
 
 // With the event log on, writes "typing NAME" when the last item (a text field) takes the
 // keyboard: from then on typed characters reach it.

@@ -3,10 +3,16 @@
 
 #include "marchbox/scene_io.h"
 
+#include <filesystem>
+
 namespace mb {
 
 bool sameCamera(const Camera& a, const Camera& b) {
     return a.pos == b.pos && a.target == b.target && a.fov == b.fov;
+}
+
+std::string Document::name() const {
+    return path_.empty() ? "untitled" : std::filesystem::path(path_).filename().string();
 }
 
 void Document::replace(const Scene& scene, const std::string& path) {

@@ -82,7 +82,10 @@ bool Editor::save(std::string* error) {
 bool Editor::saveAs(const std::string& path, std::string* error) {
     // What is on screen is what gets saved: a running simulation is recorded first.
     sim_.commitRun(doc_);
-    if (!saveScene(path, doc_.scene(), error)) return false;
+    if (!saveScene(path, doc_.scene(), error)) {
+        emitEvent("save-failed " + *error);
+        return false;
+    }
     doc_.markSaved(path);
     lastFile_ = path;
     emitEvent("save " + path);

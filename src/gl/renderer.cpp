@@ -245,6 +245,16 @@ bool Renderer::poll(std::string* error) {
     return true;
 }
 
+bool Renderer::wouldCompile(const Scene& original, const RenderOptions& options) const {
+    Scene fogless;
+    ShaderFeatures f;
+    std::string ignored;
+    if (!featuresFor(viewedScene(original, options, &fogless), options, &f, &ignored)) return false;
+    auto same = [&](const auto& held) { return held.features == f; };
+    return std::none_of(cache_.begin(), cache_.end(), same) && !(pending_ && same(*pending_)) &&
+           !(failed_ && same(*failed_));
+}
+
 void Renderer::prepareUber(const Scene& scene, const RenderOptions& options) {
     RenderOptions uber = options;
     uber.uber = true;
@@ -254,6 +264,12 @@ void Renderer::prepareUber(const Scene& scene, const RenderOptions& options) {
     if (uberBuild_ || !featuresFor(viewedScene(scene, uber, &fogless), uber, &u, &ignored) || cached(u)) return;
     auto build = std::make_unique<Build>();
     if (startBuild(u, build.get(), &ignored)) uberBuild_ = std::move(build);
+}
+
+const ShaderFeatures* Renderer::features() const {
+    for (const Cached& c : cache_)
+        if (c.program.get() == current_) return &c.features;
+    return nullptr;
 }
 
 void Renderer::rebind() const {

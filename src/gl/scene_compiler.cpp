@@ -70,7 +70,8 @@ std::string compileSceneMap(const std::vector<ObjectLayout>& layout) {
 
 std::string compileShapeSwitch(unsigned shapes) {
     std::ostringstream s;
-    s << "float sdObjectLocal(int i, vec3 q) {\n    int type = uObjects[i].info.x;\n";
+    s << "// Object i's own distance at q, a point in its frame.\n"
+         "float sdObjectLocal(int i, vec3 q) {\n    int type = uObjects[i].info.x;\n";
     for (int t = 0; t < kShapeTypeCount; ++t)
         if (shapes >> t & 1u)
             s << "    if (type == " << t << ") return " << shapeCall(ShapeType(t), "uObjects[i]", "q") << ";\n";

@@ -95,6 +95,40 @@ ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int ma
     return f;
 }
 
+static std::string joined(const std::vector<std::string>& words) {
+    std::string s;
+    for (const std::string& w : words) s += (s.empty() ? "" : ", ") + w;
+    return s;
+}
+
+static std::string counted(int n, const char* what) {
+    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+}
+
+// How the objects are visited, then one line per group of features.
+std::vector<std::string> describeFeatures(const ShaderFeatures& f) {
+    if (f.uber) return {"uber: every feature, switched by uniforms"};
+    std::vector<std::string> lines = {f.compiled ? "compiled: " + counted(f.objects, "object") + ", a line each"
+                                      : f.grid   ? "object grid: " + counted(f.objects, "object")
+                                                 : "object loop: " + counted(f.objects, "object")};
+    std::vector<std::string> shapes, ops = {"union"}, extras;
+    for (int t = 0; t < kShapeTypeCount; ++t)
+        if (f.shapes >> t & 1u) shapes.push_back(shapeTypeName(ShapeType(t)));
+    if (f.subtract) ops.push_back("subtract");
+    if (f.intersect) ops.push_back("intersect");
+    if (f.blend) ops.push_back("blended");
+    if (!shapes.empty()) lines.insert(lines.end(), {joined(shapes), joined(ops)});
+    lines.push_back(counted(f.pointLights, "point light") + ", " + counted(f.dirLights, "directional light"));
+    static const char* const kShadows[] = {"no shadows", "hard shadows", "soft shadows"};
+    lines.push_back(kShadows[f.shadows]);
+    if (f.reflections > 0) lines.push_back(counted(f.reflections, "reflection"));
+    if (f.fog) extras.push_back("fog");
+    if (f.ao) extras.push_back("ambient occlusion");
+    if (f.ground) extras.push_back("ground");
+    if (!extras.empty()) lines.push_back(joined(extras));
+    return lines;
+}
+
 // The macros in the order the prefix lists them.
 static std::vector<std::pair<const char*, long>> featureDefines(const ShaderFeatures& f) {
     std::vector<std::pair<const char*, long>> d = {{"UBER", f.uber}, {"MODE", long(f.mode)}};
@@ -133,7 +167,7 @@ bool fragmentSource(const ShaderFeatures& f, std::string* out, std::string* erro
         *error = "march.frag: no '#pragma marchbox scene' line for the compiled scene";
         return false;
     }
-    std::string scene = f.compiled ? compileSceneMap(f.layout) : compileShapeSwitch(f.shapes);
+    std::string scene = (f.compiled ? compileSceneMap(f.layout) + "\n" : "") + compileShapeSwitch(f.shapes);
     resolved.replace(at, marker.size(), scene);
     auto markerLine = map.begin() + std::count(resolved.begin(), resolved.begin() + long(at), '\n');
     LineMap sceneLines = linesOf("<scene code>", scene);

@@ -23,7 +23,7 @@ from xscreen import Screen  # noqa: E402
 WINDOW = (640, 400)  # small: a software renderer draws it a few times a second
 HOLD = 0.4           # s a key or button stays down: longer than a slow frame
 # Cases that need another window or scene than the small default (paths from the source tree).
-SIZES = {'live': (1280, 720)}
+SIZES = {'live': (1280, 720), 'panels': (960, 600)}
 SCENES = {'live': 'tests/e2e/live_scene.txt', 'slow_input': 'tests/e2e/slow_scene.txt'}
 
 
@@ -247,8 +247,49 @@ def case_startup(app, scene):
     check(differ > len(region) // 4, 'no tooltip beside the radius field (%d of %d pixels changed)'
           % (differ, len(region)))
     check(text_in(shown, rx + 60, ry + 25, w=50, h=15), 'the tooltip has no text')
+    check_missing_list(app)
     app.key('Escape')
     check(app.finish() == 0, 'exit status not 0')
+
+
+def pixels_in(img, x, y, w, h, test):
+    return sum(1 for px in range(max(x - w, 0), min(x + w, img.width))
+               for py in range(max(y - h, 0), min(y + h + 1, img.height)) if test(img.pixel(px, py)))
+
+
+def is_yellow(rgb):  # the overlay's and menu bar's notes, (255, 204, 77)
+    return rgb[0] > 220 and 170 < rgb[1] < 230 and rgb[2] < 120
+
+
+def check_missing_list(app):
+    """What the issue found missing, on screen: simulated time on the overlay, an unsaved
+    marker in the menu bar while an edit is unsaved, the features the scene's shader was built
+    for in View, and a note on the overlay while an added object's shader compiles."""
+    img = app.screenshot()
+    x, y = app.widget('Statistics/simulated', fresh=False)
+    check(pixels_in(img, x, y, 60, 5, lambda p: min(p) > 170) > 20, 'no simulated time at %d,%d' % (x, y))
+    check(not any(l.startswith('widget menu/unsaved ') for l in app.events()), 'unsaved before any edit')
+
+    app.key('j')
+    app.wait('edit Random velocities')
+    x, y = app.widget('menu/unsaved')
+    check(pixels_in(app.screenshot(), x, y, 40, 5, is_yellow) > 20, 'no unsaved marker at %d,%d' % (x, y))
+    app.key('ctrl+z')
+    app.wait('undo Random velocities')
+    time.sleep(0.5)
+    check(pixels_in(app.screenshot(), x, y, 40, 5, is_yellow) == 0, 'the unsaved marker outlived the undo')
+
+    app.menu('View', 'Camera and render')
+    app.wait('panel View ')
+    x, y = scroll_into(app, 'View/shader compiled: 3 objects, a line each', panel(app, 'View'))
+    check(text_in(app.screenshot(), x, y), 'no shader features at %d,%d' % (x, y))
+    app.menu('View', 'Camera and render')
+
+    app.click_widget('Objects/Add', fresh=False)  # a fourth object: the scene's shader compiles anew
+    app.wait('edit Add')
+    x, y = app.widget('Statistics/compiling', timeout=20)
+    app.key('ctrl+z')
+    app.wait('undo Add')
 
 
 def case_save_as(app, scene):
@@ -268,14 +309,41 @@ def case_save_as(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+def frames_done(app):
+    return sum(1 for l in app.events() if l.startswith('scene-frame ') and l.split()[2] == 'done')
+
+
+def settle_after(app, done):
+    """Waits for a picture to finish refining after the `done` finished already."""
+    deadline = time.time() + 90
+    while frames_done(app) <= done:
+        check(time.time() < deadline, 'the picture did not finish refining within 90 s')
+        time.sleep(0.05)
+
+
+def is_orange(rgb):  # the selection outline's (255, 153, 25)
+    return rgb[0] > 220 and 120 < rgb[1] < 190 and rgb[2] < 70
+
+
 def case_select(app, scene):
-    """A click on a sphere selects and highlights it; Delete removes it; Ctrl+Z brings it back."""
-    x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
-    before = app.screenshot().pixel(x, y)
+    """A click on a sphere selects it: an orange ring shows around it and its own colour stays
+    as it was; Delete removes it; Ctrl+Z brings it back."""
+    pos, radius = scene_values(scene, 'object', 'pos')[0], scene_values(scene, 'object', 'radius')[0][0]
+    x, y = project(scene, pos)
+    r = y - project(scene, [pos[0], pos[1] + radius, pos[2]])[1]  # its outline's radius, near enough
+    ring = [(int(x + (r + dr) * math.cos(a / 18 * math.pi)), int(y + (r + dr) * math.sin(a / 18 * math.pi)))
+            for a in range(36) for dr in (1, 2)]
+    app.settle()
+    before, done = app.screenshot(), frames_done(app)
     app.click(x, y)
     check(app.wait('select ') == 'select object 0', 'the red sphere was not selected')
-    after = app.screenshot().pixel(x, y)
-    check(after[1] > before[1] + 40, 'no highlight: %s then %s' % (before, after))
+    settle_after(app, done)
+    after = app.screenshot()
+    changed = max(abs(p - q) for p, q in zip(before.pixel(x, y), after.pixel(x, y)))
+    check(changed <= 2, 'the selected sphere changed colour: %s then %s' % (before.pixel(x, y), after.pixel(x, y)))
+    orange = [sum(1 for p in ring if is_orange(img.pixel(*p))) for img in (before, after)]
+    check(orange[0] == 0 and orange[1] > len(ring) // 3,
+          'no orange ring around the sphere: %d then %d of %d points' % (orange[0], orange[1], len(ring)))
     app.click(390, 60)  # the sky
     check(app.wait('select ') == 'select none', 'clicking the sky kept a selection')
     app.click(x, y)
@@ -570,7 +638,7 @@ def case_render(app, scene):
     check((img.width, img.height) == (300, 200), 'the PNG is %dx%d' % (img.width, img.height))
     check(len({img.pixel(x, y) for x in range(0, 300, 15) for y in range(0, 200, 15)}) > 10,
           'the render is nearly uniform')
-    # The window's picture is drawn again after the render (a selection tints it) with the
+    # The window's picture is drawn again after the render (a selection outlines it) with the
     # window's own scene: the render's renderer, gone now, had bound its buffers in its place.
     app.menu('File', 'Render...')  # closes the dialog, which covers the sphere
     x, y = select_first(app, scene)
@@ -759,6 +827,145 @@ def case_slow_input(app, scene):
     check(abs(turned + 0.4) < 1e-4, 'the drag turned the camera by %.5f rad, not -0.4' % turned)
     check(scene_values(target, 'camera', 'target')[0] != start['target'], 'W did not fly the camera')
     app.key('Escape')  # all saved: no question
+    check(app.finish() == 0, 'exit status not 0')
+
+
+# [panels] ---------------------------------------------------------------------
+def panel(app, name):
+    """The panel's rectangle as last drawn, (x0, y0, x1, y1), from its "panel" marks."""
+    for line in reversed(app.events()):
+        if line.startswith('panel %s ' % name):
+            x, y, w, h = map(int, line.split()[-4:])
+            return x, y, x + w, y + h
+    raise Failure('panel %s never drawn' % name)
+
+
+def overlap(a, b):
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def scroll_into(app, name, rect, timeout=20):
+    """Turns the wheel over rect until widget name shows inside it; returns its centre."""
+    app.move((rect[0] + rect[2]) // 2, (rect[1] + rect[3]) // 2)
+    deadline = time.time() + timeout
+    while time.time() < deadline:
+        x, y = app.widget(name, fresh=False)
+        if rect[1] + 20 < y < rect[3] - 10:
+            return x, y
+        xdotool('click', 5)  # the wheel, down
+        time.sleep(0.2)
+    raise Failure('%s stayed at %d,%d, outside %s, however the wheel turned' % (name, x, y, rect))
+
+
+def case_panels(app, scene):
+    """At 960x600 every panel fits the window: with Simulation open beside it, the View panel's
+    last field is out of sight until the wheel scrolls it up; Materials and Lights open clear
+    of Objects, View and Simulation."""
+    app.menu('Simulation', 'Settings')
+    app.menu('View', 'Camera and render')
+    app.wait('panel View ')
+    time.sleep(0.5)  # an auto-sized window settles in a frame or two
+    view = panel(app, 'View')
+    check(view[3] <= WINDOW[1], 'the View panel runs off the bottom: %s' % (view,))
+    last = 'View/shadow softness'
+    check(app.widget(last, fresh=False)[1] > view[3], '%s shows unscrolled: nothing to scroll' % last)
+    x, y = scroll_into(app, last, view)
+    # Its label, right of the 208-pixel field, light on the panel's dark background.
+    check(text_in(app.screenshot(), x + 150, y), 'no label drawn beside %d,%d after scrolling' % (x, y))
+    app.menu('Edit', 'Materials')
+    app.wait('panel Materials ')
+    app.menu('Edit', 'Lights')
+    app.wait('panel Lights ')
+    time.sleep(0.5)
+    names = ('Objects', 'Materials', 'Lights', 'View', 'Simulation')
+    rects = {n: panel(app, n) for n in names}
+    for n, r in rects.items():
+        check(r[0] >= 0 and r[1] >= 19 and r[2] <= WINDOW[0] and r[3] <= WINDOW[1],
+              '%s lies outside the window: %s' % (n, r))
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            check(not overlap(rects[a], rects[b]), '%s %s overlaps %s %s' % (a, rects[a], b, rects[b]))
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+# [messages] -------------------------------------------------------------------
+def red_text(img, rect):
+    """Pixels of fieldErrorLine's red (255, 115, 102) inside rect (x0, y0, x1, y1)."""
+    return sum(1 for x in range(max(rect[0], 0), min(rect[2], img.width))
+               for y in range(max(rect[1], 0), min(rect[3], img.height))
+               if img.pixel(x, y)[0] > 230 and 95 < img.pixel(x, y)[1] < 135 and 80 < img.pixel(x, y)[2] < 120)
+
+
+def case_messages(app, scene):
+    """A refusal shows in the panel that raised it and goes when the selection changes; a Save
+    As failure shows in its dialog and goes with it, never in the Objects panel."""
+    app.menu('Edit', 'Lights')
+    app.click_widget('Lights/0 point')
+    app.wait('select light 0')
+    scroll_into(app, 'Lights/intensity', panel(app, 'Lights'))
+    app.type_into('Lights/intensity', '1e9', fresh=False)
+    app.wait('refuse intensity ')
+    app.move(WINDOW[0] - 20, WINDOW[1] - 20)  # no tooltip over the panel
+    time.sleep(0.5)
+    check(red_text(app.screenshot(), panel(app, 'Lights')) > 20, 'the refusal is not in the Lights panel')
+    select_first(app, scene)
+    time.sleep(0.3)
+    img = app.screenshot()
+    for name in ('Objects', 'Lights'):
+        check(red_text(img, panel(app, name)) == 0, 'the Lights refusal still shows in %s' % name)
+
+    app.menu('File', 'Save As...')
+    app.wait('typing Save scene as/path')
+    app.type('/no-such-folder/scene.txt')
+    app.key('Return')
+    app.wait('save-failed ')
+    time.sleep(0.3)
+    img = app.screenshot()
+    check(red_text(img, panel(app, 'Save scene as')) > 20, 'the Save As failure is not in its dialog')
+    app.key('Escape')
+    app.wait('popup Save scene as closed')
+    time.sleep(0.3)
+    img = app.screenshot()
+    for name in ('Objects', 'Lights'):
+        check(red_text(img, panel(app, name)) == 0, 'the Save As failure shows in %s' % name)
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+# [fog] ------------------------------------------------------------------------
+def case_fog(app, scene):
+    """F in a scene without fog says so and changes nothing; once View gives the scene fog,
+    F hides it and shows it again."""
+    app.settle()
+    plain = app.screenshot()
+    app.key('f')
+    check(app.wait('refuse ').startswith('refuse this scene has no fog'), 'F did not say why')
+    time.sleep(0.5)
+    said = app.screenshot()
+    check(red_text(said, (0, WINDOW[1] - 40) + WINDOW) > 20, 'no message along the bottom')
+    check(changed(plain, said) == 0, 'F changed the picture of a scene without fog')
+    app.menu('View', 'Camera and render')
+    app.wait('panel View ')
+    scroll_into(app, 'View/fog', panel(app, 'View'))
+    app.type_into('View/fog', '0.08', fresh=False)
+    app.wait('edit Edit render settings')
+    app.menu('View', 'Camera and render')  # closed: it covers the view's middle
+    time.sleep(0.5)
+    app.settle()
+    fogged = app.screenshot()
+    check(changed(plain, fogged) > 20, 'fog 0.08 did not show')
+    done = frames_done(app)
+    app.key('f')
+    settle_after(app, done)
+    check(changed(plain, app.screenshot()) == 0, 'F did not hide the fog')
+    done = frames_done(app)
+    app.key('f')
+    settle_after(app, done)
+    check(changed(fogged, app.screenshot()) == 0, 'F did not show the fog again')
+    app.key('Escape')
+    app.wait('ask exit')  # the fog density is an edit
+    app.click_widget("Unsaved changes/Don't save")
     check(app.finish() == 0, 'exit status not 0')
 
 

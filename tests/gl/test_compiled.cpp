@@ -105,6 +105,25 @@ TEST(Compiled, OnlyAStructuralEditCompilesAnew) {
     }
 }
 
+// The View panel's list of what the scene's shader was built for.
+TEST(Compiled, TheFeatureListNamesWhatTheSceneUses) {
+    Scene s = test::loadSceneOrDie("scenes/default.txt");
+    ShaderFeatures f = shaderFeatures(s, RenderMode::Shaded, false, 65536);
+    std::vector<std::string> lines = describeFeatures(f);
+    std::string all;
+    for (const std::string& l : lines) all += l + "\n";
+    EXPECT_EQ(lines.front(), "compiled: " + std::to_string(s.objects.size()) + " objects, a line each") << all;
+    for (const char* word : {"sphere", "box", "torus", "capsule", "subtract", "blended"})
+        EXPECT_NE(all.find(word), std::string::npos) << word << " missing from\n" << all;
+    f.shadows = 2;
+    f.fog = true;
+    all.clear();
+    for (const std::string& l : describeFeatures(f)) all += l + "\n";
+    EXPECT_NE(all.find("soft shadows"), std::string::npos) << all;
+    EXPECT_NE(all.find("fog"), std::string::npos) << all;
+    EXPECT_EQ(describeFeatures(shaderFeatures(s, RenderMode::Shaded, true, 65536)).size(), 1u) << "the uber shader";
+}
+
 // What `marchbox shader` prints for a compiled scene: one line per object, in file order,
 // each calling its SDF directly, with no table lookup inside the map.
 TEST(Compiled, TheSceneMapIsOneLinePerObject) {
@@ -121,5 +140,5 @@ TEST(Compiled, TheSceneMapIsOneLinePerObject) {
                            "sdTorus(p - o2.posBound.xyz, o2.shape.x, o2.sizeMinor.w), 0.0, 2.0);  // 2: torus",
                            "sdCapsule(o6.toLocal * (p - o6.posBound.xyz), o6.shape.y, o6.shape.x), 0.0, 6.0);  // 6: capsule, turned"};
     for (const char* line : lines) EXPECT_NE(map.find(line), std::string::npos) << line << "\nin\n" << map;
-    EXPECT_EQ(src.find("float sdObjectLocal("), std::string::npos) << "no type switch in a compiled scene";
+    EXPECT_EQ(map.find("sdObjectLocal("), std::string::npos) << "no type switch in a compiled map";
 }

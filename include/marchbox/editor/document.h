@@ -20,6 +20,7 @@ class Document {
 public:
     const Scene& scene() const { return scene_; }
     const std::string& path() const { return path_; }   // empty for a scene never saved
+    std::string name() const;  // the file's name without its folder, "untitled" without one
     bool dirty() const;  // the scene differs from its file (from New's scene), camera aside
     const History& history() const { return history_; }
 

@@ -49,6 +49,10 @@ public:
     bool requestScene(const Scene& scene, const RenderOptions& options, std::string* error);
     bool poll(std::string* error);
     bool compiling() const { return pending_ || uberBuild_; }  // poll() has work left
+    bool compilingScene() const { return pending_ != nullptr; }  // the scene's own program is on its way
+    // True when requestScene would start building a program: none is built or on its way for
+    // what the scene and options need (a driver without background compiles then blocks).
+    bool wouldCompile(const Scene& scene, const RenderOptions& options) const;
     void prepareUber(const Scene& scene, const RenderOptions& options);  // builds the stand-in
 
     // Draws the whole width × height image, every supersample, into the framebuffer bound now.
@@ -78,6 +82,7 @@ public:
     void rebind() const;
 
     const Program* program() const { return current_; }
+    const ShaderFeatures* features() const;  // what the program drawing now was built for
     int maxUniformBlockBytes() const { return maxUniformBlock_; }
 
 private:

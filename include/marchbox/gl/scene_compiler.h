@@ -5,7 +5,8 @@
 // which material) stay in the Objects block, so moving, resizing or recolouring compiles
 // nothing; adding, deleting or retyping an object changes the layout and compiles anew.
 // Larger scenes keep the loop of shaders/scene_map.glsl, whose per-type SDF switch is written
-// here too, from the same table, for the types present only.
+// here too, from the same table, for the types present only. Every scene has that switch: the
+// editor's selection outline (shaders/outline.glsl) measures one object by its index.
 #pragma once
 
 #include "marchbox/scene.h"
@@ -30,7 +31,8 @@ std::vector<ObjectLayout> objectLayout(const Scene& scene);
 // loadObjects() and mapObjects(p) for a compiled scene.
 std::string compileSceneMap(const std::vector<ObjectLayout>& layout);
 
-// sdObjectLocal(i, q) for the loop: one case per type whose bit is set in `shapes`.
+// sdObjectLocal(i, q) for the loop and the outline: one case per type whose bit is set in
+// `shapes`.
 std::string compileShapeSwitch(unsigned shapes);
 
 }  // namespace mb

@@ -11,6 +11,7 @@
 #include "marchbox/scene.h"
 
 #include <string>
+#include <vector>
 
 namespace mb {
 
@@ -65,6 +66,11 @@ bool usesGrid(const Scene& scene, const RenderQuality& quality);  // see RenderQ
 // maxUniformBlockBytes is GL_MAX_UNIFORM_BLOCK_SIZE; 0 means "assume the GL minimum, 16 KiB".
 ShaderFeatures shaderFeatures(const Scene& scene, RenderMode mode, bool uber,
                               int maxUniformBlockBytes, const RenderQuality& quality = {});
+
+// What a shader was built for, a line each, for people: "compiled: 3 objects, a line each",
+// "sphere, box", "union, subtract, blended", "1 point light", "soft shadows", "2 reflections",
+// "fog, ambient occlusion, ground".
+std::vector<std::string> describeFeatures(const ShaderFeatures& f);
 
 // The #version line and the #define block for a feature set.
 std::string shaderPrefix(const ShaderFeatures& f);

@@ -1,0 +1,36 @@
+// marchbox/editor/panel_layout.h — where the editor's panels go: two columns docked to the
+// window's sides, the lists (Objects, Materials, Lights) on the left and the settings (View,
+// Simulation, Render, Controls) on the right, below the statistics overlay. The open panels of
+// a column share its height equally, top to bottom in this order, so none covers another and
+// none runs off the window; a panel is as tall as its fields up to its share and scrolls past it.
+#pragma once
+
+#include <array>
+
+namespace mb {
+
+enum class Panel : int { Objects, Materials, Lights, View, Simulation, Render, Controls };
+constexpr int kPanelCount = 7;
+
+constexpr unsigned panelBit(Panel p) { return 1u << int(p); }
+
+struct PanelRect {
+    float x = 0, y = 0, width = 0, height = 0;  // height: the most the panel may take
+
+    bool operator==(const PanelRect&) const = default;
+};
+
+// The room the panels have, in window pixels from the top-left corner.
+struct PanelFrame {
+    float width = 0, height = 0;  // the window
+    float top = 0;                // below the menu bar
+    float rightTop = 0;           // below the statistics overlay, which sits top right
+};
+
+constexpr float kPanelMargin = 10.0f;  // from the window's edges
+constexpr float kPanelMinHeight = 40.0f;  // a title bar and a line: kept even in a tiny window
+
+// The place of each panel whose panelBit is set in `open`; the others' are left empty.
+std::array<PanelRect, kPanelCount> layoutPanels(const PanelFrame& frame, unsigned open);
+
+}  // namespace mb

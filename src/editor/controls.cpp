@@ -1,0 +1,30 @@
+// controls.cpp — the editor's keys and mouse actions, in the order Help > Controls shows them.
+#include "marchbox/editor/controls.h"
+
+namespace mb {
+
+static const Control kControls[] = {
+    {"Left drag", "orbit the camera about its target"},
+    {"Wheel", "zoom; over a panel, scroll it"},
+    {"Middle drag, Shift drag", "pan"},
+    {"W A S D, Q E", "fly"},
+    {"1", "orbit preview on or off"},
+    {"Left click", "select the object under the mouse"},
+    {"Right click", "edit the object under the mouse"},
+    {"Ctrl drag", "move the selected object over the ground"},
+    {"Delete", "delete the selection"},
+    {"J", "random velocities for the dynamic spheres"},
+    {"Space", "play or pause the simulation"},
+    {"Ctrl+Z, Ctrl+Y", "undo, redo (a simulation run is one step); Ctrl+Shift+Z redoes too"},
+    {"Ctrl+N, Ctrl+O, Ctrl+S", "new, open, save"},
+    {"Ctrl+Shift+S", "save as"},
+    {"F", "fog on or off, in a scene with fog (render fog above 0)"},
+    {"P", "FXAA on or off"},
+    {"F12", "screenshot (PNG)"},
+    {"Esc", "close the open menu, popup or dialog; with none, quit, asking first about unsaved changes"},
+    {"Drop a file", "open the scene file dropped on the window"},
+};
+
+std::span<const Control> editorControls() { return kControls; }
+
+}  // namespace mb

@@ -1,0 +1,41 @@
+// panel_layout.cpp — the editor's two columns of panels (see panel_layout.h).
+#include "marchbox/editor/panel_layout.h"
+
+#include <algorithm>
+
+namespace mb {
+
+namespace {
+
+constexpr float kColumnWidth = 360.0f;  // room for a label beside ImGui's 208-pixel fields
+constexpr float kGap = 6.0f;            // between panels of a column
+
+// Stacks the open panels first..last from y `top` to `bottom` in equal shares.
+void stack(std::array<PanelRect, kPanelCount>& out, unsigned open, Panel first, Panel last,
+           float x, float width, float top, float bottom) {
+    int n = 0;
+    for (int p = int(first); p <= int(last); ++p) n += (open & panelBit(Panel(p))) != 0;
+    if (n == 0) return;
+    const float share = std::max((bottom - top - kGap * float(n - 1)) / float(n), kPanelMinHeight);
+    float y = top;
+    for (int p = int(first); p <= int(last); ++p) {
+        if (!(open & panelBit(Panel(p)))) continue;
+        out[size_t(p)] = {x, y, width, share};
+        y += share + kGap;
+    }
+}
+
+}  // namespace
+
+std::array<PanelRect, kPanelCount> layoutPanels(const PanelFrame& frame, unsigned open) {
+    std::array<PanelRect, kPanelCount> out{};
+    // Two columns and three margins across; a narrow window narrows the columns.
+    const float width = std::max(std::min(kColumnWidth, (frame.width - 3.0f * kPanelMargin) / 2.0f), 1.0f);
+    const float bottom = frame.height - kPanelMargin;
+    stack(out, open, Panel::Objects, Panel::Lights, kPanelMargin, width, frame.top + kPanelMargin, bottom);
+    stack(out, open, Panel::View, Panel::Controls, frame.width - kPanelMargin - width, width,
+          std::max(frame.top, frame.rightTop) + kPanelMargin, bottom);
+    return out;
+}
+
+}  // namespace mb

@@ -1,0 +1,58 @@
+// test_controls.cpp — README's editor section lists the keys Help > Controls shows, row for row.
+#include "marchbox/editor/controls.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+using namespace mb;
+
+namespace {
+
+std::string trim(const std::string& s) {
+    size_t a = s.find_first_not_of(' '), b = s.find_last_not_of(' ');
+    return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+// The rows "| keys | action |" of the table in README's "## The editor" section, header and
+// rule left out.
+std::vector<std::pair<std::string, std::string>> readmeControls() {
+    std::ifstream in(std::string(MARCHBOX_SOURCE_DIR) + "/README.md");
+    std::vector<std::pair<std::string, std::string>> rows;
+    std::string line;
+    bool inSection = false;
+    while (std::getline(in, line)) {
+        if (line.rfind("## ", 0) == 0) inSection = line == "## The editor";
+        if (!inSection || line.rfind("| ", 0) != 0 || line.find("---") != std::string::npos) continue;
+        size_t mid = line.find(" | ");
+        std::string keys = trim(line.substr(2, mid - 2)), action = trim(line.substr(mid + 3));
+        if (action.size() >= 2 && action.substr(action.size() - 2) == " |") action = trim(action.substr(0, action.size() - 2));
+        if (keys != "Keys") rows.emplace_back(keys, action);
+    }
+    return rows;
+}
+
+}  // namespace
+
+TEST(Controls, ReadmeListsEveryControlAsHelpShowsIt) {
+    auto readme = readmeControls();
+    auto table = editorControls();
+    ASSERT_EQ(readme.size(), table.size()) << "README's editor section has " << readme.size()
+                                           << " rows of keys, Help > Controls " << table.size();
+    for (size_t i = 0; i < table.size(); ++i) {
+        EXPECT_EQ(readme[i].first, table[i].keys) << "row " << i;
+        EXPECT_EQ(readme[i].second, table[i].action) << "row " << i;
+    }
+}
+
+TEST(Controls, EveryKeyTheWindowHandlesIsListed) {
+    std::string all;
+    for (const Control& c : editorControls()) all += std::string(c.keys) + ", ";
+    for (const char* key : {"1", "F", "P", "J", "Space", "Delete", "F12", "Esc", "Ctrl+Z", "Ctrl+Y",
+                            "Ctrl+N", "Ctrl+O", "Ctrl+S", "Ctrl+Shift+S", "W A S D, Q E"})
+        EXPECT_NE(all.find(std::string(key) + ","), std::string::npos) << key;
+}
