@@ -157,9 +157,14 @@ static void statsOverlay(UiContext& c) {
                     c.editor.simulation().playing() ? ", playing" : "");
         markItem("Statistics/simulated");
         // The scene's own program on its way: meanwhile the uber stand-in or the last program draws.
+        // The row is always there: a row that came and went would grow the auto-sized overlay a
+        // frame late, and a compile shorter than a frame would never show.
         if (c.view.compiling()) {
             ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "compiling the scene's shader...");
             markItem("Statistics/compiling");
+        } else {
+            ImGui::TextDisabled("shader up to date");
+            markItem("Statistics/shader up to date");
         }
         c.ui.statsBottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
     }

@@ -202,11 +202,13 @@ void markItem(const std::string& name) {
     if (!eventsOn() || ImGui::IsWindowAppearing()) return;
     ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
     ImVec2 centre((lo.x + hi.x) * 0.5f, (lo.y + hi.y) * 0.5f);
-    // Nor from a frame where the window has yet to grow to a new row: it is drawn clipped.
-    if (!ImGui::GetCurrentWindow()->ClipRect.Contains(centre)) return;
     // Written when the widget moves or shows again after a gap (a popup reopened), so a test
-    // can wait for a mark that belongs to what is on screen now.
-    markChange("widget " + name, "widget " + name + " " + whole(centre.x) + " " + whole(centre.y));
+    // can wait for a mark that belongs to what is on screen now. A clipped widget (scrolled
+    // away, or a row the window has yet to grow to) is marked hidden: a click there would
+    // land on something else.
+    const bool shown = ImGui::GetCurrentWindow()->ClipRect.Contains(centre);
+    markChange("widget " + name, shown ? "widget " + name + " " + whole(centre.x) + " " + whole(centre.y)
+                                       : "hidden " + name);
 }
 
 void markPanel() {

@@ -101,13 +101,22 @@ class Editor:
         waited for (a popup that opened since); otherwise from any mark (the menu bar)."""
         deadline = time.time() + timeout
         while time.time() < deadline:
-            lines = self.events()
-            for line in reversed(lines[self.seen if fresh else 0:]):
-                if line.startswith('widget %s ' % name):
-                    x, y = line.rsplit(' ', 2)[1:]
-                    return int(x), int(y)
+            at = self.shown_at(name, fresh)
+            if at:
+                return at
             time.sleep(0.05)
         raise Failure('widget "%s" never drawn' % name)
+
+    def shown_at(self, name, fresh=True):
+        """Centre of a widget from its last mark, or None while it was never drawn or its last
+        mark says it is clipped (scrolled out of its panel)."""
+        for line in reversed(self.events()[self.seen if fresh else 0:]):
+            if line == 'hidden %s' % name:
+                return None
+            if line.startswith('widget %s ' % name):
+                x, y = line.rsplit(' ', 2)[1:]
+                return int(x), int(y)
+        return None
 
     # [hands] ----------------------------------------------------------------
     def move(self, x, y):
@@ -849,12 +858,12 @@ def scroll_into(app, name, rect, timeout=20):
     app.move((rect[0] + rect[2]) // 2, (rect[1] + rect[3]) // 2)
     deadline = time.time() + timeout
     while time.time() < deadline:
-        x, y = app.widget(name, fresh=False)
-        if rect[1] + 20 < y < rect[3] - 10:
-            return x, y
+        at = app.shown_at(name, fresh=False)
+        if at and rect[1] + 20 < at[1] < rect[3] - 10:
+            return at
         xdotool('click', 5)  # the wheel, down
         time.sleep(0.2)
-    raise Failure('%s stayed at %d,%d, outside %s, however the wheel turned' % (name, x, y, rect))
+    raise Failure('%s stayed at %s, outside %s, however the wheel turned' % (name, at or 'hidden', rect))
 
 
 def case_panels(app, scene):
@@ -868,7 +877,7 @@ def case_panels(app, scene):
     view = panel(app, 'View')
     check(view[3] <= WINDOW[1], 'the View panel runs off the bottom: %s' % (view,))
     last = 'View/shadow softness'
-    check(app.widget(last, fresh=False)[1] > view[3], '%s shows unscrolled: nothing to scroll' % last)
+    check(app.shown_at(last, fresh=False) is None, '%s shows unscrolled: nothing to scroll' % last)
     x, y = scroll_into(app, last, view)
     # Its label, right of the 208-pixel field, light on the panel's dark background.
     check(text_in(app.screenshot(), x + 150, y), 'no label drawn beside %d,%d after scrolling' % (x, y))
