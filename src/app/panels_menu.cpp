@@ -106,6 +106,12 @@ static void viewMenu(UiContext& c) {
                 ui.render.mode = RenderMode(m);
         ImGui::EndMenu();
     }
+    if (ImGui::BeginMenu("Quality")) {  // what the view refines to; previews are drafts
+        for (int p = 0; p < kQualityPresetCount; ++p)
+            if (menuItem("View", qualityPresetName(QualityPreset(p)), nullptr, int(ui.quality) == p))
+                ui.quality = QualityPreset(p);
+        ImGui::EndMenu();
+    }
     if (menuItem("View", "Fog", "F", ui.render.fog)) ui.render.fog = !ui.render.fog;
     if (menuItem("View", "FXAA", "P", ui.render.post != PostMode::None)) togglePost(ui.render, PostMode::Fxaa);
     if (menuItem("View", "Orbit preview", "1", ui.previewOrbit)) ui.previewOrbit = !ui.previewOrbit;

@@ -4,6 +4,7 @@
 
 #include "marchbox/editor/editor.h"
 #include "marchbox/editor/recent.h"
+#include "marchbox/gl/quality_preset.h"
 #include "marchbox/gl/renderer.h"
 #include "scene_image.h"
 #include "window.h"
@@ -40,6 +41,7 @@ struct UiState {
 
     std::string message;                   // the last refusal or failure, shown in red
     RenderOptions render;                  // debug view and uber shader
+    QualityPreset quality = QualityPreset::Normal;  // View > Quality, over the scene's; not saved
     bool previewOrbit = false;             // key 1
     std::string scenesDir;                 // scenes/ of the source tree, for File > Open
     RecentFiles recent{recentFilesPath()}; // File > Open Recent
