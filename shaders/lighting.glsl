@@ -55,12 +55,16 @@ Surface surfaceAt(vec3 p, int id) {
     return Surface(uMaterials[m].color.rgb, uMaterials[m].coeffs, uMaterials[m].color.a);
 }
 
-// One light's diffuse and specular share, shadowed. l points towards the light.
-vec3 phong(Surface s, vec3 p, vec3 n, vec3 rd, vec3 l, vec3 color, float maxT) {
+// Light i's diffuse and specular share, shadowed if it casts. l points towards the light.
+// The light loops unroll, so `casts` is a constant and a light that casts no shadow costs no
+// shadow ray: llvmpipe would run a branch's code for the whole SIMD group anyway.
+bool castsShadow(int i) { return ((uint(SHADOW_CASTERS) >> uint(i)) & 1u) != 0u; }
+
+vec3 phong(Surface s, vec3 p, vec3 n, vec3 rd, vec3 l, vec3 color, float maxT, bool casts) {
     float diff = max(dot(n, l), 0.0);
     if (diff <= 0.0) return vec3(0.0);
     float spec = pow(max(dot(reflect(-l, n), -rd), 0.0), s.k.w);
-    float sh = shadow(p + n * 4.0 * normalStep(p), l, maxT);
+    float sh = casts ? shadow(p + n * 4.0 * normalStep(p), l, maxT) : 1.0;
     return color * sh * (s.k.y * diff * s.albedo + s.k.z * spec);
 }
 
@@ -78,11 +82,11 @@ vec3 shade(Surface s, vec3 p, vec3 n, vec3 rd) {
     for (int i = 0; i < POINT_LIGHTS; ++i) {
         vec3 toLight = uLights[i].vec.xyz - p;
         float dist = length(toLight);
-        direct += phong(s, p, n, rd, toLight / max(dist, 1e-6), uLights[i].color.rgb, dist);
+        direct += phong(s, p, n, rd, toLight / max(dist, 1e-6), uLights[i].color.rgb, dist, castsShadow(i));
     }
     for (int i = 0; i < DIR_LIGHTS; ++i) {
         Light L = uLights[POINT_LIGHTS + i];
-        direct += phong(s, p, n, rd, L.vec.xyz, L.color.rgb, uMaxDist);
+        direct += phong(s, p, n, rd, L.vec.xyz, L.color.rgb, uMaxDist, castsShadow(POINT_LIGHTS + i));
     }
     return s.k.x * s.albedo * ao + direct * (0.5 + 0.5 * ao);
 }

@@ -182,7 +182,7 @@ void App::openDrops(UiContext& c) {
 void App::present(int width, int height) {
     double now = glfwGetTime();
     view_.pollShaders(editor_.scene(), now);
-    view_.sync(editor_.scene(), editor_.document().version(), ui_.render, now);
+    view_.sync(editor_.scene(), editor_.document().version(), ui_.render, ui_.quality, now);
     renderDialog_.work(0.03);  // a few tiles a frame keep the window responsive
     // A changed scene draws its preview first, so this frame shows the change; bands of
     // refinement wait until after the swap, so the UI never waits for them.

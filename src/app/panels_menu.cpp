@@ -126,6 +126,12 @@ static void viewMenu(UiContext& c) {
                 ui.render.mode = RenderMode(m);
         ImGui::EndMenu();
     }
+    if (ImGui::BeginMenu("Quality")) {  // what the view refines to; previews are drafts
+        for (int p = 0; p < kQualityPresetCount; ++p)
+            if (menuItem("View", qualityPresetName(QualityPreset(p)), nullptr, int(ui.quality) == p))
+                ui.quality = QualityPreset(p);
+        ImGui::EndMenu();
+    }
     const bool fog = c.editor.scene().render.fog > 0.0f;
     if (menuItem("View", "Fog", "F", fog && ui.render.fog, fog)) toggleFog(c);
     if (!fog) itemTooltip("View/Fog", kNoFog);

@@ -137,6 +137,7 @@ static void statsOverlay(UiContext& c) {
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
     if (ImGui::Begin("##stats", nullptr, flags)) {
+        markPanel();
         float worst = *std::max_element(s.frameMs, s.frameMs + FrameStats::kHistory);
         // The window's rate and the scene's cost apart: one figure each, never mixed. Short
         // lines and a low plot keep the overlay in the corner, clear of the view.

@@ -11,17 +11,20 @@ static double msSince(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
 }
 
-bool SceneImage::update(Renderer& r, const PictureKey& key, StepKind only) {
+bool SceneImage::update(Renderer& r, Renderer* draft, const PictureKey& key, StepKind only) {
     if (key != key_) {
         key_ = key;
-        policy_.restart(key.width, key.height, key.aa, key.canAverage);
+        draftPreview_ = draft != nullptr;
+        policy_.restart(key.width, key.height, key.aa, key.canAverage, draftPreview_);
         changedAt_ = Clock::now();
         passMs_ = 0.0;
     }
     ViewStep step = policy_.next();
     if (step.kind == StepKind::None || step.kind != only) return false;
     double ms = 0.0;
-    if (draw(r, step, &ms)) {
+    // A draft renderer ready only since the restart must not draw what the policy takes for a pass.
+    const bool drafted = step.kind == StepKind::Preview && draftPreview_ && draft;
+    if (draw(drafted ? *draft : r, step, &ms)) {
         policy_.finished(step, ms);
         report(step, ms);
     }
@@ -77,7 +80,7 @@ void SceneImage::report(const ViewStep& s, double ms) {
     status_.state = policy_.describe();
     status_.done = policy_.done();
     const std::string head = "scene-frame " + std::to_string(s.width) + "x" + std::to_string(s.height);
-    if (s.kind == StepKind::Preview && s.divisor > 1) {
+    if (s.kind == StepKind::Preview && policy_.previewing()) {  // not a full-size first pass
         emitEvent(head + " preview " + whole(ms));
     } else {
         passMs_ += ms;

@@ -37,9 +37,10 @@ struct PictureStatus {
 class SceneImage {
 public:
     // Draws the picture's next step toward `key` if it is of kind `only` (a preview after a
-    // change, or a band of refinement); returns whether it drew. Needs the renderer's context;
-    // leaves the window's framebuffer bound.
-    bool update(Renderer& r, const PictureKey& key, StepKind only);
+    // change, or a band of refinement); returns whether it drew. Previews come from `draft`
+    // where there is one (the same scene at draft quality), everything else from `r`. Needs the
+    // renderers' context; leaves the window's framebuffer bound.
+    bool update(Renderer& r, Renderer* draft, const PictureKey& key, StepKind only);
     // The frame's other work (the UI, showing the picture, the swap) took ms: the scene's steps
     // get what it leaves of the frame budget.
     void otherWork(double ms) { policy_.otherWork(ms); }
@@ -56,6 +57,7 @@ private:
     PictureKey key_;
     ColorTarget picture_;  // RGBA8, the preview's size or the window's
     bool valid_ = false;   // picture_ holds a drawn image
+    bool draftPreview_ = false;  // the restart planned the preview at draft quality
     Clock::time_point changedAt_;
     double passMs_ = 0.0;  // the bands of the pass under way, so far
     PictureStatus status_;

@@ -12,33 +12,75 @@ namespace mb {
 
 SceneView::SceneView() : shaders_(shaderDir()) {}
 
+namespace {
+
+struct Viewed {  // a scene and the options it is drawn with, at a quality preset
+    Scene scene;
+    RenderOptions options;
+};
+
+Viewed atQuality(const Scene& scene, const RenderOptions& options, QualityPreset quality) {
+    Viewed v{scene, options};
+    applyQualityPreset(quality, &v.scene.render, &v.options);
+    return v;
+}
+
+std::unique_ptr<Renderer> newRenderer(std::string* error) {
+    auto r = std::make_unique<Renderer>();
+    return r->init(error) ? std::move(r) : nullptr;
+}
+
+}  // namespace
+
 bool SceneView::init(const Scene& scene, std::string* error) {
-    renderer_ = std::make_unique<Renderer>();
-    if (!renderer_->init(error)) return false;
+    renderer_ = newRenderer(error);
+    if (!renderer_) return false;
+    Viewed v = atQuality(scene, options_, quality_);
     // A scene whose shader fails still opens: the log window says why.
-    if (!renderer_->setScene(scene, options_, &log_)) emitEvent("shader-error");
-    renderer_->prepareUber(scene, options_);  // the stand-in while later edits compile
-    aa_ = scene.render.aa;
+    if (!renderer_->setScene(v.scene, v.options, &log_)) emitEvent("shader-error");
+    renderer_->prepareUber(v.scene, v.options);  // the stand-in while later edits compile
+    aa_ = v.scene.render.aa;
+    std::string ignored;
+    draft_ = newRenderer(&ignored);
+    requestDraft(scene);
     return true;
 }
 
+// Compiles on the driver's threads like the scene's own program; until it is built, or where
+// it fails, renderer_ draws the previews.
+void SceneView::requestDraft(const Scene& scene) {
+    if (!draft_ || quality_ == QualityPreset::Draft) return;
+    Viewed d = atQuality(scene, options_, QualityPreset::Draft);
+    std::string ignored;
+    draftCurrent_ = draft_->requestScene(d.scene, d.options, &ignored);
+}
+
+Renderer* SceneView::draftRenderer() const {
+    bool ready = draft_ && draftCurrent_ && !draft_->compiling() && draft_->program();
+    return ready && quality_ != QualityPreset::Draft ? draft_.get() : nullptr;
+}
+
 void SceneView::sync(const Scene& scene, uint64_t version, const RenderOptions& options,
-                     double now) {
-    if (version == version_ && options == options_) return;
+                     QualityPreset quality, double now) {
+    const bool sameView = options == options_ && quality == quality_;
+    if (version == version_ && sameView) return;
     // After a failure, a scene that changes every frame (a running simulation) would recompile
     // the broken shader every frame: try again at most once a second.
-    if (now < retryAt_ && options == options_) return;
+    if (now < retryAt_ && sameView) return;
+    Viewed v = atQuality(scene, options, quality);
     // A driver without background compiles blocks while it builds: the UI draws its note first.
-    if (!announced_ && renderer_->wouldCompile(scene, options)) {
+    if (!announced_ && renderer_->wouldCompile(v.scene, v.options)) {
         announced_ = true;
         return;
     }
     announced_ = false;
     options_ = options;
+    quality_ = quality;
     version_ = version;
+    requestDraft(scene);
     std::string error;
-    if (renderer_->requestScene(scene, options_, &error)) {
-        aa_ = scene.render.aa;
+    if (renderer_->requestScene(v.scene, v.options, &error)) {
+        aa_ = v.scene.render.aa;
         ++content_;
         return;
     }
@@ -55,8 +97,9 @@ bool SceneView::update(int width, int height, int selectedObject, StepKind only)
         emitEvent("shader-error");
     }
     if (renderer_->program() != before) ++content_;  // the scene's own program took over
+    if (draft_ && !draft_->poll(&error)) draftCurrent_ = false;
     PictureKey key{content_, selectedObject, width, height, aa_, options_.mode != RenderMode::ObjectId};
-    return image_.update(*renderer_, key, only);
+    return image_.update(*renderer_, draftRenderer(), key, only);
 }
 
 void SceneView::pollShaders(const Scene& scene, double now) {
@@ -68,8 +111,12 @@ void SceneView::pollShaders(const Scene& scene, double now) {
 bool SceneView::reload(const Scene& scene) {
     auto fresh = std::make_unique<Renderer>();
     std::string error;
-    if (fresh->init(&error) && fresh->setScene(scene, options_, &error)) {
+    Viewed v = atQuality(scene, options_, quality_);
+    if (fresh->init(&error) && fresh->setScene(v.scene, v.options, &error)) {
         renderer_ = std::move(fresh);
+        std::string ignored;
+        draft_ = newRenderer(&ignored);  // the old one's program has the old shaders
+        requestDraft(scene);
         ++content_;
         log_.clear();
         retryAt_ = 0.0;

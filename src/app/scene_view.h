@@ -1,9 +1,12 @@
 // scene_view.h — the scene as the window shows it: the raymarching renderer kept in step with
 // the editor, its picture refined a step a frame (scene_image.h), the selection highlighted,
-// shaders reloaded when they change on disk.
+// shaders reloaded when they change on disk. A second renderer draws the previews after a
+// change at draft quality; the refinement ends at the View menu's quality (normal: the scene's
+// own settings).
 #pragma once
 
 #include "marchbox/editor/files.h"
+#include "marchbox/gl/quality_preset.h"
 #include "marchbox/gl/renderer.h"
 #include "scene_image.h"
 
@@ -17,8 +20,9 @@ public:
     SceneView();
     bool init(const Scene& scene, std::string* error);  // needs the window's context current
 
-    // Uploads the scene when its version or the options changed since the last call.
-    void sync(const Scene& scene, uint64_t version, const RenderOptions& options, double now);
+    // Uploads the scene when its version, the options or the quality changed since the last call.
+    void sync(const Scene& scene, uint64_t version, const RenderOptions& options, QualityPreset quality,
+              double now);
     // The scene's share of a frame: swaps in a program that finished compiling, then draws the
     // picture's next step if it is of kind `only` (see SceneImage::update); true if it drew.
     bool update(int width, int height, int selectedObject, StepKind only);
@@ -36,11 +40,16 @@ public:
 
 private:
     bool reload(const Scene& scene);
+    void requestDraft(const Scene& scene);
+    Renderer* draftRenderer() const;  // null when previews draw with renderer_
 
-    std::unique_ptr<Renderer> renderer_;
+    std::unique_ptr<Renderer> renderer_;  // at quality_
+    std::unique_ptr<Renderer> draft_;     // previews; its failures only leave them to renderer_
+    bool draftCurrent_ = false;           // draft_ took the newest scene
     SceneImage image_;
     FolderWatch shaders_;
     RenderOptions options_;
+    QualityPreset quality_ = QualityPreset::Normal;
     uint64_t version_ = ~0ull;
     uint64_t content_ = 0;  // grows with each change to what the renderer draws
     int aa_ = 1;            // the scene's samples per axis, as last uploaded

@@ -7,6 +7,7 @@
 #include "marchbox/editor/messages.h"
 #include "marchbox/editor/panel_layout.h"
 #include "marchbox/editor/recent.h"
+#include "marchbox/gl/quality_preset.h"
 #include "marchbox/gl/renderer.h"
 #include "scene_image.h"
 #include "scene_view.h"
@@ -44,6 +45,7 @@ struct UiState {
 
     Messages messages;                     // refusals and failures, each in its place, in red
     RenderOptions render;                  // debug view and uber shader
+    QualityPreset quality = QualityPreset::Normal;  // View > Quality, over the scene's; not saved
     bool previewOrbit = false;             // key 1
     std::string scenesDir;                 // scenes/ of the source tree, for File > Open
     RecentFiles recent{recentFilesPath()}; // File > Open Recent

@@ -65,9 +65,10 @@ glm::vec2 samplePosition(int k, int aa) {
     return grid[size_t(std::clamp(k, 0, aa * aa - 1))];
 }
 
-void Refinement::restart(int width, int height, int aa, bool canAverage) {
+void Refinement::restart(int width, int height, int aa, bool canAverage, bool draftPreview) {
     started_ = true;
     previewed_ = false;
+    draftPreview_ = draftPreview;
     width_ = std::max(1, width);
     height_ = std::max(1, height);
     aa_ = canAverage ? std::max(1, aa) : 1;  // ids: the one sample at the pixel's centre
@@ -76,13 +77,20 @@ void Refinement::restart(int width, int height, int aa, bool canAverage) {
     lastRows_ = 0;  // the preview's cost is a whole-image average: no band to grow from yet
 }
 
+// Each kind of step sized by its own cost. Until one is known the other stands in: the passes'
+// overestimates a draft preview (it comes out coarser), the draft's underestimates the first
+// band (whose draw then corrects it).
+const RunningMean& Refinement::previewCost() const { return draftPreview_ && draftCost_.known() ? draftCost_ : cost_; }
+const RunningMean& Refinement::passCost() const { return cost_.known() ? cost_ : draftCost_; }
+
 ViewStep Refinement::next() const {
     ViewStep step;
     if (!started_ || done()) return step;
     if (!previewed_) {
+        const RunningMean& cost = previewCost();
         step.kind = StepKind::Preview;
-        step.divisor = cost_.known() ? previewDivisor(cost_.value(), width_, height_, divisor_, s_.maxDivisor, budgetMs())
-                                     : std::max(1, s_.maxDivisor);  // nothing learnt yet: the cheapest
+        step.divisor = cost.known() ? previewDivisor(cost.value(), width_, height_, divisor_, s_.maxDivisor, budgetMs())
+                                    : std::max(1, s_.maxDivisor);  // nothing learnt yet: the cheapest
         step.width = (width_ + step.divisor - 1) / step.divisor;
         step.height = (height_ + step.divisor - 1) / step.divisor;
         step.startsFrame = true;
@@ -92,7 +100,7 @@ ViewStep Refinement::next() const {
     step.width = width_;
     step.height = height_;
     const int top = height_ - rowsDone_;  // top down, as a person reads
-    int rows = bandRows(cost_.value(), width_, top, budgetMs());
+    int rows = bandRows(passCost().value(), width_, top, budgetMs());
     // Bands run from the sky down into mirrors: the cost learnt from cheap rows underestimates
     // the next ones, so a band may at most double the last.
     if (lastRows_ > 0) rows = std::min(rows, 2 * lastRows_);
@@ -116,11 +124,12 @@ void Refinement::otherWork(double ms) {
 }
 
 void Refinement::finished(const ViewStep& step, double ms) {
-    if (step.pixels() > 0 && ms >= 0.0) cost_.add(ms / double(step.pixels()));
+    const bool draft = step.kind == StepKind::Preview && draftPreview_;
+    if (step.pixels() > 0 && ms >= 0.0) (draft ? draftCost_ : cost_).add(ms / double(step.pixels()));
     if (step.kind == StepKind::Preview) {
         previewed_ = true;
         divisor_ = step.divisor;
-        if (divisor_ == 1) sample_ = 1;  // a full-size preview is the first pass, whole
+        if (divisor_ == 1 && !draft) sample_ = 1;  // a full-size preview is the first pass, whole
         return;
     }
     if (step.kind != StepKind::Band) return;
@@ -137,7 +146,8 @@ std::string Refinement::describe() const {
     auto size = [](int w, int h) { return std::to_string(w) + "x" + std::to_string(h); };
     if (previewing()) {  // before the preview is drawn, the one on its way
         int d = previewed_ ? divisor_ : next().divisor;
-        return size((width_ + d - 1) / d, (height_ + d - 1) / d) + " (1/" + std::to_string(d) + ") preview";
+        return size((width_ + d - 1) / d, (height_ + d - 1) / d) + " (1/" + std::to_string(d) + ")" +
+               (draftPreview_ ? " draft" : "") + " preview";
     }
     if (done()) return size(width_, height_) + " done";
     return size(width_, height_) + " refining " + std::to_string(pass()) + "/" + std::to_string(samples_);

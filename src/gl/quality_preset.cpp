@@ -7,21 +7,20 @@ namespace mb {
 
 namespace {
 
-// Measured with `marchbox report render` on llvmpipe, 2 threads, 480x270, against each scene's
-// converged render (4096 steps, epsilon 1e-5, same sampling); docs/render-report.md:
-// since the march is bounded and the ground met analytically, steps, epsilon, relaxation and
-// shadow steps move frame time by at most 1.3x on default, csg and reflections, and the spread
-// of repeated frames is as wide; only pile (124 objects) gains, 1.4x from 128 steps, 1.6x from
-// cone epsilon, 1.9x from both with 64 shadow steps, each keeping >= 33 dB. Fewer reflections
-// cost 21 dB on reflections; drawing 0.7 or 0.5 of the pixels per axis and stretching them
-// (a variant measured once, on 2026-11-22, and dropped) was 1.5-4.6x faster but only 22-27 dB,
-// and the editor's live view already previews at reduced size. So draft takes the marching cuts that hold >= 28 dB on every
-// scene, and is 2x faster only where marching is the cost (pile).
+// Chosen from the measured front (docs/render-report.md, "Where a frame's time goes" and the
+// marching sweeps), llvmpipe, 480x270, against each scene's converged render. llvmpipe runs
+// both sides of a branch for its whole SIMD group, so a frame costs about the same per pixel
+// wherever it looks: only code left out at compile time or loops cut short save time. What
+// draft takes, each at >= 28 dB on every example scene: shadows from the lights at least half
+// as bright as the brightest only (1.2-1.3x where a dim second light casts), aa at most 2
+// (2.2x on ao_aa's 3x3), 128 steps, 64 shadow steps and cone epsilon (up to 1.4x, on pile).
+// Left out: no shadows (24-27 dB), fewer reflections (18-22 dB on reflections), fewer pixels
+// stretched (22-27 dB).
 constexpr QualityPresetSettings kPresets[kQualityPresetCount] = {
-    //  name      maxSteps minSteps minEps  maxEps  maxRefl minAa shadowSteps cone
-    {"draft",     128,     0,       0.0f,   0.0f,   -1,     0,    64,         true},
-    {"normal",    0,       0,       0.0f,   0.0f,   -1,     0,    0,          false},
-    {"final",     0,       1024,    0.0f,   1e-4f,  -1,     3,    256,        false},
+    //  name      maxSteps minSteps minEps  maxEps  maxRefl minAa maxAa shadowSteps cone   cutoff
+    {"draft",     128,     0,       0.0f,   0.0f,   -1,     0,    2,    64,         true,  0.5f},
+    {"normal",    0,       0,       0.0f,   0.0f,   -1,     0,    0,    0,          false, 0.0f},
+    {"final",     0,       1024,    0.0f,   1e-4f,  -1,     3,    0,    256,        false, 0.0f},
 };
 
 }  // namespace
@@ -45,8 +44,10 @@ void applyQualityPreset(QualityPreset p, RenderSettings* r, RenderOptions* o) {
     if (s.maxEpsilon > 0) r->epsilon = std::min(r->epsilon, s.maxEpsilon);
     if (s.maxReflections >= 0) r->reflections = std::min(r->reflections, s.maxReflections);
     if (s.minAa) r->aa = std::max(r->aa, s.minAa);
+    if (s.maxAa) r->aa = std::min(r->aa, s.maxAa);
     if (s.shadowSteps) q->shadowSteps = s.shadowSteps;
     if (s.coneEpsilon) q->coneEpsilon = true;
+    if (s.shadowCutoff > 0) q->shadowCutoff = s.shadowCutoff;
 }
 
 }  // namespace mb

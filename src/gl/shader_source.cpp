@@ -56,6 +56,18 @@ static void applyQuality(ShaderFeatures* f, const RenderQuality& q) {
 
 int shadowKind(const Scene& s) { return s.lights.empty() ? 0 : s.render.shadows; }
 
+unsigned shadowCasters(const Scene& s, float cutoff) {
+    auto brightness = [](const Light& l) { return l.intensity * std::max({l.color.r, l.color.g, l.color.b}); };
+    float brightest = 0.0f;
+    for (const Light& l : s.lights) brightest = std::max(brightest, brightness(l));
+    unsigned mask = 0;
+    int bit = 0;
+    for (bool directional : {false, true})  // packScene's order
+        for (const Light& l : s.lights)
+            if (l.directional == directional) mask |= unsigned(brightness(l) >= cutoff * brightest) << bit++;
+    return mask;
+}
+
 bool usesGrid(const Scene& s, const RenderQuality& q) {
     int n = int(s.objects.size());
     return q.grid < 0 ? n > kGridMinObjects : q.grid == 1 && n > 0;
@@ -88,6 +100,7 @@ ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int ma
     f.ground = s.world.ground;
     f.steps = s.render.steps;
     f.shadows = shadowKind(s);
+    if (quality.shadowCutoff > 0.0f) f.shadowCasters = shadowCasters(s, quality.shadowCutoff);
     f.reflections = anyMirror(s) ? s.render.reflections : 0;
     f.fog = s.render.fog > 0;
     f.ao = s.render.ao;
@@ -143,7 +156,7 @@ static std::vector<std::pair<const char*, long>> featureDefines(const ShaderFeat
                        {"REFLECTIONS", f.reflections}, {"HAS_FOG", f.fog}, {"HAS_AO", f.ao},
                        {"USE_GRID", f.grid}, {"COMPILED", f.compiled},
                        {"RELAX_PERCENT", f.relaxPercent}, {"CONE_EPSILON", f.coneEpsilon},
-                       {"SHADOW_STEPS", f.shadowSteps}});
+                       {"SHADOW_STEPS", f.shadowSteps}, {"SHADOW_CASTERS", long(f.shadowCasters)}});
     return d;
 }
 

@@ -228,6 +228,44 @@ TEST(Refinement, AFullSizePreviewIsTheFirstPass) {
     EXPECT_FALSE(b.startsFrame);  // it adds to the preview's image
 }
 
+// The preview at draft settings only stands in: every pass, the first included, is drawn at the
+// view's own settings over it.
+TEST(Refinement, ADraftPreviewIsNotTheFirstPass) {
+    Refinement r;
+    r.restart(640, 360, 1, true, true);
+    r.finished(r.next(), 0.1);  // 80x45 in 0.1 ms: full size fits easily
+    r.restart(640, 360, 1, true, true);
+    ViewStep p = r.next();
+    ASSERT_EQ(p.divisor, 1);
+    EXPECT_EQ(r.describe(), "640x360 (1/1) draft preview");
+    r.finished(p, 10.0);
+    EXPECT_TRUE(r.previewing());
+    ViewStep b = r.next();
+    EXPECT_EQ(b.kind, StepKind::Band);
+    EXPECT_EQ(b.sample, 0);
+    EXPECT_TRUE(b.startsFrame);  // the pass replaces the preview, not adds to it
+    std::vector<ViewStep> steps = drawAll(r, 1e-5);
+    EXPECT_EQ(steps.back().sample, r.samples() - 1);
+    EXPECT_TRUE(r.done());
+}
+
+// Draft previews cost less than the passes: each is sized by its own figure, so a cheap preview
+// does not make the bands after it overrun the budget.
+TEST(Refinement, DraftPreviewsAndPassesLearnTheirCostsApart) {
+    Refinement r;
+    r.restart(1280, 720, 1, true);
+    r.finished(r.next(), 160 * 90 * kSlow);  // a preview at the passes' settings: 5.4 µs a pixel
+    r.restart(1280, 720, 1, true, true);
+    ViewStep p = r.next();  // no draft drawn yet: sized by the passes' cost, an overestimate
+    EXPECT_EQ(p.divisor, previewDivisor(kSlow, 1280, 720, 8, 8, r.budgetMs()));
+    r.finished(p, double(p.pixels()) * kSlow / 4);  // the draft: 4 times cheaper
+    ViewStep b = r.next();
+    EXPECT_EQ(b.rows, bandRows(kSlow, 1280, 720, r.budgetMs()) / kBandAlign * kBandAlign);
+    r.restart(1280, 720, 1, true, true);
+    EXPECT_EQ(r.next().divisor, previewDivisor(kSlow / 4, 1280, 720, p.divisor, 8, r.budgetMs()));
+    EXPECT_DOUBLE_EQ(r.msPerPixel(), kSlow);
+}
+
 TEST(Refinement, ARestartGoesBackToAPreview) {
     Refinement r;
     r.restart(640, 360, 1, true);

@@ -2,9 +2,11 @@
 // display rate however slow the scene is to raymarch.
 //
 // After any change (scene, camera, render options, selection, window size) the view shows a
-// preview at a reduced resolution chosen to fit the frame budget; while nothing changes it
-// refines: full resolution, then more samples per pixel, each pass in bands of rows that each
-// fit the budget. The cost model is one figure, milliseconds per pixel, learnt from the draws.
+// preview at a reduced resolution chosen to fit the frame budget, drawn at draft quality where
+// the view asks (restart's draftPreview); while nothing changes it refines, at the view's own
+// quality: full resolution, then more samples per pixel, each pass in bands of rows that each
+// fit the budget. The cost model is milliseconds per pixel, learnt from the draws: one figure
+// for the passes, and one for draft previews, which cost less.
 //
 // Rules: sizes in pixels, times in milliseconds, rows counted from the bottom as GL does. No GL
 // here: the window's SceneImage (src/app/scene_image.cpp) carries the steps out.
@@ -82,29 +84,38 @@ glm::vec2 samplePosition(int k, int aa);
 class Refinement {
 public:
     explicit Refinement(const RefinementSettings& s = {})
-        : s_(s), cost_(s.learnRate), otherMs_(s.learnRate) {}
+        : s_(s), cost_(s.learnRate), draftCost_(s.learnRate), otherMs_(s.learnRate) {}
 
     // The picture is out of date: the next step is a preview of the whole width × height view.
-    void restart(int width, int height, int aa, bool canAverage);
+    // With draftPreview it is drawn at cheaper settings than the passes, so even a full-size
+    // preview is not the first pass: the bands draw that too.
+    void restart(int width, int height, int aa, bool canAverage, bool draftPreview = false);
     ViewStep next() const;                            // what to draw now; None once done
     void finished(const ViewStep& step, double ms);   // it was drawn, taking ms
     void otherWork(double ms);  // the rest of a frame (UI, showing the picture, the swap) took ms
     double budgetMs() const;    // the scene's share: the frame budget less the rest, measured
 
     bool done() const { return started_ && sample_ >= samples_; }
-    bool previewing() const { return !previewed_ || (divisor_ > 1 && sample_ == 0 && rowsDone_ == 0); }
+    bool previewing() const {
+        return !previewed_ || ((divisor_ > 1 || draftPreview_) && sample_ == 0 && rowsDone_ == 0);
+    }
     int pass() const { return sample_ + 1; }          // the full-size pass under way, 1-based
     int samples() const { return samples_; }
     int divisor() const { return divisor_; }          // of the last preview
-    double msPerPixel() const { return cost_.value(); }
-    // "160x90 (1/8) preview", "1280x720 refining 2/4", "1280x720 done".
+    double msPerPixel() const { return cost_.value(); }  // of the passes
+    // "160x90 (1/8) preview", "1280x720 (1/1) draft preview", "1280x720 refining 2/4",
+    // "1280x720 done".
     std::string describe() const;
 
 private:
     RefinementSettings s_;
-    RunningMean cost_;     // ms per pixel
-    RunningMean otherMs_;  // the frame's other work
-    bool started_ = false, previewed_ = false;
+    const RunningMean& previewCost() const;
+    const RunningMean& passCost() const;
+
+    RunningMean cost_;       // ms per pixel of the passes, and of previews at their settings
+    RunningMean draftCost_;  // ms per pixel of draft previews
+    RunningMean otherMs_;    // the frame's other work
+    bool started_ = false, previewed_ = false, draftPreview_ = false;
     int width_ = 0, height_ = 0, aa_ = 1, samples_ = 1;
     int divisor_ = 0;   // of the last preview; kept across restarts for previewDivisor's hysteresis
     int sample_ = 0;    // the full-size pass being drawn: sample number

@@ -24,9 +24,10 @@ struct QualityPresetSettings {
     int maxSteps, minSteps;            // march steps
     float minEpsilon, maxEpsilon;      // hit distance
     int maxReflections;                // -1: the scene's own
-    int minAa;                         // supersamples per axis
+    int minAa, maxAa;                  // supersamples per axis
     int shadowSteps;                   // RenderQuality::shadowSteps; 0: the renderer's own
     bool coneEpsilon;                  // true turns RenderQuality::coneEpsilon on
+    float shadowCutoff;                // RenderQuality::shadowCutoff; 0: every light casts
 };
 const QualityPresetSettings& qualityPresetSettings(QualityPreset p);
 

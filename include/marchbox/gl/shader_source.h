@@ -27,6 +27,9 @@ struct RenderQuality {
     int shadowSteps = 128;     // march steps of each shadow ray
     int grid = -1;             // object grid: -1 when it pays (kGridMinObjects), 0 never, 1 always
     float softness = 8.0f;     // soft-shadow k (Quilez): penumbra width ~ distance / k; a uniform
+    // Lights less bright than this fraction of the brightest cast no shadow (0: every light
+    // does). Each skipped light saves a shadow ray per shaded point (draft, quality_preset.cpp).
+    float shadowCutoff = 0.0f;
 
     bool operator==(const RenderQuality&) const = default;
 };
@@ -47,6 +50,7 @@ struct ShaderFeatures {
     int relaxPercent = 100;         // applies without the grid only: cell caps are not radii
     bool coneEpsilon = false;
     int shadowSteps = 128;
+    unsigned shadowCasters = (1u << kMaxLights) - 1;  // bit i: light i of the Lights block casts
     bool compiled = false;              // the chain is straight-line code, per `layout`
     std::vector<ObjectLayout> layout;   // empty unless compiled
 
@@ -61,6 +65,10 @@ constexpr int kGridMinObjects = 64;
 
 // The rules both the specialised and the uber shader follow, each written once.
 int shadowKind(const Scene& scene);                              // 0 without lights
+// Bit i set: light i, in the Lights block's order (point lights, then directional), is at least
+// `cutoff` times as bright as the brightest light, brightness being its colour's largest
+// channel times its intensity.
+unsigned shadowCasters(const Scene& scene, float cutoff);
 bool usesGrid(const Scene& scene, const RenderQuality& quality);  // see RenderQuality::grid
 
 // maxUniformBlockBytes is GL_MAX_UNIFORM_BLOCK_SIZE; 0 means "assume the GL minimum, 16 KiB".
