@@ -145,6 +145,9 @@ static void viewMenu(UiContext& c) {
 // the editor is built on.
 static void aboutWindow(UiState& ui) {
     if (!ui.showAbout) return;
+    // Centred, as dialogs are, rather than wherever ImGui's default puts it (over Objects).
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     if (ImGui::Begin("About Marchbox", &ui.showAbout, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::Text("Marchbox %s", MARCHBOX_VERSION);
         markItem("About/version " MARCHBOX_VERSION);
