@@ -205,7 +205,7 @@ void App::screenshot(int width, int height) {
     if (saveScreenshot(width, height, envOr("MARCHBOX_SCREENSHOT_DIR", "."), &path, &error))
         emitEvent("screenshot " + path);
     else
-        *ui_.messages.at(Place::Status) = error;
+        ui_.messages.say(Place::Status, error);
 }
 
 std::string App::title() const {

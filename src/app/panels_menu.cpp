@@ -48,7 +48,7 @@ static void recentMenu(UiContext& c) {
     ImGui::Separator();
     if (menuItem("Open Recent", "Clear list")) {
         std::string why = c.ui.recent.clear();
-        if (!why.empty()) *c.ui.messages.at(Place::Status) = why;
+        if (!why.empty()) c.ui.messages.say(Place::Status, why);
     }
 }
 
@@ -113,7 +113,7 @@ static void toggleFog(UiContext& c) {
         c.ui.render.fog = !c.ui.render.fog;
         return;
     }
-    *c.ui.messages.at(Place::Status) = kNoFog;
+    c.ui.messages.say(Place::Status, kNoFog);
     emitEvent(std::string("refuse ") + kNoFog);
 }
 

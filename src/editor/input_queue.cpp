@@ -7,6 +7,8 @@ namespace mb {
 
 namespace {
 
+constexpr double kMaxLag = 0.25;  // s: more and motion is merged rather than replayed
+
 using Kind = InputEvent::Kind;
 
 bool inRange(int code, int count) { return code >= 0 && code < count; }
@@ -23,7 +25,7 @@ bool changesState(const InputState& s, const InputEvent& e) {
 // The frame being taken, and what changed in it so far.
 class Frame {
 public:
-    Frame(InputState* s, bool typing) : s_(*s), typing_(typing) {}
+    Frame(InputState* s, bool typing, bool behind) : s_(*s), typing_(typing), behind_(behind) {}
 
     // Whether `e` may join this frame. typingKey: a key that types a character while a field
     // has the keyboard, whose state nobody needs to see.
@@ -34,6 +36,7 @@ public:
 private:
     InputState& s_;
     bool typing_;
+    bool behind_;  // the queue's oldest event is kMaxLag old: motion joins wheels
     std::bitset<InputState::kButtons> buttons_;  // changed in this frame
     std::bitset<InputState::kKeys> keys_;
     bool keyWentDown_ = false, silentKeyWentDown_ = false, wheeled_ = false;
@@ -43,12 +46,14 @@ private:
 // and a click stays a click. Text and keys after a click go to what the click chose. A key that
 // goes down is seen with the keys held as it went (Ctrl+A released Ctrl first is still Ctrl+A).
 // ImGui reads a frame's text before its keys, so nothing is typed after a key that types nothing
-// (Return then "x" must not put the x into the field Return closes).
+// (Return then "x" must not put the x into the field Return closes). A wheel turns under the
+// mouse where it was, so motion after it waits, unless the queue has fallen behind: a touchpad
+// sends wheel and motion in turn, and a frame each would replay a scroll seconds late.
 bool Frame::fits(const InputEvent& e, bool typingKey) const {
     const bool clicked = buttons_.any();
     switch (e.kind) {
         case Kind::Move:
-        case Kind::Leave: return !clicked && !wheeled_;
+        case Kind::Leave: return !clicked && (!wheeled_ || behind_);
         case Kind::Wheel: return true;
         case Kind::Text: return !clicked && !silentKeyWentDown_;
         case Kind::Button: return !changesState(s_, e) || !buttons_[size_t(e.code)];
@@ -97,7 +102,7 @@ void InputQueue::takeFrame(InputState* s, double now, bool typing) {
     s->wheel = glm::vec2(0.0f);
     s->text.clear();
     s->presses.clear();
-    Frame frame(s, typing);
+    Frame frame(s, typing, !events_.empty() && now - events_.front().time > kMaxLag);
     double last = s->time;
     while (!events_.empty()) {
         const InputEvent& e = events_.front();

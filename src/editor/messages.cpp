@@ -16,9 +16,14 @@ static bool aboutSelection(Place p) { return p <= Place::ObjectPopup; }
 
 void Messages::shown(Place p) { entries_[size_t(p)].shown = true; }
 
+void Messages::say(Place p, const std::string& text) {
+    entries_[size_t(p)].text = text;
+    entries_[size_t(p)].said = true;
+}
+
 bool Messages::isNew(Place p) const {
     const Entry& e = entries_[size_t(p)];
-    return !e.text.empty() && e.text != e.before;
+    return !e.text.empty() && (e.text != e.before || e.said);
 }
 
 void Messages::endFrame(const Selection& selection, double seconds) {
@@ -34,6 +39,7 @@ void Messages::endFrame(const Selection& selection, double seconds) {
             e.text.clear();
         }
         e.before = e.text;
+        e.said = false;
         e.wasShown = e.shown;
         e.shown = false;
     }

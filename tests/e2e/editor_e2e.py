@@ -352,6 +352,7 @@ def case_select(app, scene):
     settle_after(app, done)
     after = app.screenshot()
     changed = max(abs(p - q) for p, q in zip(before.pixel(x, y), after.pixel(x, y)))
+    # The goldens' per-pixel bound (p99 2/255): the tint this replaced moved it by 50 and more.
     check(changed <= 2, 'the selected sphere changed colour: %s then %s' % (before.pixel(x, y), after.pixel(x, y)))
     orange = [sum(1 for p in ring if is_orange(img.pixel(*p))) for img in (before, after)]
     check(orange[0] == 0 and orange[1] > len(ring) // 3,
@@ -880,7 +881,7 @@ def case_panels(app, scene):
     view = panel(app, 'View')
     check(view[3] <= WINDOW[1], 'the View panel runs off the bottom: %s' % (view,))
     last = 'View/shadow softness'
-    check(app.shown_at(last, fresh=False) is None, '%s shows unscrolled: nothing to scroll' % last)
+    check('hidden ' + last in app.events(), '%s shows unscrolled: nothing to scroll' % last)
     x, y = scroll_into(app, last, view)
     # Its label, right of the 208-pixel field, light on the panel's dark background.
     check(text_in(app.screenshot(), x + 150, y), 'no label drawn beside %d,%d after scrolling' % (x, y))
@@ -902,11 +903,14 @@ def case_panels(app, scene):
 
 
 # [messages] -------------------------------------------------------------------
+def is_error_red(rgb):  # fieldErrorLine's (255, 115, 102)
+    return rgb[0] > 230 and 95 < rgb[1] < 135 and 80 < rgb[2] < 120
+
+
 def red_text(img, rect):
-    """Pixels of fieldErrorLine's red (255, 115, 102) inside rect (x0, y0, x1, y1)."""
-    return sum(1 for x in range(max(rect[0], 0), min(rect[2], img.width))
-               for y in range(max(rect[1], 0), min(rect[3], img.height))
-               if img.pixel(x, y)[0] > 230 and 95 < img.pixel(x, y)[1] < 135 and 80 < img.pixel(x, y)[2] < 120)
+    """Pixels of an error message's red inside rect (x0, y0, x1, y1)."""
+    w, h = (rect[2] - rect[0] + 1) // 2, (rect[3] - rect[1]) // 2
+    return pixels_in(img, rect[0] + w, rect[1] + h, w, h, is_error_red)
 
 
 def case_messages(app, scene):

@@ -150,6 +150,17 @@ TEST(InputQueue, TheWheelAddsUpWithinAFrameAndTheMotionAfterItWaits) {
     EXPECT_TRUE(f.state.mouseIn);
 }
 
+TEST(InputQueue, ABackloggedScrollWithMotionIsMergedNotReplayed) {
+    // A touchpad's wheel and motion in turn, 20 notches over 0.2 s.
+    Frames f;
+    for (int i = 0; i < 20; ++i)
+        f.push({{.kind = Kind::Wheel, .time = 0.01 * i, .at = {0, 1}}, move(float(i), 0, 0.01 * i + 0.005)});
+    EXPECT_EQ(f.next(0.1).wheel, glm::vec2(0, 1));  // up to date: the motion waits for its frame
+    EXPECT_EQ(f.next(1.0).wheel, glm::vec2(0, 19));  // a second behind: the rest in one frame
+    EXPECT_EQ(f.state.mouse, glm::vec2(19, 0));
+    EXPECT_TRUE(f.queue.empty());
+}
+
 TEST(InputQueue, TheMouseIsOutsideUntilItMovesInAndAfterItLeaves) {
     Frames f;
     EXPECT_FALSE(f.next().mouseIn);

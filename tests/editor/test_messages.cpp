@@ -85,3 +85,14 @@ TEST(Messages, TheStatusLineClearsAfterItsTime) {
     frame(m, {}, Selection{}, 10.0 + Messages::kStatusSeconds);
     EXPECT_EQ(m.text(Place::Status), "");
 }
+
+TEST(Messages, TheSameStatusSaidAgainStartsItsTimeAgain) {
+    Messages m;
+    m.say(Place::Status, "this scene has no fog");
+    frame(m, {}, Selection{}, 10.0);
+    m.say(Place::Status, "this scene has no fog");  // F again, 6 s later
+    EXPECT_TRUE(m.isNew(Place::Status));
+    frame(m, {}, Selection{}, 16.0);
+    frame(m, {}, Selection{}, 10.0 + Messages::kStatusSeconds);
+    EXPECT_EQ(m.text(Place::Status), "this scene has no fog") << "timed from the first time it was said";
+}

@@ -24,6 +24,9 @@ public:
     // Where a place's fields and buttons write their refusals; empty: nothing to say.
     std::string* at(Place p) { return &entries_[size_t(p)].text; }
     const std::string& text(Place p) const { return entries_[size_t(p)].text; }
+    // Raises `text` at p as new even when the same text already shows (F pressed twice: the
+    // status line's time starts again).
+    void say(Place p, const std::string& text);
 
     void shown(Place p);  // the place is on screen this frame (its message, if any, with it)
     bool onScreen(Place p) const { return entries_[size_t(p)].wasShown; }  // in the last frame
@@ -40,6 +43,7 @@ private:
         std::string text;
         std::string before;  // the text at the last endFrame: a difference is a new message
         double since = 0.0;  // when it was raised
+        bool said = false;   // raised through say() since the last endFrame
         bool shown = false, wasShown = false;  // this frame, the last one
     };
     std::array<Entry, kPlaceCount> entries_;
