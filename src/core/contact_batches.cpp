@@ -193,7 +193,7 @@ void loadLane(ContactBatch& to, int l, const Contact& c, const std::vector<Physi
     to.a[l] = c.a, to.b[l] = c.b;
     to.nx[l] = c.normal.x, to.ny[l] = c.normal.y, to.nz[l] = c.normal.z;
     to.separation[l] = c.separation, to.armA[l] = c.armA, to.armB[l] = c.armB, to.slop[l] = c.slop;
-    to.rollRadius[l] = c.rollRadius;  // curve: 0 until setCurve
+    to.curve[l] = 0.0, to.rollRadius[l] = c.rollRadius;  // curve: 0 until setCurve
     setRows(to.solve, l, c.mass, inverseMasses(c, bodies, false));
     setRows(to.relax, l, c.shock ? c.shockMass : c.mass, inverseMasses(c, bodies, true));
     to.normalImpulse[l] = c.normalImpulse, to.maxNormalImpulse[l] = c.maxNormalImpulse;
@@ -206,18 +206,16 @@ void loadLane(ContactBatch& to, int l, const Contact& c, const std::vector<Physi
 void ContactBatches::load(const SolverContext& ctx) {
     const int staticBody = int(ctx.bodies.size()) - 1;
     buildContactGraph(ctx.contacts, ctx.split, staticBody, graph_, scratch_);
+    Contact padding;  // on the static body alone, no mass, no impulse: never written back
+    padding.a = padding.b = staticBody;
     batches_.resize(size_t(graph_.batches()));
     for (int k = 0; k < graph_.batches(); ++k) {
         ContactBatch& c = batches_[size_t(k)];
-        c = ContactBatch{};
+        c.count = 0;
         for (int l = 0; l < kLanes; ++l) {
             const int i = graph_.slots[size_t(k * kLanes + l)];
-            if (i < 0) {  // padding: computed on zeros, never written back
-                c.a[l] = c.b[l] = staticBody;
-                continue;
-            }
-            loadLane(c, l, ctx.contacts[size_t(i)], ctx.bodies);
-            ++c.count;
+            loadLane(c, l, i < 0 ? padding : ctx.contacts[size_t(i)], ctx.bodies);
+            c.count += i < 0 ? 0 : 1;
         }
     }
 }
