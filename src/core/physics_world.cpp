@@ -10,10 +10,10 @@
 #include "marchbox/worker.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>
-#include <tuple>
 
 namespace mb {
 
@@ -28,11 +28,11 @@ struct PhysicsWorld::Impl {
           rolling(scene.world.rolling) {}
 
     struct Order {
-        double height;
+        std::uint64_t height;  // orderedBits(contact height): compares as the double does
         std::uint64_t key;
         int index;
         int run;  // SolverContext::split: 0 or 1, one half; 2, both
-        bool operator<(const Order& o) const { return std::tie(height, key) < std::tie(o.height, o.key); }
+        bool operator<(const Order& o) const { return height < o.height || (height == o.height && key < o.key); }
     };
     struct Warm {  // a contact's impulses, kept for the next step
         std::uint64_t key;
@@ -87,6 +87,13 @@ std::uint64_t contactKey(const Contact& c, int staticBody) {
 double contactHeight(const Contact& c, const std::vector<PhysicsBody>& bodies) {
     const PhysicsBody& b = bodies[c.b];
     return b.pos.y - c.armB * c.normal.y;  // the contact point, on b's surface
+}
+
+// The bits of a double as an unsigned integer in the double's order (negatives reversed below
+// the positives), so that the sort compares integers; −0 and +0 both map to +0's bits.
+std::uint64_t orderedBits(double x) {
+    const auto bits = std::bit_cast<std::uint64_t>(x + 0.0);
+    return bits >> 63 ? ~bits : bits | std::uint64_t(1) << 63;
 }
 
 }  // namespace
@@ -227,7 +234,8 @@ void PhysicsWorld::orderAndWarmStart() {
     const int staticBody = bodyCount();
     w.order.clear();
     for (size_t i = 0; i < w.contacts.size(); ++i)
-        w.order.push_back({contactHeight(w.contacts[i], bodies_), contactKey(w.contacts[i], staticBody), int(i), 2});
+        w.order.push_back({orderedBits(contactHeight(w.contacts[i], bodies_)), contactKey(w.contacts[i], staticBody),
+                           int(i), 2});
     std::sort(w.order.begin(), w.order.end());
     splitInHalves();
     // Each run keeps the bottom-up order: a stable partition, by counting.
