@@ -1,4 +1,6 @@
-// marchbox/contact_solver.h — sequential impulses on sphere contacts, Box2D v3 style soft step.
+// marchbox/contact_solver.h — sequential impulses on sphere contacts, Box2D v3 style soft step:
+// the contacts, their row masses for a step and the restitution pass. The substeps' rows run in
+// batches (marchbox/contact_batches.h).
 //
 // A contact joins body a and body b along a unit normal from a to b. A static surface is the
 // world's static body (zero inverse mass and velocity) as a. Both contact arms lie along the
@@ -78,8 +80,8 @@ struct SolverContext {
 // resting contacts meet at the speed gravity gives them in a step; 0 without gravity.
 double bounceThreshold(const SolverContext& ctx);
 
-// Row masses, the approach speed and shock propagation of each contact, for this step. The rows
-// themselves are solved in batches (marchbox/contact_batches.h), bottom-up for shock propagation.
+// Row masses, the approach speed and shock propagation of each contact, for this step. The
+// contacts must be sorted bottom-up for shock propagation (see the .cpp).
 void prepareContacts(SolverContext& ctx);
 InverseMasses inverseMasses(const Contact& c, const std::vector<PhysicsBody>& bodies, bool relax);
 void applyRestitution(SolverContext& ctx);
