@@ -1,6 +1,7 @@
 // physics_step_bench.cpp — times PhysicsWorld::step on the report's pile, for profiling.
 //
-//   physics_step_bench COUNT STEPS [FROM [THREADS]]   (pileScene(COUNT, 7), default settings)
+//   physics_step_bench COUNT STEPS [FROM [THREADS [RADIUS]]]   (pileScene(COUNT, 7, RADIUS), default
+//   settings; RADIUS 0.2 unless given, the pile)
 // Prints ms per step, the last step's contacts and awake bodies, and a state checksum so that
 // an optimisation can be checked to leave the results bit for bit alone. Small STEPS under
 // valgrind --tool=callgrind give deterministic instruction counts; with --instr-atstart=no only
@@ -24,7 +25,8 @@ int main(int argc, char** argv) {
     const int from = argc > 3 ? std::atoi(argv[3]) : 0;
     mb::PhysicsSettings settings;
     if (argc > 4) settings.threads = std::atoi(argv[4]);
-    mb::PhysicsWorld world(mb::pileScene(count, 7), settings);
+    const float radius = argc > 5 ? float(std::atof(argv[5])) : 0.2f;
+    mb::PhysicsWorld world(mb::pileScene(count, 7, radius), settings);
     double busy = 0.0;
     for (int i = 0; i < steps; ++i) {
         if (i == from) CALLGRIND_START_INSTRUMENTATION;
@@ -40,7 +42,7 @@ int main(int argc, char** argv) {
         std::memcpy(bytes, v, sizeof v);
         for (unsigned char c : bytes) sum = (sum ^ c) * 1099511628211ull;
     }
-    std::printf("%d spheres, %d steps: %.3f ms/step, %d contacts, %d awake, penetration %.3g, state %016llx\n",
-                count, steps, 1e3 * busy / steps, world.stats().contacts, world.stats().awake,
+    std::printf("%d spheres, %d steps: %.3f ms/step, %d contacts in %d levels, %d awake, penetration %.3g, state %016llx\n",
+                count, steps, 1e3 * busy / steps, world.stats().contacts, world.stats().levels, world.stats().awake,
                 world.stats().maxPenetration, sum);
 }

@@ -3,9 +3,9 @@
 // Each sphere, grown by its speculative margin, has an extent e (a radius). The cell size is twice
 // the 95th-percentile extent, so a typical sphere fits in one cell and two that overlap lie in the
 // same or adjacent cells. The few larger ones (fast spheres, a boulder among pebbles) look up the
-// block of cells their reach covers, and each other by brute force. The cell list stays sorted
-// between steps, so re-sorting is near linear, and neighbour cells are found by cursors that only
-// move forward through it, so pairing is linear too: no per-cell searches.
+// block of cells their reach covers, and each other by sweep and prune along x. The cell list
+// stays sorted between steps, so re-sorting is near linear, and neighbour cells are found by
+// cursors that only move forward through it, so pairing is linear too: no per-cell searches.
 #pragma once
 
 #include <cstdint>
@@ -44,7 +44,7 @@ private:
 
     std::vector<Entry> cells_;  // sorted by (x, y, z, body)
     std::vector<Sphere> spheres_;  // spheres_[i] is body cells_[i].body
-    std::vector<int> large_;    // entries of bodies too big for the grid, by body
+    std::vector<int> large_;    // entries of bodies too big for the grid, by the low end of their reach in x
     std::vector<double> scratch_;
     double cell_ = 1.0;         // edge of a grid cell, this step
 };

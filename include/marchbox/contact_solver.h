@@ -1,4 +1,6 @@
-// marchbox/contact_solver.h — sequential impulses on sphere contacts, Box2D v3 style soft step.
+// marchbox/contact_solver.h — sequential impulses on sphere contacts, Box2D v3 style soft step:
+// the contacts, their row masses for a step and the restitution pass. The substeps' rows run in
+// batches (marchbox/contact_batches.h).
 //
 // A contact joins body a and body b along a unit normal from a to b. A static surface is the
 // world's static body (zero inverse mass and velocity) as a. Both contact arms lie along the
@@ -32,7 +34,6 @@ struct Contact {
     bool shock = false;                  // the relax pass holds the lower body fixed
     double rollRadius = 0.0;             // lever of rolling resistance
     bool curved = false;                 // a static surface that curves: followed every substep
-    double curve = 0.0;                  // this substep's bend of it (StaticCollider::bend), m
     double shift = 0.0;                  // added to separation for the impacts (impacts.h), m
     double relativeVelocity = 0.0;       // normal velocity at the start of the step, for bounce
     double normalImpulse = 0.0;          // accumulated per substep, warm started across steps
@@ -49,6 +50,12 @@ struct Softness {
     double biasRate = 0.0, massScale = 1.0, impulseScale = 0.0;
 };
 Softness makeSoftness(double hertz, double dampingRatio, double h);
+
+// The inverse masses and inertias a contact's impulses are applied with: the bodies' own, or 0
+// for a body held fixed (the lower body under shock propagation, in the relax pass).
+struct InverseMasses {
+    double massA, inertiaA, massB, inertiaB;
+};
 
 class Worker;
 
@@ -73,11 +80,10 @@ struct SolverContext {
 // resting contacts meet at the speed gravity gives them in a step; 0 without gravity.
 double bounceThreshold(const SolverContext& ctx);
 
+// Row masses, the approach speed and shock propagation of each contact, for this step. The
+// contacts must be sorted bottom-up for shock propagation (see the .cpp).
 void prepareContacts(SolverContext& ctx);
-void warmStartContacts(SolverContext& ctx);
-// Contacts in order; they must be sorted bottom-up for shock propagation (see the .cpp).
-// The solve pass (useBias) also sets PhysicsBody::supported: pushed by a contact after it.
-void solveContacts(SolverContext& ctx, bool useBias);  // useBias false: the relax pass
+InverseMasses inverseMasses(const Contact& c, const std::vector<PhysicsBody>& bodies, bool relax);
 void applyRestitution(SolverContext& ctx);
 double contactSeparation(const Contact& c, const std::vector<PhysicsBody>& bodies);  // now
 

@@ -84,6 +84,7 @@ struct PhysicsStats {
     int contacts = 0;             // contact constraints in the last step (speculative included)
     int awake = 0;                // awake dynamic bodies
     int halves = 0;               // contacts in the two halves that two threads may solve at once
+    int levels = 0;               // levels of contacts that share no body (marchbox/contact_graph.h)
     double maxPenetration = 0.0;  // m, deepest overlap at the end of the last step
 };
 

@@ -40,7 +40,8 @@ Scene rampScene(float degrees, float friction, float rolling);
 Scene stackScene(float massRatio);                     // heavy on light, in a well barely wider
 Scene tunnelScene(float speed, float angleDegrees);    // at a 2 cm plate, angle from its normal
 Scene restingScene(float radius, float x);             // at rest on the ground at x
-Scene pileScene(int count, std::uint32_t seed);        // dropped into a walled bin
+// Dropped into a walled bin, about 8 layers deep: radii from 0.8·r to r.
+Scene pileScene(int count, std::uint32_t seed, float r = 0.1f);
 Scene gasScene(int count, std::uint32_t seed);         // elastic, frictionless, in a closed box
 
 // The deepest overlap among spheres (centres, radii) and between them and the scene's static

@@ -14,6 +14,7 @@
 #include "marchbox/scene.h"
 #include "marchbox/sdf.h"
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 #include <vector>
 
@@ -54,6 +55,15 @@ private:
         int first, last;       // objects [first, last) of statics_
         double size = 0.0;     // largest bounding radius of its objects, m
     };
+    struct Bound {             // an object's shape lies within `less` of its box or centre
+        glm::dvec3 centre;
+        glm::dmat3 toLocal;
+        glm::dvec3 half;       // the box's half extents; 0 for a shape bound by a sphere
+        double less;           // the distance's shortfall: the sphere's radius, or rounding
+        double grow;           // what a smooth union adds, k/4
+        bool box;
+    };
+    static Bound boundOf(const SdfObject& o);
     double lowerBound(const Group& g, const glm::dvec3& p) const;  // <= distance to the group
     void localise(const Group& g, const glm::dvec3& origin, bool append);
     // Every group within `reach` of `centre`, moved to `origin`, in chain order.
@@ -64,6 +74,7 @@ private:
     StaticHit localHit(int group, double radius, double d) const;
 
     std::vector<SdfObject> statics_;
+    std::vector<Bound> bounds_;  // per static object
     std::vector<Group> groups_;
     bool ground_ = true;
     double floor_ = 0.0;

@@ -176,10 +176,10 @@ Scene restingScene(float radius, float x) {
     return s;
 }
 
-Scene pileScene(int count, std::uint32_t seed) {
+Scene pileScene(int count, std::uint32_t seed, float r) {
     Scene s = physicsWorld(9.81f, 0.3f, 0.5f, true);
     Lcg rng{seed};
-    const float r = 0.1f, spacing = 2.4f * r;
+    const float spacing = 2.4f * r;
     const int side = std::max(2, int(std::ceil(std::sqrt(count / 8.0f))));  // about 8 layers
     const float inner = 0.5f * spacing * float(side) + 0.3f * r;
     addWalls(s, inner, 0.5f * spacing * float(count / (side * side) + 2), 0.1f);

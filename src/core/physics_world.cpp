@@ -2,6 +2,7 @@
 #include "marchbox/physics.h"
 
 #include "marchbox/broadphase.h"
+#include "marchbox/contact_batches.h"
 #include "marchbox/contact_solver.h"
 #include "marchbox/impacts.h"
 #include "marchbox/island.h"
@@ -9,10 +10,10 @@
 #include "marchbox/worker.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>
-#include <tuple>
 
 namespace mb {
 
@@ -27,11 +28,11 @@ struct PhysicsWorld::Impl {
           rolling(scene.world.rolling) {}
 
     struct Order {
-        double height;
+        std::uint64_t height;  // orderedBits(contact height): compares as the double does
         std::uint64_t key;
         int index;
         int run;  // SolverContext::split: 0 or 1, one half; 2, both
-        bool operator<(const Order& o) const { return std::tie(height, key) < std::tie(o.height, o.key); }
+        bool operator<(const Order& o) const { return height < o.height || (height == o.height && key < o.key); }
     };
     struct Warm {  // a contact's impulses, kept for the next step
         std::uint64_t key;
@@ -42,6 +43,7 @@ struct PhysicsWorld::Impl {
     StaticCollider statics;
     Broadphase broadphase;
     Impacts impacts;
+    ContactBatches batches;  // the solver's state during the substeps
     double gravity, friction, restitution, rolling;
     std::vector<Contact> contacts, sorted;
     std::vector<int> curved;  // contacts on curved static surfaces, followed every substep
@@ -85,6 +87,13 @@ std::uint64_t contactKey(const Contact& c, int staticBody) {
 double contactHeight(const Contact& c, const std::vector<PhysicsBody>& bodies) {
     const PhysicsBody& b = bodies[c.b];
     return b.pos.y - c.armB * c.normal.y;  // the contact point, on b's surface
+}
+
+// The bits of a double as an unsigned integer in the double's order (negatives reversed below
+// the positives), so that the sort compares integers; −0 and +0 both map to +0's bits.
+std::uint64_t orderedBits(double x) {
+    const auto bits = std::bit_cast<std::uint64_t>(x + 0.0);
+    return bits >> 63 ? ~bits : bits | std::uint64_t(1) << 63;
 }
 
 }  // namespace
@@ -155,16 +164,18 @@ void PhysicsWorld::step() {
     }
     if (settings_.impacts) w.impacts.resolve(ctx);
     prepareContacts(ctx);
+    w.batches.load(ctx);
     for (PhysicsBody& b : bodies_) b.delta = dvec3(0.0);
     for (int k = 0; k < substeps; ++k) {
         integrateVelocities(h);
         bendCurved(h);
-        warmStartContacts(ctx);
-        for (int i = 0; i < iterations; ++i) solveContacts(ctx, true);
+        w.batches.warmStart(ctx);
+        for (int i = 0; i < iterations; ++i) w.batches.solve(ctx, true);
         integratePositions(h);
         followCurved();
-        for (int i = 0; i < iterations; ++i) solveContacts(ctx, false);
+        for (int i = 0; i < iterations; ++i) w.batches.solve(ctx, false);
     }
+    w.batches.store(w.contacts);
     for (int i = 0; i < settings_.restitutionIterations; ++i) applyRestitution(ctx);
     if (settings_.impacts) w.impacts.correctPositions(bodies_, w.contacts);
     keepImpulses();
@@ -223,7 +234,8 @@ void PhysicsWorld::orderAndWarmStart() {
     const int staticBody = bodyCount();
     w.order.clear();
     for (size_t i = 0; i < w.contacts.size(); ++i)
-        w.order.push_back({contactHeight(w.contacts[i], bodies_), contactKey(w.contacts[i], staticBody), int(i), 2});
+        w.order.push_back({orderedBits(contactHeight(w.contacts[i], bodies_)), contactKey(w.contacts[i], staticBody),
+                           int(i), 2});
     std::sort(w.order.begin(), w.order.end());
     splitInHalves();
     // Each run keeps the bottom-up order: a stable partition, by counting.
@@ -271,14 +283,14 @@ void PhysicsWorld::splitInHalves() {
 }
 
 // The bend of each curved surface along the move the body would make this substep at its
-// velocity now, for the solve pass (Contact::curve). Where the impacts moved a body, its true
-// position is its substep position plus the impacts' correction.
+// velocity now, for the solve pass (ContactBatches::setCurve). Where the impacts moved a body, its
+// true position is its substep position plus the impacts' correction.
 void PhysicsWorld::bendCurved(double h) {
     Impl& w = *impl_;
     for (int i : w.curved) {
-        Contact& c = w.contacts[size_t(i)];
+        const Contact& c = w.contacts[size_t(i)];
         const PhysicsBody& b = bodies_[c.b];
-        c.curve = w.statics.bend(c.feature, b.pos + w.impacts.offset(c.b), c.normal, b.vel * h);
+        w.batches.setCurve(i, w.statics.bend(c.feature, b.pos + w.impacts.offset(c.b), c.normal, b.vel * h));
     }
 }
 
@@ -294,8 +306,7 @@ void PhysicsWorld::followCurved() {
         c.normal = hit.normal;
         c.separation = hit.separation - glm::dot(c.normal, b.delta);
         c.shift = glm::dot(c.normal, offset);
-        c.curve = 0.0;
-        c.tangentImpulse -= glm::dot(c.tangentImpulse, c.normal) * c.normal;
+        w.batches.follow(i, c.normal, c.separation);
     }
 }
 
@@ -389,6 +400,7 @@ void PhysicsWorld::updateStats() {
     stats_ = PhysicsStats{};
     stats_.contacts = int(impl_->contacts.size());
     stats_.halves = impl_->split[1];
+    stats_.levels = impl_->batches.levels();
     for (const Contact& c : impl_->contacts)
         stats_.maxPenetration = std::max(stats_.maxPenetration, -contactSeparation(c, bodies_));
     for (int i = 0; i < bodyCount(); ++i) stats_.awake += bodies_[i].awake ? 1 : 0;

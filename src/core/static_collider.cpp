@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <limits>
 
@@ -29,18 +30,30 @@ StaticCollider::StaticCollider(const Scene& scene)
     for (int i = chainEnd; i < n; ++i) groups_.push_back({i, i + 1});
     for (Group& g : groups_)
         for (int i = g.first; i < g.last; ++i) g.size = std::max(g.size, double(statics_[i].bound));
+    for (const SdfObject& o : statics_) bounds_.push_back(boundOf(o));
     local_.ground = false;
 }
 
 // Subtract and intersect only remove material and a smooth union of radius k adds at most k/4,
-// so the group lies inside its union members' bounding spheres grown by k/4.
+// so the group lies inside its union members grown by k/4: a box is its own bound (the walls of a
+// well, where a bounding sphere would reach every sphere in the well), any other shape its
+// bounding sphere. In double, once: the query asks for every sphere, every step.
+StaticCollider::Bound StaticCollider::boundOf(const SdfObject& o) {
+    // The float rotation may place a box a few ulps off: keep the bound below the true distance.
+    constexpr double kRounding = 1e-5;
+    const bool box = o.type == ShapeType::Box;
+    return {glm::dvec3(o.pos), glm::dmat3(o.toLocal), box ? glm::dvec3(o.size) : glm::dvec3(0.0),
+            box ? kRounding * o.bound : double(o.bound), 0.25 * o.blend, box};
+}
+
 double StaticCollider::lowerBound(const Group& g, const glm::dvec3& p) const {
     double bound = kInf;
     for (int i = g.first; i < g.last; ++i) {
-        const SdfObject& o = statics_[i];
-        if (o.op != CsgOp::Union) continue;
-        double d = glm::length(p - glm::dvec3(o.pos)) - o.bound - 0.25 * o.blend;
-        bound = std::min(bound, d);
+        const Bound& b = bounds_[size_t(i)];
+        if (statics_[size_t(i)].op != CsgOp::Union) continue;
+        const glm::dvec3 d = p - b.centre;
+        const double distance = b.box ? glm::length(glm::max(glm::abs(b.toLocal * d) - b.half, 0.0)) : glm::length(d);
+        bound = std::min(bound, distance - b.less - b.grow);
     }
     return bound;
 }

@@ -1,0 +1,48 @@
+// contact_graph.cpp — levels of contacts that share no dynamic body (see marchbox/contact_graph.h).
+#include "marchbox/contact_graph.h"
+
+#include <algorithm>
+
+namespace mb {
+
+void buildContactGraph(const std::vector<Contact>& contacts, const int split[2], int staticBody,
+                       ContactGraph& graph, std::vector<int>& scratch) {
+    const int n = int(contacts.size());
+    // scratch: per body, one past the level of its last contact so far; per contact, its level;
+    // per level (at most one a contact), the contacts placed in it so far.
+    scratch.assign(size_t(staticBody) + 1 + 2 * size_t(n), 0);
+    int* above = scratch.data();
+    int* level = above + staticBody + 1;
+    int* placed = level + n;
+    int levels = 0;
+    const int runEnd[3] = {split[0], split[1], n};
+    for (int run = 0, i = 0; run < 3; ++run) {
+        const int floor = levels;  // a run's levels start above the runs before it
+        for (; i < runEnd[run]; ++i) {
+            const Contact& c = contacts[size_t(i)];
+            const int k = std::max({floor, c.a == staticBody ? 0 : above[c.a], above[c.b]});
+            level[i] = k;
+            above[c.a] = above[c.b] = k + 1;  // the static body's entry is never read
+            levels = std::max(levels, k + 1);
+        }
+        if (run < 2) graph.runEnd[run] = levels;
+    }
+    // Counting sort by level, keeping the solve order within each; each level padded to whole batches.
+    std::vector<int>& begin = graph.levelBegin;
+    begin.assign(size_t(levels) + 1, 0);
+    for (int i = 0; i < n; ++i) ++begin[size_t(level[i]) + 1];
+    for (int k = 0; k < levels; ++k) begin[size_t(k) + 1] = begin[size_t(k)] + (begin[size_t(k) + 1] + kLanes - 1) / kLanes;
+    graph.slots.assign(size_t(begin.back()) * kLanes, -1);
+    graph.slotOf.resize(size_t(n));
+    // Within a level the order is free: contacts that bore load last step go first, so that the
+    // open speculative ones fill batches of their own, whose friction rows the solver skips.
+    for (bool loaded : {true, false})
+        for (int i = 0; i < n; ++i) {
+            if ((contacts[size_t(i)].normalImpulse > 0.0) != loaded) continue;
+            const int slot = begin[size_t(level[i])] * kLanes + placed[level[i]]++;
+            graph.slots[size_t(slot)] = i;
+            graph.slotOf[size_t(i)] = slot;
+        }
+}
+
+}  // namespace mb
