@@ -269,7 +269,7 @@ void PhysicsWorld::splitInHalves() {
     for (int i = 0; i < n; ++i) w.xs[size_t(i)] = bodies_[i].pos.x;
     const auto middle = w.xs.begin() + n / 2;
     std::nth_element(w.xs.begin(), middle, w.xs.end());
-    w.side.resize(size_t(n) + 1);
+    w.side.resize(size_t(n));
     for (int i = 0; i < n; ++i) w.side[size_t(i)] = bodies_[i].pos.x < *middle ? 0 : 1;
     int count[3] = {0, 0, 0};
     for (Impl::Order& o : w.order) {

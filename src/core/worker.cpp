@@ -1,6 +1,8 @@
 // worker.cpp — the helper thread: spin, then sleep, until the next job.
 #include "marchbox/worker.h"
 
+#include <cassert>
+
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
 #endif
@@ -35,6 +37,8 @@ Worker::~Worker() {
 }
 
 void Worker::post(void (*fn)(void*), void* arg) {
+    // One job at a time: a second post before wait() would change fn_ under the running job.
+    assert(done_.load(std::memory_order_acquire) == posted_.load(std::memory_order_relaxed));
     fn_ = fn;
     arg_ = arg;
     posted_.fetch_add(1, std::memory_order_release);  // publishes fn_, arg_ and quit_
