@@ -17,10 +17,10 @@ namespace {
 // Left out: no shadows (24-27 dB), fewer reflections (18-22 dB on reflections), fewer pixels
 // stretched (22-27 dB).
 constexpr QualityPresetSettings kPresets[kQualityPresetCount] = {
-    //  name      maxSteps minSteps minEps  maxEps  maxRefl minAa maxAa shadowSteps cone   cutoff
-    {"draft",     128,     0,       0.0f,   0.0f,   -1,     0,    2,    64,         true,  0.5f},
-    {"normal",    0,       0,       0.0f,   0.0f,   -1,     0,    0,    0,          false, 0.0f},
-    {"final",     0,       1024,    0.0f,   1e-4f,  -1,     3,    0,    256,        false, 0.0f},
+    //  name      maxSteps minSteps minEps  maxEps  maxRefl minAa maxAa shadowSteps cone   cutoff checker
+    {"draft",     128,     0,       0.0f,   0.0f,   -1,     0,    2,    64,         true,  0.5f,  true},
+    {"normal",    0,       0,       0.0f,   0.0f,   -1,     0,    0,    0,          false, 0.0f,  false},
+    {"final",     0,       1024,    0.0f,   1e-4f,  -1,     3,    0,    256,        false, 0.0f,  false},
 };
 
 }  // namespace
@@ -48,6 +48,7 @@ void applyQualityPreset(QualityPreset p, RenderSettings* r, RenderOptions* o) {
     if (s.shadowSteps) q->shadowSteps = s.shadowSteps;
     if (s.coneEpsilon) q->coneEpsilon = true;
     if (s.shadowCutoff > 0) q->shadowCutoff = s.shadowCutoff;
+    if (s.checkerboard) q->checkerboard = true;
 }
 
 }  // namespace mb
