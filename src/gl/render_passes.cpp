@@ -145,8 +145,9 @@ Image readFramebuffer(int width, int height) {
     return img;
 }
 
+// Tiles start at even x: a checkerboard's packed column holds two pixels (Renderer::drawRegion).
 TiledRender::TiledRender(Renderer& renderer, int width, int height, int tileSize)
-    : renderer_(renderer), width_(width), height_(height), tile_(std::max(16, tileSize)),
+    : renderer_(renderer), width_(width), height_(height), tile_(std::max(16, tileSize) & ~1),
       tilesX_((width + tile_ - 1) / tile_), tilesY_((height + tile_ - 1) / tile_) {}
 
 // Tiles may interleave with other drawing (the editor's window): each call leaves the

@@ -61,8 +61,9 @@ public:
     void draw(int width, int height);
 
     // A frame in pieces (tiles of a large render). beginFrame remembers the bound framebuffer;
-    // with `accumulate`, or when the scene supersamples or post-processes, the samples go to a
-    // float target first and endFrame resolves them into `into` (or the remembered framebuffer).
+    // with `accumulate`, or when the scene supersamples, post-processes or shades a checkerboard
+    // (RenderQuality::checkerboard), the samples go to a float target first and endFrame
+    // resolves them into `into` (or the remembered framebuffer).
     bool beginFrame(int width, int height, bool accumulate, std::string* error);
     void resumeFrame();                           // binds the frame's target again
     void drawRegion(int x, int y, int w, int h);  // pixels from the bottom-left corner; x even
