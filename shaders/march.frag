@@ -89,13 +89,23 @@ vec3 cameraRay(vec2 pixel) {
     return normalize(uCamForward + uv.x * uCamRight + uv.y * uCamUp);
 }
 
+// The pixel this fragment shades. With CHECKERBOARD (draft) the target is half as wide and
+// fragment (i, y) shades pixel (2i + (y & 1), y); checkerboard.frag fills in the others.
+vec2 shadedPixel() {
+    vec2 p = floor(gl_FragCoord.xy);
+#if CHECKERBOARD
+    p.x = 2.0 * p.x + mod(p.y, 2.0);
+#endif
+    return p;
+}
+
 // Supersampling runs as passes, one sample each, added up by blending: a loop here would
 // multiply every march of the pixel inside one invocation.
 void main() {
 #if COMPILED
     loadObjects();
 #endif
-    vec3 rd = cameraRay(floor(gl_FragCoord.xy) + uSubpixel), hit = castRay(uCamPos, rd);
+    vec3 rd = cameraRay(shadedPixel() + uSubpixel), hit = castRay(uCamPos, rd);
     vec3 col = render(uCamPos, rd, hit);
 #if MODE == 0
     col = outlineSelection(col, uCamPos, rd, hit);

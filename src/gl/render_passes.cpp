@@ -11,20 +11,7 @@ enum : GLuint { kAccumUnit = 2 };  // units 0 and 1 hold the object grid
 
 const Program* Renderer::postProgram(std::string* error) {
     std::unique_ptr<Program>& slot = postPrograms_[int(post_)];
-    if (slot) return slot.get();
-    Shader vs, fs;
-    std::string prefix = "#version 330 core\n#define POST_MODE " + std::to_string(int(post_)) + "\n";
-    if (!vs.compileFile(GL_VERTEX_SHADER, shaderDir() + "/fullscreen.vert") ||
-        !fs.compileFile(GL_FRAGMENT_SHADER, shaderDir() + "/post.frag", prefix)) {
-        *error = "post.frag: " + fs.log() + vs.log();
-        return nullptr;
-    }
-    auto program = std::make_unique<Program>();
-    if (!program->link(vs, fs)) {
-        *error = "post.frag link: " + program->log();
-        return nullptr;
-    }
-    slot = std::move(program);
+    if (!slot) slot = screenProgram("post.frag", "#version 330 core\n#define POST_MODE " + std::to_string(int(post_)) + "\n", error);
     return slot.get();
 }
 
@@ -32,22 +19,36 @@ bool Renderer::beginFrame(int width, int height, bool accumulate, std::string* e
     frameWidth_ = width;
     frameHeight_ = height;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &frameTarget_);
-    accumulating_ = accumulate || samples_ > 1 || post_ != PostMode::None;
+    accumulating_ = accumulate || samples_ > 1 || post_ != PostMode::None || checkerboard_;
     if (!accumulating_) return true;
-    if (!accum_.resize(width, height) || !postProgram(error)) {
+    const int marchWidth = checkerboard_ ? CheckerboardFill::packedWidth(width) : width;
+    if (!accum_.resize(width, height) || (checkerboard_ && !packed_.resize(marchWidth, height)) || !postProgram(error)) {
         if (error->empty()) *error = "cannot create a " + std::to_string(width) + "x" + std::to_string(height) + " float target";
         accumulating_ = false;
         return false;
     }
-    accum_.bind();
-    glViewport(0, 0, width, height);
+    marchTarget().bind();
+    glViewport(0, 0, marchWidth, height);
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
     return true;
 }
 
 void Renderer::resumeFrame() {
-    if (accumulating_) accum_.bind();
+    if (accumulating_) marchTarget().bind();
+}
+
+// With the checkerboard, packed column i holds pixels 2i and 2i + 1 (one of them per row).
+void Renderer::marchViewport(int x, int y, int w, int h) {
+    if (checkerboard_) {
+        glViewport(0, 0, CheckerboardFill::packedWidth(frameWidth_), frameHeight_);
+        w = CheckerboardFill::packedWidth(x + w) - x / 2;
+        x /= 2;
+    } else {
+        glViewport(0, 0, frameWidth_, frameHeight_);
+    }
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x, y, w, h);
 }
 
 void Renderer::drawRegion(int x, int y, int w, int h) {
@@ -57,18 +58,15 @@ void Renderer::drawRegion(int x, int y, int w, int h) {
     p.set("uResolution", glm::vec2(frameWidth_, frameHeight_));
     p.set("uPixelRadius", tanHalfFov_ / float(frameHeight_));  // half a pixel per metre away
     p.set("uSampleWeight", 1.0f / float(samples_ * samples_));
-    glViewport(0, 0, frameWidth_, frameHeight_);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(x, y, w, h);
+    marchViewport(x, y, w, h);
     if (accumulating_) {
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE);
     }
-    quad_.bind();
     for (int j = 0; j < samples_; ++j)
         for (int i = 0; i < samples_; ++i) {
             p.set("uSubpixel", glm::vec2((i + 0.5f) / float(samples_), (j + 0.5f) / float(samples_)));
-            glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_INT, nullptr);
+            quad_.draw();
         }
     glDisable(GL_BLEND);
     glDisable(GL_SCISSOR_TEST);
@@ -82,14 +80,19 @@ void Renderer::endFrame(const ColorTarget* into) {
 
 void Renderer::resolve(const ColorTarget* into) {
     std::string error;
-    const Program* post = postProgram(&error);
-    into ? into->bind() : glBindFramebuffer(GL_FRAMEBUFFER, GLuint(frameTarget_));
+    auto bindInto = [&] { into ? into->bind() : glBindFramebuffer(GL_FRAMEBUFFER, GLuint(frameTarget_)); };
     glViewport(0, 0, frameWidth_, frameHeight_);
+    if (checkerboard_) {  // without a post pass the filled-in picture is the result
+        post_ == PostMode::None ? bindInto() : accum_.bind();
+        fill_.draw(packed_, frameWidth_, frameHeight_, quad_, &error);
+        if (post_ == PostMode::None) return;
+    }
+    const Program* post = postProgram(&error);
+    bindInto();
     glUseProgram(post->id());
     accum_.bindTexture(kAccumUnit);
     post->set("uImage", int(kAccumUnit));
-    quad_.bind();
-    glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_INT, nullptr);
+    quad_.draw();
 }
 
 void Renderer::drawSample(int x, int y, int w, int h, glm::vec2 subpixel, float weight) {
@@ -100,27 +103,26 @@ void Renderer::drawSample(int x, int y, int w, int h, glm::vec2 subpixel, float 
     p.set("uPixelRadius", tanHalfFov_ / float(frameHeight_));
     p.set("uSampleWeight", 1.0f);  // the blend below weighs the sample
     p.set("uSubpixel", subpixel);
-    glViewport(0, 0, frameWidth_, frameHeight_);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(x, y, w, h);
+    marchViewport(x, y, w, h);
     glEnable(GL_BLEND);
     glBlendColor(0.0f, 0.0f, 0.0f, weight);
     glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
-    quad_.bind();
-    glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_INT, nullptr);
+    quad_.draw();
     glDisable(GL_BLEND);
     glDisable(GL_SCISSOR_TEST);
 }
 
+// With the checkerboard the seed is squeezed to half width: a stand-in, like the image itself.
 void Renderer::seedFrame(const ColorTarget& image) {
-    if (accumulating_) image.blitTo(&accum_, frameWidth_, frameHeight_, GL_LINEAR);
+    if (accumulating_) image.blitTo(&marchTarget(), marchTarget().width(), frameHeight_, GL_LINEAR);
 }
 
 void Renderer::resolveFrame(const ColorTarget& into, int x, int y, int w, int h) {
     if (!accumulating_) return;
     // post.frag's FXAA reads up to FXAA_SPAN_MAX / 2 + 1 = 5 pixels away, so a changed band
-    // changes the picture that far around it; 8 leaves room for a wider span.
-    const int reach = post_ == PostMode::None ? 0 : 8;
+    // changes the picture that far around it; 8 leaves room for a wider span. A pixel the
+    // checkerboard fills in reads its neighbours, one further.
+    const int reach = (post_ == PostMode::None ? 0 : 8) + int(checkerboard_);
     glEnable(GL_SCISSOR_TEST);
     glScissor(x - reach, y - reach, w + 2 * reach, h + 2 * reach);
     resolve(&into);
@@ -143,8 +145,9 @@ Image readFramebuffer(int width, int height) {
     return img;
 }
 
+// Tiles start at even x: a checkerboard's packed column holds two pixels (Renderer::drawRegion).
 TiledRender::TiledRender(Renderer& renderer, int width, int height, int tileSize)
-    : renderer_(renderer), width_(width), height_(height), tile_(std::max(16, tileSize)),
+    : renderer_(renderer), width_(width), height_(height), tile_(std::max(16, tileSize) & ~1),
       tilesX_((width + tile_ - 1) / tile_), tilesY_((height + tile_ - 1) / tile_) {}
 
 // Tiles may interleave with other drawing (the editor's window): each call leaves the

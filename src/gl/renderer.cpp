@@ -16,18 +16,8 @@ enum BindingPoint : GLuint { kObjectsBinding = 0, kMaterialsBinding = 1, kLights
 enum TextureUnit : GLuint { kGridCellsUnit = 0, kGridItemsUnit = 1 };
 
 bool Renderer::init(std::string* error) {
-    const float corners[] = {-1, -1, 1, -1, 1, 1, -1, 1};
-    const unsigned indices[] = {0, 1, 2, 0, 2, 3};
-    quad_.bind();
-    quadVertices_.upload(corners, sizeof corners);
-    quadIndices_.upload(indices, sizeof indices);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+    if (!quad_.init(error)) return false;
     glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &maxUniformBlock_);
-    if (GLenum e = glGetError()) {
-        *error = "OpenGL error " + std::to_string(e) + " while building the screen quad";
-        return false;
-    }
     return true;
 }
 
@@ -180,6 +170,7 @@ void Renderer::use(Program* p, const ShaderFeatures& f, const Scene& scene, cons
     current_ = p;
     samples_ = options.mode == RenderMode::ObjectId ? 1 : scene.render.aa;  // ids do not average
     post_ = options.mode == RenderMode::ObjectId ? PostMode::None : options.post;
+    checkerboard_ = f.checkerboard;
     GpuScene g = packScene(scene);
     upload(g, f);
     setUniforms(scene, g, f, options.quality);

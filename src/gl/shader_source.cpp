@@ -52,6 +52,7 @@ static void applyQuality(ShaderFeatures* f, const RenderQuality& q) {
     f->relaxPercent = f->grid ? 100 : q.relaxPercent;
     f->coneEpsilon = q.coneEpsilon;
     f->shadowSteps = q.shadowSteps;
+    f->checkerboard = q.checkerboard && f->mode != RenderMode::ObjectId;
 }
 
 int shadowKind(const Scene& s) { return s.lights.empty() ? 0 : s.render.shadows; }
@@ -138,6 +139,7 @@ std::vector<std::string> describeFeatures(const ShaderFeatures& f) {
     if (f.fog) extras.push_back("fog");
     if (f.ao) extras.push_back("ambient occlusion");
     if (f.ground) extras.push_back("ground");
+    if (f.checkerboard) extras.push_back("checkerboard");
     if (!extras.empty()) lines.push_back(joined(extras));
     return lines;
 }
@@ -156,7 +158,8 @@ static std::vector<std::pair<const char*, long>> featureDefines(const ShaderFeat
                        {"REFLECTIONS", f.reflections}, {"HAS_FOG", f.fog}, {"HAS_AO", f.ao},
                        {"USE_GRID", f.grid}, {"COMPILED", f.compiled},
                        {"RELAX_PERCENT", f.relaxPercent}, {"CONE_EPSILON", f.coneEpsilon},
-                       {"SHADOW_STEPS", f.shadowSteps}, {"SHADOW_CASTERS", long(f.shadowCasters)}});
+                       {"SHADOW_STEPS", f.shadowSteps}, {"SHADOW_CASTERS", long(f.shadowCasters)},
+                       {"CHECKERBOARD", f.checkerboard}});
     return d;
 }
 

@@ -28,6 +28,7 @@ struct QualityPresetSettings {
     int shadowSteps;                   // RenderQuality::shadowSteps; 0: the renderer's own
     bool coneEpsilon;                  // true turns RenderQuality::coneEpsilon on
     float shadowCutoff;                // RenderQuality::shadowCutoff; 0: every light casts
+    bool checkerboard;                 // true turns RenderQuality::checkerboard on
 };
 const QualityPresetSettings& qualityPresetSettings(QualityPreset p);
 

@@ -2,9 +2,11 @@
 #pragma once
 
 #include "marchbox/gl/buffers.h"
+#include "marchbox/gl/checkerboard.h"
 #include "marchbox/gl/framebuffer.h"
 #include "marchbox/gl/gpu_scene.h"
 #include "marchbox/gl/offscreen_context.h"
+#include "marchbox/gl/screen_quad.h"
 #include "marchbox/gl/shader.h"
 #include "marchbox/gl/shader_source.h"
 #include "marchbox/image.h"
@@ -59,11 +61,12 @@ public:
     void draw(int width, int height);
 
     // A frame in pieces (tiles of a large render). beginFrame remembers the bound framebuffer;
-    // with `accumulate`, or when the scene supersamples or post-processes, the samples go to a
-    // float target first and endFrame resolves them into `into` (or the remembered framebuffer).
+    // with `accumulate`, or when the scene supersamples, post-processes or shades a checkerboard
+    // (RenderQuality::checkerboard), the samples go to a float target first and endFrame
+    // resolves them into `into` (or the remembered framebuffer).
     bool beginFrame(int width, int height, bool accumulate, std::string* error);
     void resumeFrame();                           // binds the frame's target again
-    void drawRegion(int x, int y, int w, int h);  // pixels from the bottom-left corner
+    void drawRegion(int x, int y, int w, int h);  // pixels from the bottom-left corner; x even
     void endFrame(const ColorTarget* into = nullptr);
 
     // A frame refined while it is shown (the editor's view), after beginFrame with `accumulate`.
@@ -109,7 +112,11 @@ private:
     void setUniforms(const Scene& scene, const GpuScene& g, const ShaderFeatures& f, const RenderQuality& q);
     void uploadGrid(const SceneSdf& sdf);
     const Program* postProgram(std::string* error);
-    void resolve(const ColorTarget* into);  // the post pass: accum_ into `into` or frameTarget_
+    ColorTarget& marchTarget() { return checkerboard_ ? packed_ : accum_; }
+    void marchViewport(int x, int y, int w, int h);  // and the scissor, for the region in pixels
+    // The post pass: accum_ (filled in from packed_ first, with the checkerboard) into `into`
+    // or frameTarget_.
+    void resolve(const ColorTarget* into);
 
     std::vector<Cached> cache_;
     std::unique_ptr<Build> pending_, uberBuild_;
@@ -119,9 +126,7 @@ private:
     };
     std::optional<Failure> failed_;  // not built again until the shaders reload
     Program* current_ = nullptr;
-    VertexArray quad_;
-    VertexBuffer quadVertices_;
-    IndexBuffer quadIndices_;
+    ScreenQuad quad_;
     UniformBuffer objects_, materials_, lights_;
     StorageBuffer objectStore_;
     bool objectsInStorage_ = false;  // which of the two holds the objects (rebind)
@@ -132,6 +137,9 @@ private:
     PostMode post_ = PostMode::None;
     std::unique_ptr<Program> postPrograms_[kPostModeCount];
     ColorTarget accum_;
+    bool checkerboard_ = false;      // the march shades half the pixels into packed_
+    ColorTarget packed_;
+    CheckerboardFill fill_;
     int frameWidth_ = 0, frameHeight_ = 0;
     GLint frameTarget_ = 0;          // the framebuffer bound at beginFrame
     bool accumulating_ = false;

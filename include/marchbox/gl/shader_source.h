@@ -30,6 +30,9 @@ struct RenderQuality {
     // Lights less bright than this fraction of the brightest cast no shadow (0: every light
     // does). Each skipped light saves a shadow ray per shaded point (draft, quality_preset.cpp).
     float shadowCutoff = 0.0f;
+    // Shade half the pixels, in a checkerboard, and fill in the rest from their neighbours
+    // (gl/checkerboard.h): half the fragments (draft). Never for object ids, which do not average.
+    bool checkerboard = false;
 
     bool operator==(const RenderQuality&) const = default;
 };
@@ -51,6 +54,7 @@ struct ShaderFeatures {
     bool coneEpsilon = false;
     int shadowSteps = 128;
     unsigned shadowCasters = (1u << kMaxLights) - 1;  // bit i: light i of the Lights block casts
+    bool checkerboard = false;
     bool compiled = false;              // the chain is straight-line code, per `layout`
     std::vector<ObjectLayout> layout;   // empty unless compiled
 
