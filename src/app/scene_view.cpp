@@ -68,8 +68,12 @@ void SceneView::sync(const Scene& scene, uint64_t version, const RenderOptions& 
     // the broken shader every frame: try again at most once a second.
     if (now < retryAt_ && sameView) return;
     Viewed v = atQuality(scene, options, quality);
-    // A driver without background compiles blocks while it builds: the UI draws its note first.
-    if (!announced_ && renderer_->wouldCompile(v.scene, v.options)) {
+    // A driver without background compiles blocks while it builds, the draft program too: the
+    // UI draws its note first.
+    const bool withDraft = draft_ && quality != QualityPreset::Draft;
+    const Viewed d = withDraft ? atQuality(scene, options, QualityPreset::Draft) : Viewed{};
+    if (!announced_ && (renderer_->wouldCompile(v.scene, v.options) ||
+                        (withDraft && draft_->wouldCompile(d.scene, d.options)))) {
         announced_ = true;
         return;
     }
