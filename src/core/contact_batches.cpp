@@ -30,10 +30,12 @@ Lanes3 normalOf(const ContactBatch& c) { return {c.nx, c.ny, c.nz}; }
 
 // A body's solver fields are nine doubles in a row (physics.h): vel, spin, delta. Two bodies'
 // fields go into two lanes as pairs: load a pair from each, then take the low halves together and
-// the high halves together (unpcklpd, unpckhpd).
+// the high halves together (unpcklpd, unpckhpd). The fifth pair reads a tenth double, invMass,
+// and drops it: it must be a double, inside the struct.
 static_assert(kLanes == 2, "gather and scatter transpose pairs of bodies");
-static_assert(offsetof(PhysicsBody, spin) == 3 * sizeof(double) && offsetof(PhysicsBody, delta) == 6 * sizeof(double),
-              "the solver's fields come first in PhysicsBody, in a row");
+static_assert(offsetof(PhysicsBody, spin) == 3 * sizeof(double) && offsetof(PhysicsBody, delta) == 6 * sizeof(double) &&
+                  offsetof(PhysicsBody, invMass) == 9 * sizeof(double),
+              "the solver's fields come first in PhysicsBody, in a row, and a double follows them");
 
 Lanes pairAt(const PhysicsBody& body, int k) {  // fields 2k and 2k + 1
     Lanes r;

@@ -22,7 +22,8 @@ bool Renderer::beginFrame(int width, int height, bool accumulate, std::string* e
     accumulating_ = accumulate || samples_ > 1 || post_ != PostMode::None || checkerboard_;
     if (!accumulating_) return true;
     const int marchWidth = checkerboard_ ? CheckerboardFill::packedWidth(width) : width;
-    if (!accum_.resize(width, height) || (checkerboard_ && !packed_.resize(marchWidth, height)) || !postProgram(error)) {
+    if (!accum_.resize(width, height) || (checkerboard_ && !packed_.resize(marchWidth, height)) ||
+        !postProgram(error) || (checkerboard_ && !fill_.prepare(error))) {
         if (error->empty()) *error = "cannot create a " + std::to_string(width) + "x" + std::to_string(height) + " float target";
         accumulating_ = false;
         return false;
@@ -84,7 +85,7 @@ void Renderer::resolve(const ColorTarget* into) {
     glViewport(0, 0, frameWidth_, frameHeight_);
     if (checkerboard_) {  // without a post pass the filled-in picture is the result
         post_ == PostMode::None ? bindInto() : accum_.bind();
-        fill_.draw(packed_, frameWidth_, frameHeight_, quad_, &error);
+        fill_.draw(packed_, frameWidth_, frameHeight_, quad_);
         if (post_ == PostMode::None) return;
     }
     const Program* post = postProgram(&error);

@@ -111,6 +111,11 @@ gl_cases() {
   MB_ENV=MARCHBOX_SHADERS=$tmp/shaders expect_says ": shaders/lighting.glsl:4(" 3 \
     sh -c 'cd "$0" && exec "$@"' "$tmp" "${r[@]}"
   cp "$src/shaders/lighting.glsl" "$tmp/shaders/lighting.glsl"
+  # Draft's fill pass: a broken one fails the render instead of writing an undrawn picture.
+  echo "garbage" >>"$tmp/shaders/checkerboard.frag"
+  MB_ENV=MARCHBOX_SHADERS=$tmp/shaders expect_says \
+    "$tmp/shaders/checkerboard.frag:$(wc -l <"$tmp/shaders/checkerboard.frag")(" 3 "${r[@]}" --quality draft
+  cp "$src/shaders/checkerboard.frag" "$tmp/shaders/checkerboard.frag"
   echo "garbage" >>"$tmp/shaders/fullscreen.vert"
   MB_ENV=MARCHBOX_SHADERS=$tmp/shaders expect_says \
     "vertex shader: $tmp/shaders/fullscreen.vert:$(wc -l <"$tmp/shaders/fullscreen.vert")(" 3 "${r[@]}"

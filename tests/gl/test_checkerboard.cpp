@@ -36,11 +36,12 @@ Image fill(const Picture& picture) {
     ColorTarget in, out;
     EXPECT_TRUE(in.resize(half, kH, GL_RGBA32F) && out.resize(kW, kH, GL_RGBA8));
     in.bindTexture(0);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, half, kH, 0, GL_RGBA, GL_FLOAT, packed.data());  // loaded; Sub is not
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, half, kH, 0, GL_RGBA, GL_FLOAT, packed.data());  // re-specified with data: resize allocated none
     out.bind();
     glViewport(0, 0, kW, kH);
     CheckerboardFill checkerboard;
-    EXPECT_TRUE(checkerboard.draw(in, kW, kH, quad, &error)) << error;
+    EXPECT_TRUE(checkerboard.prepare(&error)) << error;
+    checkerboard.draw(in, kW, kH, quad);
     return readFramebuffer(kW, kH);
 }
 
