@@ -55,6 +55,12 @@ void SceneView::requestDraft(const Scene& scene) {
     draftCurrent_ = draft_->requestScene(d.scene, d.options, &ignored);
 }
 
+bool SceneView::draftWouldCompile(const Scene& scene, const RenderOptions& options, QualityPreset quality) const {
+    if (!draft_ || quality == QualityPreset::Draft) return false;
+    Viewed d = atQuality(scene, options, QualityPreset::Draft);
+    return draft_->wouldCompile(d.scene, d.options);
+}
+
 Renderer* SceneView::draftRenderer() const {
     bool ready = draft_ && draftCurrent_ && !draft_->compiling() && draft_->program();
     return ready && quality_ != QualityPreset::Draft ? draft_.get() : nullptr;
@@ -70,10 +76,7 @@ void SceneView::sync(const Scene& scene, uint64_t version, const RenderOptions& 
     Viewed v = atQuality(scene, options, quality);
     // A driver without background compiles blocks while it builds, the draft program too: the
     // UI draws its note first.
-    const bool withDraft = draft_ && quality != QualityPreset::Draft;
-    const Viewed d = withDraft ? atQuality(scene, options, QualityPreset::Draft) : Viewed{};
-    if (!announced_ && (renderer_->wouldCompile(v.scene, v.options) ||
-                        (withDraft && draft_->wouldCompile(d.scene, d.options)))) {
+    if (!announced_ && (renderer_->wouldCompile(v.scene, v.options) || draftWouldCompile(scene, options, quality))) {
         announced_ = true;
         return;
     }

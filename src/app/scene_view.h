@@ -42,6 +42,7 @@ private:
     bool reload(const Scene& scene);
     void requestDraft(const Scene& scene);
     Renderer* draftRenderer() const;  // null when previews draw with renderer_
+    bool draftWouldCompile(const Scene& scene, const RenderOptions& options, QualityPreset quality) const;
 
     std::unique_ptr<Renderer> renderer_;  // at quality_
     std::unique_ptr<Renderer> draft_;     // previews; its failures only leave them to renderer_
