@@ -69,6 +69,15 @@ std::vector<std::filesystem::path> sceneFiles(const std::string& root) {
     return files;
 }
 
+// An example scene; one that does not load leaves its rows out of the report.
+bool loadExample(const std::filesystem::path& file, Scene* scene) {
+    std::vector<std::string> errors;
+    return loadScene(file.string(), scene, &errors);
+}
+bool loadExample(const std::string& root, const std::string& name, Scene* scene) {  // scenes/NAME.txt
+    return loadExample(root + "/scenes/" + name + ".txt", scene);
+}
+
 std::string uberTable(Renderer& r, const std::string& root) {
     std::ostringstream md;
     md << "| scene | objects | specialised ms | uber ms | uber / specialised | mean diff /255 |\n"
@@ -83,8 +92,7 @@ std::string uberTable(Renderer& r, const std::string& root) {
     };
     for (const auto& path : sceneFiles(root)) {
         Scene s;
-        std::vector<std::string> errors;
-        if (!loadScene(path.string(), &s, &errors)) continue;
+        if (!loadExample(path, &s)) continue;
         row(path.stem().string(), s);
         if (path.stem() != "primitives") continue;
         s.render.shadows = 0;  // the case: no mirrors and no shadows
@@ -314,8 +322,7 @@ std::string costSection(Renderer& r, const std::vector<std::string>& names, cons
     for (const std::string& name : names) {
         std::cerr << "render report: cost, " << name << '\n';
         Scene scene;
-        std::vector<std::string> errors;
-        if (!loadScene(root + "/scenes/" + name + ".txt", &scene, &errors)) continue;
+        if (!loadExample(root, name, &scene)) continue;
         std::vector<Variant> v(6, Variant{"", "", scene, {}});
         v[1].options.mode = RenderMode::ObjectId;
         v[2].options.mode = RenderMode::Normals;
@@ -377,8 +384,7 @@ std::string presetSection(Renderer& r, const std::vector<std::string>& names, co
     for (const std::string& name : names) {
         std::cerr << "render report: presets, " << name << '\n';
         Scene scene;
-        std::vector<std::string> errors;
-        if (!loadScene(root + "/scenes/" + name + ".txt", &scene, &errors)) continue;
+        if (!loadExample(root, name, &scene)) continue;
         Scene ref4 = converged(scene);
         ref4.render.aa = 4;
         Image reference4 = renderImage(r, ref4, {}, kWidth, kHeight);
@@ -413,8 +419,7 @@ std::string draftSection(Renderer& r, const std::string& root, int* passing, int
     for (const auto& path : sceneFiles(root)) {
         std::cerr << "render report: draft, " << path.stem().string() << '\n';
         Scene scene;
-        std::vector<std::string> errors;
-        if (!loadScene(path.string(), &scene, &errors)) continue;
+        if (!loadExample(path, &scene)) continue;
         Variant asWritten{"", "", scene, {}}, draft = asWritten;
         applyQualityPreset(QualityPreset::Draft, &draft.scene.render, &draft.options);
         Image reference = renderImage(r, converged(scene), {}, kWidth, kHeight);
@@ -475,8 +480,7 @@ std::string workPrecision(Renderer& r, const std::string& root, const std::strin
           "marching, without final's supersampling.\n\n";
     for (const std::string& name : marched) {
         Scene scene;
-        std::vector<std::string> errors;
-        if (!loadScene(root + "/scenes/" + name + ".txt", &scene, &errors)) continue;
+        if (!loadExample(root, name, &scene)) continue;
         std::string verdict;
         md << marchingSection(r, name, scene, docs, &verdict) << "\n";
         verdicts << verdict;
@@ -488,8 +492,7 @@ std::string workPrecision(Renderer& r, const std::string& root, const std::strin
           "itself) at " << kAliasWidth << "x" << kAliasHeight << ". Speed-up is against aa 1.\n\n";
     for (const std::string& name : marched) {
         Scene scene;
-        std::vector<std::string> errors;
-        if (loadScene(root + "/scenes/" + name + ".txt", &scene, &errors)) md << aliasingSection(r, name, scene) << "\n";
+        if (loadExample(root, name, &scene)) md << aliasingSection(r, name, scene) << "\n";
     }
     md << "## Quality presets\n\n`--quality draft|normal|final` on `render` and `bench` (table in "
           "`src/gl/quality_preset.cpp`). A cap lowers the scene's own value only, a floor raises it only:\n\n"

@@ -35,6 +35,17 @@ Light bulbAt(dvec3 pos, float intensity = 1.0f) {
     return Light{false, glm::vec3(pos), glm::vec3(1.0f), intensity};
 }
 
+// The shadow tests' scene: a default sphere (r = 0.5) 1 m above (0.5, 0, 0.5), the sun straight above.
+Scene ballUnderSun(int shadows) {
+    Scene s = openFloor(sunFrom(dvec3(0, -1, 0)));
+    s.render.shadows = shadows;
+    s.materials.push_back({});
+    Object ball;
+    ball.pos = glm::vec3(0.5f, 1.0f, 0.5f);
+    s.objects.push_back(ball);
+    return s;
+}
+
 // Phong on the floor (n = +y) for one white light towards l, seen along d, shadow factor s.
 dvec3 floorPhong(double albedo, dvec3 l, dvec3 d, double intensity, double s = 1.0) {
     dvec3 n(0, 1, 0);
@@ -79,12 +90,7 @@ TEST(ReferenceRender, SpecularPeaksAlongTheMirrorDirection) {
 }
 
 TEST(ReferenceRender, HardShadowLeavesOnlyAmbientUnderASphere) {
-    Scene s = openFloor(sunFrom(dvec3(0, -1, 0)));
-    s.render.shadows = 1;
-    s.materials.push_back({});
-    Object ball;
-    ball.pos = glm::vec3(0.5f, 1.0f, 0.5f);
-    s.objects.push_back(ball);
+    Scene s = ballUnderSun(1);
     dvec3 eye(0, 3, -4);
     expectColor(traceTo(s, eye, dvec3(0.6, 0, 0.4)).color, dvec3(kKa * kLight), 1e-6, "under the ball");
     dvec3 open(2.5, 0, 0.5);  // light square, straight-down light: n·l = 1
@@ -96,12 +102,7 @@ TEST(ReferenceRender, HardShadowLeavesOnlyAmbientUnderASphere) {
 // along the ray is |(dx, y - h, dz)| - R, so the penumbra term min k·f(t)/t has a closed form
 // to sample on a fine grid here, independently of the renderer's march.
 TEST(ReferenceRender, SoftShadowIsSmoothstepOfTheLeastPenumbraTerm) {
-    Scene s = openFloor(sunFrom(dvec3(0, -1, 0)));
-    s.render.shadows = 2;
-    s.materials.push_back({});
-    Object ball;
-    ball.pos = glm::vec3(0.5f, 1.0f, 0.5f);
-    s.objects.push_back(ball);
+    Scene s = ballUnderSun(2);
     const double k = ReferenceOptions{}.softness, lift = 2.0 * s.render.epsilon;
     dvec3 eye(0.5, 3, -3);
     for (double dx : {0.52, 0.56, 0.62, 0.75}) {
