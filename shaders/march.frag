@@ -107,7 +107,7 @@ void main() {
 #endif
     vec3 rd = cameraRay(shadedPixel() + uSubpixel), hit = castRay(uCamPos, rd);
     vec3 col = render(uCamPos, rd, hit);
-#if MODE == 0
+#if OUTLINE
     col = outlineSelection(col, uCamPos, rd, hit);
 #endif
     fragColor = vec4(clamp(col, 0.0, 1.0), 1.0) * uSampleWeight;

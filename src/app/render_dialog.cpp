@@ -17,6 +17,7 @@ void RenderDialog::start(UiContext& c) {
     renderer_ = std::make_unique<Renderer>();
     std::string error;
     RenderOptions options = c.ui.render;
+    options.outline = false;  // a still shows no selection
     if (!renderer_->init(&error) || !renderer_->setScene(c.editor.scene(), options, &error)) {
         status_ = "cannot render: " + error.substr(0, error.find('\n'));
         renderer_.reset();

@@ -32,7 +32,7 @@ bool SceneImage::update(Renderer& r, Renderer* draft, const PictureKey& key, Ste
     return true;
 }
 
-// lighting.glsl tints object uHighlight - 1; 0 tints nothing.
+// outline.glsl rings object uHighlight - 1; 0 rings nothing.
 static void highlight(const Renderer& r, int selected) {
     if (const Program* p = r.program()) {
         glUseProgram(p->id());

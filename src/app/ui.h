@@ -29,6 +29,13 @@ struct FrameStats {
     void add(double seconds);
 };
 
+// The editor's view holds the selection ring, compiled in once, so selecting never recompiles.
+inline RenderOptions viewOptions() {
+    RenderOptions o;
+    o.outline = true;
+    return o;
+}
+
 struct UiState {
     // Windows, toggled from the menus.
     bool showObjects = true, showMaterials = false, showLights = false;
@@ -44,7 +51,7 @@ struct UiState {
     bool escape = false;                   // Esc this frame: the open dialog cancels
 
     Messages messages;                     // refusals and failures, each in its place, in red
-    RenderOptions render;                  // debug view and uber shader
+    RenderOptions render = viewOptions();  // debug view and uber shader
     QualityPreset quality = QualityPreset::Normal;  // View > Quality, over the scene's; not saved
     bool previewOrbit = false;             // key 1
     std::string scenesDir;                 // scenes/ of the source tree, for File > Open

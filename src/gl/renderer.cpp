@@ -159,6 +159,7 @@ static const Scene& viewedScene(const Scene& scene, const RenderOptions& options
 bool Renderer::featuresFor(const Scene& scene, const RenderOptions& options, ShaderFeatures* f,
                            std::string* error) const {
     *f = shaderFeatures(scene, options.mode, options.uber, maxUniformBlock_, options.quality);
+    f->outline = options.outline && options.mode == RenderMode::Shaded;
     if (f->uber && int(scene.objects.size()) > f->objects) {
         *error = "the uber shader holds at most " + std::to_string(f->objects) + " objects";
         return false;

@@ -159,7 +159,7 @@ static std::vector<std::pair<const char*, long>> featureDefines(const ShaderFeat
                        {"USE_GRID", f.grid}, {"COMPILED", f.compiled},
                        {"RELAX_PERCENT", f.relaxPercent}, {"CONE_EPSILON", f.coneEpsilon},
                        {"SHADOW_STEPS", f.shadowSteps}, {"SHADOW_CASTERS", long(f.shadowCasters)},
-                       {"CHECKERBOARD", f.checkerboard}});
+                       {"CHECKERBOARD", f.checkerboard}, {"OUTLINE", f.outline}});
     return d;
 }
 

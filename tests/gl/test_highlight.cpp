@@ -22,8 +22,9 @@ Image drawSelected(const Scene& s, int selected, RenderMode mode = RenderMode::S
     Renderer r;
     ColorTarget target;
     std::string error;
-    EXPECT_TRUE(context.create(1, 1, &error) && r.init(&error) && r.setScene(s, test::options(mode), &error))
-        << error;
+    RenderOptions options = test::options(mode);
+    options.outline = true;  // as the editor draws
+    EXPECT_TRUE(context.create(1, 1, &error) && r.init(&error) && r.setScene(s, options, &error)) << error;
     EXPECT_TRUE(target.resize(kW, kH, GL_RGBA8));
     target.bind();
     glUseProgram(r.program()->id());

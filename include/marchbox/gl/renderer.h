@@ -30,6 +30,9 @@ struct RenderOptions {
     RenderQuality quality;
     PostMode post = PostMode::None;
     bool fog = true;    // false draws the scene's fog as 0 (the editor's F key); the file keeps it
+    // The editor's selection ring (uHighlight). Off, the shader leaves it out: it costs a
+    // frame 8% though nothing is selected, and renders of files select nothing.
+    bool outline = false;
 
     bool operator==(const RenderOptions&) const = default;
 };

@@ -55,6 +55,7 @@ struct ShaderFeatures {
     int shadowSteps = 128;
     unsigned shadowCasters = (1u << kMaxLights) - 1;  // bit i: light i of the Lights block casts
     bool checkerboard = false;
+    bool outline = false;               // the editor's selection ring, shaded views only
     bool compiled = false;              // the chain is straight-line code, per `layout`
     std::vector<ObjectLayout> layout;   // empty unless compiled
 
