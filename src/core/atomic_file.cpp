@@ -9,7 +9,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <csignal>
 #include <memory>
+#include <mutex>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -84,11 +86,54 @@ std::string saveTarget(const std::string& path, std::string* target) {
     return "";
 }
 
+// While a save runs, a Ctrl-C, hangup or kill waits for it to end: dying between the temporary
+// and the rename would leave the temporary behind. Only signals whose action is the default
+// (to end the process) are held; the first one is raised again once the save is over, so the
+// process still ends, with the file whole and nothing beside it. The actions are the process's,
+// whichever thread the signal lands on; one save holds them at a time.
+class TerminationHeld {
+public:
+    TerminationHeld() : lock_(mutex()) {
+        pending() = 0;
+        struct sigaction hold {};
+        hold.sa_handler = [](int sig) { if (!pending()) pending() = sig; };
+        sigemptyset(&hold.sa_mask);
+        for (int i = 0; i < kCount; ++i) {
+            sigaction(kSignals[i], nullptr, &saved_[i]);
+            held_[i] = saved_[i].sa_handler == SIG_DFL && sigaction(kSignals[i], &hold, nullptr) == 0;
+        }
+    }
+    ~TerminationHeld() {
+        for (int i = 0; i < kCount; ++i)
+            if (held_[i]) sigaction(kSignals[i], &saved_[i], nullptr);
+        if (pending()) raise(pending());
+    }
+    TerminationHeld(const TerminationHeld&) = delete;
+    TerminationHeld& operator=(const TerminationHeld&) = delete;
+
+private:
+    static constexpr int kCount = 4;
+    static constexpr int kSignals[kCount] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+    static std::mutex& mutex() {
+        static std::mutex m;
+        return m;
+    }
+    static volatile std::sig_atomic_t& pending() {
+        static volatile std::sig_atomic_t sig = 0;
+        return sig;
+    }
+
+    std::lock_guard<std::mutex> lock_;
+    struct sigaction saved_[kCount];
+    bool held_[kCount];
+};
+
 }  // namespace
 
 // The directory is not fsynced after the rename: after a crash the rename may be lost, but
 // the file left behind is then the old one, whole, which is the promise.
 std::string replaceFile(const std::string& path, std::string_view bytes) {
+    TerminationHeld held;
     std::string target, tmp;
     std::string why = saveTarget(path, &target);
     if (why.empty()) {

@@ -227,6 +227,39 @@ TEST_F(SaveFaults, DyingBeforeTheRenameLeavesTheOldFileWhole) {
     EXPECT_EQ(oldBytes(), kOld);
 }
 
+// A Ctrl-C in the middle of a save (here, just before the rename) waits for the save to end:
+// the process still dies of it, but after the new file is in place, with no temporary beside it.
+TEST_F(SaveFaults, CtrlCMidSaveEndsTheProcessAfterTheSave) {
+    int code = inChild([&] {
+        FileOps ops = posixOps();
+        ops.rename = [](const char* from, const char* to) {
+            kill(getpid(), SIGINT);
+            return posixOps().rename(from, to);
+        };
+        fileOps() = ops;
+        saveScene(target(), scene_, nullptr);
+        return 0;
+    });
+    ASSERT_EQ(code, 128 + SIGINT);
+    EXPECT_EQ(oldBytes(), formatScene(scene_));
+    EXPECT_EQ(fileCount(), 1u) << "a temporary was left beside the target";
+}
+
+// After a save every signal's action is what it was: the default ends the process again, and
+// an action the program chose (here, ignoring hangups) was never touched.
+TEST_F(SaveFaults, SignalActionsAreAsBeforeAfterASave) {
+    int code = inChild([&] {
+        std::signal(SIGHUP, SIG_IGN);
+        std::string error;
+        if (!saveScene(target(), scene_, &error)) return 3;
+        struct sigaction interrupt {}, hangup {};
+        sigaction(SIGINT, nullptr, &interrupt);
+        sigaction(SIGHUP, nullptr, &hangup);
+        return interrupt.sa_handler == SIG_DFL && hangup.sa_handler == SIG_IGN ? 0 : 4;
+    });
+    EXPECT_EQ(code, 0);
+}
+
 //-----------------------------------------------------------------------------
 // Places a scene cannot be saved
 //-----------------------------------------------------------------------------
