@@ -61,6 +61,8 @@ shaders/outline.glsl  | kOutlinePixels = 2.0;                             | kOut
 shaders/outline.glsl  | ? kOutlineColor : col;                            | ? col : col;                                      | editor's selection outline gone
 shaders/post.frag     | lB < lMin || lB > lMax ? a : b                    | lB < lMin || lB > lMax ? b : a                    | FXAA keeps the wrong blend
 shaders/checkerboard.frag | across < along ? h : along < across ? v    | across > along ? h : along > across ? v         | draft's fill blurs across edges
+shaders/checkerboard.frag | uSize.x == 1 ? kNone                       | uSize.x == 0 ? kNone                            | draft's fill takes a pixel past the border into a one-pixel-wide picture
+shaders/checkerboard.frag | 1) == 0 ? here : filled                    | 1) == 0 ? filled : here                         | draft's fill swaps shaded and filled-in pixels
 src/core/sdf.cpp      | vec2(r, 0.5f * height)                            | vec2(r, 0.25f * height)                           | mirror: cylinder of half its height
 src/core/sdf.cpp      | vec2(p.x, p.z)) - major                           | vec2(p.x, p.z)) - 0.9f * major                    | mirror: torus major radius 0.9x
 src/core/sdf.cpp      | glm::abs(p) - b;                                  | glm::abs(p) - 0.9f * b;                           | mirror: box 0.9x its size

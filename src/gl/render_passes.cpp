@@ -19,19 +19,27 @@ bool Renderer::beginFrame(int width, int height, bool accumulate, std::string* e
     frameWidth_ = width;
     frameHeight_ = height;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &frameTarget_);
-    accumulating_ = accumulate || samples_ > 1 || post_ != PostMode::None || checkerboard_;
+    frameCheckerboard_ = checkerboard_;
+    accumulating_ = accumulate || samples_ > 1 || post_ != PostMode::None || frameCheckerboard_;
     if (!accumulating_) return true;
-    const int marchWidth = checkerboard_ ? CheckerboardFill::packedWidth(width) : width;
-    if (!accum_.resize(width, height) || (checkerboard_ && !packed_.resize(marchWidth, height)) ||
-        !postProgram(error) || (checkerboard_ && !fill_.prepare(error))) {
+    // One sample a pixel, drawn whole (draw()), is written over the target, not added: no clear,
+    // no blend, and 8 bits hold the checkerboard's half, which the fill fetches for 40% less
+    // than half floats (480x270, one llvmpipe thread: 0.84 against 1.42 ms).
+    blending_ = accumulate || samples_ > 1;
+    const int marchWidth = frameCheckerboard_ ? CheckerboardFill::packedWidth(width) : width;
+    const GLenum packedFormat = blending_ ? GL_RGBA16F : GL_RGBA8;
+    if (!accum_.resize(width, height) || (frameCheckerboard_ && !packed_.resize(marchWidth, height, packedFormat)) ||
+        !postProgram(error) || (frameCheckerboard_ && !fill_.prepare(error))) {
         if (error->empty()) *error = "cannot create a " + std::to_string(width) + "x" + std::to_string(height) + " float target";
         accumulating_ = false;
         return false;
     }
     marchTarget().bind();
     glViewport(0, 0, marchWidth, height);
-    glClearColor(0, 0, 0, 0);
-    glClear(GL_COLOR_BUFFER_BIT);
+    if (blending_) {
+        glClearColor(0, 0, 0, 0);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
     return true;
 }
 
@@ -41,7 +49,7 @@ void Renderer::resumeFrame() {
 
 // With the checkerboard, packed column i holds pixels 2i and 2i + 1 (one of them per row).
 void Renderer::marchViewport(int x, int y, int w, int h) {
-    if (checkerboard_) {
+    if (frameCheckerboard_) {
         glViewport(0, 0, CheckerboardFill::packedWidth(frameWidth_), frameHeight_);
         w = CheckerboardFill::packedWidth(x + w) - x / 2;
         x /= 2;
@@ -60,7 +68,7 @@ void Renderer::drawRegion(int x, int y, int w, int h) {
     p.set("uPixelRadius", tanHalfFov_ / float(frameHeight_));  // half a pixel per metre away
     p.set("uSampleWeight", 1.0f / float(samples_ * samples_));
     marchViewport(x, y, w, h);
-    if (accumulating_) {
+    if (accumulating_ && blending_) {
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE);
     }
@@ -83,7 +91,7 @@ void Renderer::resolve(const ColorTarget* into) {
     std::string error;
     auto bindInto = [&] { into ? into->bind() : glBindFramebuffer(GL_FRAMEBUFFER, GLuint(frameTarget_)); };
     glViewport(0, 0, frameWidth_, frameHeight_);
-    if (checkerboard_) {  // without a post pass the filled-in picture is the result
+    if (frameCheckerboard_) {  // without a post pass the filled-in picture is the result
         post_ == PostMode::None ? bindInto() : accum_.bind();
         fill_.draw(packed_, frameWidth_, frameHeight_, quad_);
         if (post_ == PostMode::None) return;
@@ -123,7 +131,7 @@ void Renderer::resolveFrame(const ColorTarget& into, int x, int y, int w, int h)
     // post.frag's FXAA reads up to FXAA_SPAN_MAX / 2 + 1 = 5 pixels away, so a changed band
     // changes the picture that far around it; 8 leaves room for a wider span. A pixel the
     // checkerboard fills in reads its neighbours, one further.
-    const int reach = (post_ == PostMode::None ? 0 : 8) + int(checkerboard_);
+    const int reach = (post_ == PostMode::None ? 0 : 8) + int(frameCheckerboard_);
     glEnable(GL_SCISSOR_TEST);
     glScissor(x - reach, y - reach, w + 2 * reach, h + 2 * reach);
     resolve(&into);

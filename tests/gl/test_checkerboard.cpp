@@ -20,29 +20,30 @@ constexpr int kW = 16, kH = 12;
 using Picture = std::function<float(int x, int y)>;  // grey, 0..1; y from the bottom
 
 // Packs the pixels with x + y even as the march does, fills in the rest and reads it back.
-Image fill(const Picture& picture) {
+// A packed column past the right border holds picture(w, y), as the march shades it there.
+Image fill(const Picture& picture, int w = kW, int h = kH) {
     std::string error;
     OffscreenContext context;
     EXPECT_TRUE(context.create(1, 1, &error)) << error;
     ScreenQuad quad;
     EXPECT_TRUE(quad.init(&error)) << error;
-    const int half = CheckerboardFill::packedWidth(kW);
+    const int half = CheckerboardFill::packedWidth(w);
     std::vector<float> packed;
-    for (int y = 0; y < kH; ++y)
+    for (int y = 0; y < h; ++y)
         for (int i = 0; i < half; ++i) {
             float g = picture(2 * i + (y & 1), y);
             packed.insert(packed.end(), {g, g, g, 1.0f});
         }
     ColorTarget in, out;
-    EXPECT_TRUE(in.resize(half, kH, GL_RGBA32F) && out.resize(kW, kH, GL_RGBA8));
+    EXPECT_TRUE(in.resize(half, h, GL_RGBA32F) && out.resize(w, h, GL_RGBA8));
     in.bindTexture(0);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, half, kH, 0, GL_RGBA, GL_FLOAT, packed.data());  // re-specified with data: resize allocated none
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, half, h, 0, GL_RGBA, GL_FLOAT, packed.data());  // re-specified with data: resize allocated none
     out.bind();
-    glViewport(0, 0, kW, kH);
+    glViewport(0, 0, w, h);
     CheckerboardFill checkerboard;
     EXPECT_TRUE(checkerboard.prepare(&error)) << error;
-    checkerboard.draw(in, kW, kH, quad);
-    return readFramebuffer(kW, kH);
+    checkerboard.draw(in, w, h, quad);
+    return readFramebuffer(w, h);
 }
 
 // The largest difference from the picture, in 1/255 steps, over the pixels `margin` or more
@@ -93,6 +94,41 @@ TEST(Checkerboard, TilesPackTheirOwnColumns) {
     Image whole = render(1024), tiled = render(64);
     EXPECT_EQ(whole.rgba, tiled.rgba);
     EXPECT_LT(test::psnr(whole, test::renderOrDie(scene, {}, 600, 150)), 99.0);  // it is on
+}
+
+// Odd sizes and pictures one pixel wide or high: every pixel is filled from pixels inside the
+// picture, never from the one past the right border that the march shades to fill a column
+// (a picture one pixel wide once took it into its last row's corner) nor from past the packed
+// columns. Grey inside and white outside, so any mean that reads outside shows.
+TEST(Checkerboard, OddSizesReadOnlyPixelsInside) {
+    for (auto [w, h] : {std::pair{15, 11}, {1, 8}, {1, 7}, {8, 1}, {7, 1}, {3, 2}, {1, 1}}) {
+        Image image = fill([w](int x, int) { return x < w ? 100 / 255.0f : 1.0f; }, w, h);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) EXPECT_EQ(image.pixel(x, y)[0], 100) << w << "x" << h << " at " << x << "," << y;
+    }
+}
+
+// A frame ends as it began: a setScene that turns the checkerboard off before endFrame (the
+// editor's program swapped mid-frame) still fills the half the frame shaded, rather than
+// resolving a full-size target nothing drew.
+TEST(Checkerboard, AFrameKeepsTheLayoutItBeganWith) {
+    Scene scene = test::loadSceneOrDie("scenes/csg.txt");
+    RenderOptions draft;
+    draft.quality.checkerboard = true;
+    std::string error;
+    OffscreenContext context;
+    ASSERT_TRUE(context.create(1, 1, &error)) << error;
+    Renderer r;
+    ColorTarget target;
+    ASSERT_TRUE(r.init(&error) && r.setScene(scene, draft, &error) && target.resize(kW * 8, kH * 8, GL_RGBA8)) << error;
+    target.bind();
+    r.draw(kW * 8, kH * 8);
+    Image whole = readFramebuffer(kW * 8, kH * 8);
+    ASSERT_TRUE(r.beginFrame(kW * 8, kH * 8, false, &error)) << error;
+    r.drawRegion(0, 0, kW * 8, kH * 8);
+    ASSERT_TRUE(r.setScene(scene, {}, &error)) << error;
+    r.endFrame();
+    EXPECT_EQ(readFramebuffer(kW * 8, kH * 8).rgba, whole.rgba);
 }
 
 // Ids do not average: the id view shades every pixel whatever the quality asks.

@@ -66,7 +66,8 @@ public:
     // A frame in pieces (tiles of a large render). beginFrame remembers the bound framebuffer;
     // with `accumulate`, or when the scene supersamples, post-processes or shades a checkerboard
     // (RenderQuality::checkerboard), the samples go to a float target first and endFrame
-    // resolves them into `into` (or the remembered framebuffer).
+    // resolves them into `into` (or the remembered framebuffer). Without `accumulate`, one
+    // sample a pixel is written over the target, not added: draw every pixel of such a frame.
     bool beginFrame(int width, int height, bool accumulate, std::string* error);
     void resumeFrame();                           // binds the frame's target again
     void drawRegion(int x, int y, int w, int h);  // pixels from the bottom-left corner; x even
@@ -115,7 +116,7 @@ private:
     void setUniforms(const Scene& scene, const GpuScene& g, const ShaderFeatures& f, const RenderQuality& q);
     void uploadGrid(const SceneSdf& sdf);
     const Program* postProgram(std::string* error);
-    ColorTarget& marchTarget() { return checkerboard_ ? packed_ : accum_; }
+    ColorTarget& marchTarget() { return frameCheckerboard_ ? packed_ : accum_; }
     void marchViewport(int x, int y, int w, int h);  // and the scissor, for the region in pixels
     // The post pass: accum_ (filled in from packed_ first, with the checkerboard) into `into`
     // or frameTarget_.
@@ -140,12 +141,16 @@ private:
     PostMode post_ = PostMode::None;
     std::unique_ptr<Program> postPrograms_[kPostModeCount];
     ColorTarget accum_;
-    bool checkerboard_ = false;      // the march shades half the pixels into packed_
+    bool checkerboard_ = false;      // the program shades half the pixels into packed_
     ColorTarget packed_;
     CheckerboardFill fill_;
     int frameWidth_ = 0, frameHeight_ = 0;
     GLint frameTarget_ = 0;          // the framebuffer bound at beginFrame
+    // Latched by beginFrame: a setScene before endFrame changes neither the frame's layout nor
+    // how it is resolved.
+    bool frameCheckerboard_ = false;
     bool accumulating_ = false;
+    bool blending_ = false;          // samples add up in the march target; else one is written
 };
 
 // Reads the bound framebuffer's bottom-left width × height pixels into an image, top row first.
