@@ -9,9 +9,9 @@ namespace mb {
 
 enum : GLuint { kAccumUnit = 2 };  // units 0 and 1 hold the object grid
 
-const Program* Renderer::postProgram(std::string* error) {
-    std::unique_ptr<Program>& slot = postPrograms_[int(post_)];
-    if (!slot) slot = screenProgram("post.frag", "#version 330 core\n#define POST_MODE " + std::to_string(int(post_)) + "\n", error);
+const Program* Renderer::postProgram(PostMode mode, std::string* error) {
+    std::unique_ptr<Program>& slot = postPrograms_[int(mode)];
+    if (!slot) slot = screenProgram("post.frag", "#version 330 core\n#define POST_MODE " + std::to_string(int(mode)) + "\n", error);
     return slot.get();
 }
 
@@ -20,16 +20,18 @@ bool Renderer::beginFrame(int width, int height, bool accumulate, std::string* e
     frameHeight_ = height;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &frameTarget_);
     frameCheckerboard_ = checkerboard_;
-    accumulating_ = accumulate || samples_ > 1 || post_ != PostMode::None || frameCheckerboard_;
+    frameSamples_ = samples_;
+    framePost_ = post_;
+    accumulating_ = accumulate || frameSamples_ > 1 || framePost_ != PostMode::None || frameCheckerboard_;
     if (!accumulating_) return true;
     // One sample a pixel, drawn whole (draw()), is written over the target, not added: no clear,
     // no blend, and 8 bits hold the checkerboard's half, which the fill fetches for 40% less
     // than half floats (480x270, one llvmpipe thread: 0.84 against 1.42 ms).
-    blending_ = accumulate || samples_ > 1;
+    blending_ = accumulate || frameSamples_ > 1;
     const int marchWidth = frameCheckerboard_ ? CheckerboardFill::packedWidth(width) : width;
     const GLenum packedFormat = blending_ ? GL_RGBA16F : GL_RGBA8;
     if (!accum_.resize(width, height) || (frameCheckerboard_ && !packed_.resize(marchWidth, height, packedFormat)) ||
-        !postProgram(error) || (frameCheckerboard_ && !fill_.prepare(error))) {
+        !postProgram(framePost_, error) || (frameCheckerboard_ && !fill_.prepare(error))) {
         if (error->empty()) *error = "cannot create a " + std::to_string(width) + "x" + std::to_string(height) + " float target";
         accumulating_ = false;
         return false;
@@ -66,15 +68,16 @@ void Renderer::drawRegion(int x, int y, int w, int h) {
     glUseProgram(p.id());
     p.set("uResolution", glm::vec2(frameWidth_, frameHeight_));
     p.set("uPixelRadius", tanHalfFov_ / float(frameHeight_));  // half a pixel per metre away
-    p.set("uSampleWeight", 1.0f / float(samples_ * samples_));
+    p.set("uSampleWeight", 1.0f / float(frameSamples_ * frameSamples_));
     marchViewport(x, y, w, h);
     if (accumulating_ && blending_) {
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE);
     }
-    for (int j = 0; j < samples_; ++j)
-        for (int i = 0; i < samples_; ++i) {
-            p.set("uSubpixel", glm::vec2((i + 0.5f) / float(samples_), (j + 0.5f) / float(samples_)));
+    const int n = frameSamples_;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            p.set("uSubpixel", glm::vec2((i + 0.5f) / float(n), (j + 0.5f) / float(n)));
             quad_.draw();
         }
     glDisable(GL_BLEND);
@@ -92,11 +95,11 @@ void Renderer::resolve(const ColorTarget* into) {
     auto bindInto = [&] { into ? into->bind() : glBindFramebuffer(GL_FRAMEBUFFER, GLuint(frameTarget_)); };
     glViewport(0, 0, frameWidth_, frameHeight_);
     if (frameCheckerboard_) {  // without a post pass the filled-in picture is the result
-        post_ == PostMode::None ? bindInto() : accum_.bind();
+        framePost_ == PostMode::None ? bindInto() : accum_.bind();
         fill_.draw(packed_, frameWidth_, frameHeight_, quad_);
-        if (post_ == PostMode::None) return;
+        if (framePost_ == PostMode::None) return;
     }
-    const Program* post = postProgram(&error);
+    const Program* post = postProgram(framePost_, &error);
     bindInto();
     glUseProgram(post->id());
     accum_.bindTexture(kAccumUnit);
@@ -131,7 +134,7 @@ void Renderer::resolveFrame(const ColorTarget& into, int x, int y, int w, int h)
     // post.frag's FXAA reads up to FXAA_SPAN_MAX / 2 + 1 = 5 pixels away, so a changed band
     // changes the picture that far around it; 8 leaves room for a wider span. A pixel the
     // checkerboard fills in reads its neighbours, one further.
-    const int reach = (post_ == PostMode::None ? 0 : 8) + int(frameCheckerboard_);
+    const int reach = (framePost_ == PostMode::None ? 0 : 8) + int(frameCheckerboard_);
     glEnable(GL_SCISSOR_TEST);
     glScissor(x - reach, y - reach, w + 2 * reach, h + 2 * reach);
     resolve(&into);

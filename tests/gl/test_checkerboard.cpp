@@ -111,24 +111,31 @@ TEST(Checkerboard, OddSizesReadOnlyPixelsInside) {
 // A frame ends as it began: a setScene that turns the checkerboard off before endFrame (the
 // editor's program swapped mid-frame) still fills the half the frame shaded, rather than
 // resolving a full-size target nothing drew.
+// A setScene between beginFrame and endFrame (an edit while a tiled frame is under way) leaves
+// the frame as it began: its layout, and how it is resolved.
 TEST(Checkerboard, AFrameKeepsTheLayoutItBeganWith) {
     Scene scene = test::loadSceneOrDie("scenes/csg.txt");
     RenderOptions draft;
     draft.quality.checkerboard = true;
+    RenderOptions smoothed = draft;
+    smoothed.post = PostMode::Fxaa;
     std::string error;
     OffscreenContext context;
     ASSERT_TRUE(context.create(1, 1, &error)) << error;
     Renderer r;
     ColorTarget target;
-    ASSERT_TRUE(r.init(&error) && r.setScene(scene, draft, &error) && target.resize(kW * 8, kH * 8, GL_RGBA8)) << error;
+    ASSERT_TRUE(r.init(&error) && target.resize(kW * 8, kH * 8, GL_RGBA8)) << error;
     target.bind();
-    r.draw(kW * 8, kH * 8);
-    Image whole = readFramebuffer(kW * 8, kH * 8);
-    ASSERT_TRUE(r.beginFrame(kW * 8, kH * 8, false, &error)) << error;
-    r.drawRegion(0, 0, kW * 8, kH * 8);
-    ASSERT_TRUE(r.setScene(scene, {}, &error)) << error;
-    r.endFrame();
-    EXPECT_EQ(readFramebuffer(kW * 8, kH * 8).rgba, whole.rgba);
+    for (const RenderOptions& changed : {RenderOptions{}, smoothed}) {
+        ASSERT_TRUE(r.setScene(scene, draft, &error)) << error;
+        r.draw(kW * 8, kH * 8);
+        Image whole = readFramebuffer(kW * 8, kH * 8);
+        ASSERT_TRUE(r.beginFrame(kW * 8, kH * 8, false, &error)) << error;
+        r.drawRegion(0, 0, kW * 8, kH * 8);
+        ASSERT_TRUE(r.setScene(scene, changed, &error)) << error;
+        r.endFrame();
+        EXPECT_EQ(readFramebuffer(kW * 8, kH * 8).rgba, whole.rgba) << "post " << int(changed.post);
+    }
 }
 
 // Ids do not average: the id view shades every pixel whatever the quality asks.

@@ -115,7 +115,7 @@ private:
     void upload(const GpuScene& g, const ShaderFeatures& f);
     void setUniforms(const Scene& scene, const GpuScene& g, const ShaderFeatures& f, const RenderQuality& q);
     void uploadGrid(const SceneSdf& sdf);
-    const Program* postProgram(std::string* error);
+    const Program* postProgram(PostMode mode, std::string* error);
     ColorTarget& marchTarget() { return frameCheckerboard_ ? packed_ : accum_; }
     void marchViewport(int x, int y, int w, int h);  // and the scissor, for the region in pixels
     // The post pass: accum_ (filled in from packed_ first, with the checkerboard) into `into`
@@ -146,9 +146,11 @@ private:
     CheckerboardFill fill_;
     int frameWidth_ = 0, frameHeight_ = 0;
     GLint frameTarget_ = 0;          // the framebuffer bound at beginFrame
-    // Latched by beginFrame: a setScene before endFrame changes neither the frame's layout nor
-    // how it is resolved.
+    // Latched by beginFrame: a setScene before endFrame changes neither the frame's layout, nor
+    // its samples, nor how it is resolved.
     bool frameCheckerboard_ = false;
+    int frameSamples_ = 1;
+    PostMode framePost_ = PostMode::None;
     bool accumulating_ = false;
     bool blending_ = false;          // samples add up in the march target; else one is written
 };
