@@ -17,8 +17,9 @@
 
 namespace mb {
 
-// kLanes doubles side by side (GCC's vector extension: two SSE2 registers on baseline x86-64).
-using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
+// kLanes doubles side by side (GCC's vector extension): one AVX register where the CPU has AVX2,
+// two SSE2 registers on baseline x86-64 (contact_batches.cpp compiles its passes for both).
+using Lanes = double __attribute__((vector_size(kLanes * sizeof(double)), aligned(kLanes * sizeof(double))));
 
 // A row set: effective masses (RowMasses) and the inverse masses the impulses are applied with.
 struct LaneRows {
@@ -54,10 +55,6 @@ public:
     int levels() const { return graph_.levels(); }
 
 private:
-    template <class Kernel>
-    void byLevels(Worker* worker, const Kernel& kernel);
-    template <class Kernel>
-    void levels(int begin, int end, const Kernel& kernel);  // levels [begin, end)
     ContactBatch& batchOf(int contact, int& lane);
 
     ContactGraph graph_;

@@ -19,7 +19,7 @@
 
 namespace mb {
 
-constexpr int kLanes = 2;  // contacts per batch: an SSE2 register of doubles per field
+constexpr int kLanes = 4;  // contacts per batch: an AVX register of doubles per field
 
 struct ContactGraph {
     // Contacts (indices into the solve order) batch by batch, kLanes to a batch; -1 pads a batch.

@@ -7,9 +7,6 @@
 #include "marchbox/contact_batches.h"
 
 #include <cmath>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace mb {
 
@@ -29,10 +26,9 @@ inline bool any(LaneMask m) {
 }
 inline Lanes maxOf(Lanes a, Lanes b) { return select(a < b, b, a); }  // std::max(a, b)
 inline Lanes minOf(Lanes a, Lanes b) { return select(b < a, b, a); }  // std::min(a, b)
+// One instruction for all lanes where std::sqrt need not set errno: contact_batches.cpp is
+// compiled with -fno-math-errno (src/CMakeLists.txt).
 inline Lanes sqrtOf(Lanes x) {
-#if defined(__SSE2__)
-    if constexpr (kLanes == 2) return _mm_sqrt_pd(x);  // std::sqrt lane by lane would check errno
-#endif
     Lanes r;
     for (int i = 0; i < kLanes; ++i) r[i] = std::sqrt(x[i]);
     return r;
