@@ -36,6 +36,7 @@ struct PhysicsWorld::Impl {
     };
     struct Warm {  // a contact's impulses, kept for the next step
         std::uint64_t key;
+        int rank;  // its place in the step's bottom-up order (Order)
         double normal;
         dvec3 tangent, roll;
     };
@@ -47,7 +48,9 @@ struct PhysicsWorld::Impl {
     double gravity, friction, restitution, rolling;
     std::vector<Contact> contacts, sorted;
     std::vector<int> curved;  // contacts on curved static surfaces, followed every substep
-    std::vector<Order> order;
+    std::vector<Order> order, fresh, merged;
+    std::vector<Order> byRank;  // persisting contacts at last step's rank; index -1 where none is
+    std::vector<int> rank;      // per contact, in solve order: its rank in the bottom-up order
     std::vector<double> xs;
     std::vector<char> side;  // per body: the half it is in, by x
     int split[2] = {0, 0};
@@ -231,28 +234,58 @@ void PhysicsWorld::collide() {
 // persist from the last step start from its impulses.
 void PhysicsWorld::orderAndWarmStart() {
     Impl& w = *impl_;
-    const int staticBody = bodyCount();
-    w.order.clear();
-    for (size_t i = 0; i < w.contacts.size(); ++i)
-        w.order.push_back({orderedBits(contactHeight(w.contacts[i], bodies_)), contactKey(w.contacts[i], staticBody),
-                           int(i), 2});
-    std::sort(w.order.begin(), w.order.end());
+    sortBottomUp();
     splitInHalves();
     // Each run keeps the bottom-up order: a stable partition, by counting.
     int next[3] = {0, w.split[0], w.split[1]};
     w.sorted.resize(w.contacts.size());
+    w.rank.resize(w.contacts.size());
     for (size_t i = 0; i < w.order.size(); ++i) {
-        Contact& c = w.sorted[size_t(next[w.order[i].run]++)] = w.contacts[size_t(w.order[i].index)];
-        if (const Impl::Warm* old = w.findWarm(w.order[i].key)) {
-            c.normalImpulse = old->normal;
-            c.tangentImpulse = old->tangent;
-            c.rollImpulse = old->roll;
-        }
+        const int to = next[w.order[i].run]++;
+        w.sorted[size_t(to)] = w.contacts[size_t(w.order[i].index)];
+        w.rank[size_t(to)] = int(i);
     }
     w.contacts.swap(w.sorted);
     w.curved.clear();
     for (size_t i = 0; i < w.contacts.size(); ++i)
         if (w.contacts[i].curved) w.curved.push_back(int(i));
+}
+
+// The contacts that persist from the last step, taken in its order, are nearly in order already:
+// an insertion sort puts right the few that moved past each other, in about linear time. The new
+// ones are sorted apart and merged in. Keys are unique, so the order is total: the one a sort of
+// all of them gives. Persisting contacts take their warm-start impulses on the way.
+void PhysicsWorld::sortBottomUp() {
+    Impl& w = *impl_;
+    const int staticBody = bodyCount();
+    w.byRank.assign(w.warm.size(), Impl::Order{0, 0, -1, 2});
+    w.fresh.clear();
+    for (size_t i = 0; i < w.contacts.size(); ++i) {
+        Contact& c = w.contacts[i];
+        const Impl::Order o{orderedBits(contactHeight(c, bodies_)), contactKey(c, staticBody), int(i), 2};
+        const Impl::Warm* old = w.findWarm(o.key);
+        if (!old) {
+            w.fresh.push_back(o);
+            continue;
+        }
+        c.normalImpulse = old->normal;
+        c.tangentImpulse = old->tangent;
+        c.rollImpulse = old->roll;
+        w.byRank[size_t(old->rank)] = o;
+    }
+    w.order.clear();
+    for (const Impl::Order& o : w.byRank)
+        if (o.index >= 0) w.order.push_back(o);
+    for (size_t i = 1; i < w.order.size(); ++i) {
+        const Impl::Order o = w.order[i];
+        size_t j = i;
+        for (; j > 0 && o < w.order[j - 1]; --j) w.order[j] = w.order[j - 1];
+        w.order[j] = o;
+    }
+    std::sort(w.fresh.begin(), w.fresh.end());
+    w.merged.resize(w.contacts.size());
+    std::merge(w.order.begin(), w.order.end(), w.fresh.begin(), w.fresh.end(), w.merged.begin());
+    w.order.swap(w.merged);
 }
 
 // Bodies left of the median x form one half, the rest the other; a contact within one half goes
@@ -319,9 +352,11 @@ void PhysicsWorld::keepImpulses() {
     for (int i = 2; i <= n + 1; ++i) w.warmBegin[i] += w.warmBegin[i - 1];
     w.warm.resize(w.contacts.size());
     // warmBegin[f + 1] is the next free slot of body f's group; once filled it is group f + 1's start.
-    for (const Contact& c : w.contacts) {
+    for (size_t i = 0; i < w.contacts.size(); ++i) {
+        const Contact& c = w.contacts[i];
         const std::uint64_t key = contactKey(c, n);
-        w.warm[size_t(w.warmBegin[size_t(key >> 40) + 1]++)] = {key, c.normalImpulse, c.tangentImpulse, c.rollImpulse};
+        w.warm[size_t(w.warmBegin[size_t(key >> 40) + 1]++)] = {key, w.rank[i], c.normalImpulse, c.tangentImpulse,
+                                                               c.rollImpulse};
     }
 }
 
