@@ -36,13 +36,38 @@ void addPair(std::vector<std::pair<int, int>>& pairs, int i, int j) {
 
 }  // namespace
 
+// The skin, as a fraction of the extent: larger keeps the list longer, smaller tests fewer pairs.
+constexpr double kSkin = 0.3;
+
 void Broadphase::findPairs(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents,
                            std::vector<std::pair<int, int>>& pairs) {
     pairs.clear();
     if (centres.empty()) return;
-    buildCells(centres, extents);
-    pairCells(pairs);
-    pairLarge(pairs);
+    if (!listCovers(centres, extents)) buildList(centres, extents);
+    for (auto [i, j] : list_)
+        if (overlaps(centres[size_t(i)], extents[size_t(i)], centres[size_t(j)], extents[size_t(j)]))
+            pairs.emplace_back(i, j);
+}
+
+// A pair left out of the list was at least E_i + E_j apart (grown extents); it overlaps now only if
+// e_i + e_j + (how far each moved since) exceeds that. So the list holds every overlapping pair
+// while each sphere's extent plus its move stays within its grown extent; the factor keeps that
+// true through the rounding of the distance tests.
+bool Broadphase::listCovers(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents) const {
+    if (listCentres_.size() != centres.size()) return false;
+    for (size_t i = 0; i < centres.size(); ++i)
+        if (extents[i] + glm::length(centres[i] - listCentres_[i]) > (1.0 - 1e-9) * listExtents_[i]) return false;
+    return true;
+}
+
+void Broadphase::buildList(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents) {
+    listCentres_ = centres;
+    listExtents_.resize(extents.size());
+    for (size_t i = 0; i < extents.size(); ++i) listExtents_[i] = (1.0 + kSkin) * extents[i];
+    list_.clear();
+    buildCells(centres, listExtents_);
+    pairCells(list_);
+    pairLarge(list_);
 }
 
 void Broadphase::buildCells(const std::vector<glm::dvec3>& centres,
