@@ -5,6 +5,16 @@
 
 namespace mb {
 
+void sideByMedianX(const std::vector<PhysicsBody>& bodies, std::vector<double>& xs, std::vector<char>& side) {
+    const size_t n = bodies.size() - 1;  // the static body, last, joins no side
+    xs.resize(n);
+    for (size_t i = 0; i < n; ++i) xs[i] = bodies[i].pos.x;
+    const auto middle = xs.begin() + ptrdiff_t(n / 2);
+    std::nth_element(xs.begin(), middle, xs.end());
+    side.resize(n);
+    for (size_t i = 0; i < n; ++i) side[i] = bodies[i].pos.x < *middle ? 0 : 1;
+}
+
 void buildContactGraph(const std::vector<Contact>& contacts, const int split[2], int staticBody,
                        ContactGraph& graph, std::vector<int>& scratch) {
     const int n = int(contacts.size());

@@ -288,27 +288,16 @@ void PhysicsWorld::sortBottomUp() {
     w.order.swap(w.merged);
 }
 
-// Bodies left of the median x form one half, the rest the other; a contact within one half goes
-// to its run, one across the cut to the joining run, solved after both. The cut depends on the
-// bodies alone, never on the thread count, so one thread or two give the same bytes. Few
-// contacts are not worth a second thread: they all go to the joining run, in order.
+// Few contacts are not worth a second thread: they all go to the joining run, in order.
 void PhysicsWorld::splitInHalves() {
     constexpr size_t kMinContacts = 512;
     Impl& w = *impl_;
-    const int n = bodyCount();
     w.split[0] = w.split[1] = 0;
     if (w.order.size() < kMinContacts) return;
-    w.xs.resize(size_t(n));
-    for (int i = 0; i < n; ++i) w.xs[size_t(i)] = bodies_[i].pos.x;
-    const auto middle = w.xs.begin() + n / 2;
-    std::nth_element(w.xs.begin(), middle, w.xs.end());
-    w.side.resize(size_t(n));
-    for (int i = 0; i < n; ++i) w.side[size_t(i)] = bodies_[i].pos.x < *middle ? 0 : 1;
+    sideByMedianX(bodies_, w.xs, w.side);
     int count[3] = {0, 0, 0};
     for (Impl::Order& o : w.order) {
-        const Contact& c = w.contacts[size_t(o.index)];
-        const int sb = w.side[size_t(c.b)];
-        o.run = c.a == n || w.side[size_t(c.a)] == sb ? sb : 2;
+        o.run = runOf(w.contacts[size_t(o.index)], w.side, bodyCount());
         ++count[o.run];
     }
     w.split[0] = count[0];

@@ -2,6 +2,7 @@
 #include "marchbox/contact_graph.h"
 
 #include <gtest/gtest.h>
+#include <algorithm>
 #include <cstdint>
 #include <set>
 
@@ -78,4 +79,50 @@ TEST(ContactGraph, EachRunKeepsToLevelsOfItsOwnInRunOrder) {
         EXPECT_LT(level[size_t(i)], runEnd[run]) << "contact " << i;
         EXPECT_GE(level[size_t(i)], run > 0 ? runEnd[run - 1] : 0) << "contact " << i;
     }
+}
+
+// What two threads solve at once shares no body: the levels of the first run (the worker's) and
+// of the second (this thread's) never hold the same dynamic body, whatever the contacts, and a
+// contact across the cut waits for both, in the joining run. (A race on a shared body would show
+// in the two-thread determinism test only when the threads happened to collide; this cannot miss.)
+TEST(ContactGraph, HalvesShareNoBody) {
+    std::vector<PhysicsBody> bodies(size_t(kBodies) + 1);  // the static body last
+    std::uint32_t state = 4242;
+    for (int i = 0; i < kBodies; ++i) bodies[size_t(i)].pos.x = double((state = state * 1664525u + 1013904223u) >> 8);
+    std::vector<double> xs;
+    std::vector<char> side;
+    sideByMedianX(bodies, xs, side);
+    EXPECT_EQ(std::count(side.begin(), side.end(), 0), kBodies / 2) << "the cut is at the median";
+    // The contacts in runs, each run keeping the solve order (as PhysicsWorld::splitInHalves does).
+    const std::vector<Contact> contacts = randomContacts(300);
+    std::vector<Contact> byRun;
+    int split[2] = {0, 0}, across = 0;
+    for (int run = 0; run < 3; ++run) {
+        for (const Contact& c : contacts) {
+            const bool crosses = c.a != kStatic && side[size_t(c.a)] != side[size_t(c.b)];
+            if (runOf(c, side, kStatic) != run) continue;
+            EXPECT_EQ(run == 2, crosses) << "bodies " << c.a << " and " << c.b;
+            across += crosses ? 1 : 0;
+            byRun.push_back(c);
+        }
+        if (run < 2) split[run] = int(byRun.size());
+    }
+    ASSERT_GT(across, 0) << "no contact crosses the cut: the test would not see one";
+    ASSERT_GT(split[0], 0);
+    ASSERT_GT(split[1], split[0]);
+    ContactGraph g;
+    std::vector<int> scratch;
+    buildContactGraph(byRun, split, kStatic, g, scratch);
+    std::set<int> touched[2];  // dynamic bodies in the worker's levels, and in this thread's
+    for (int half = 0; half < 2; ++half)
+        for (int k = half == 0 ? 0 : g.runEnd[0]; k < g.runEnd[half]; ++k)
+            for (int s = g.levelBegin[size_t(k)] * kLanes; s < g.levelBegin[size_t(k) + 1] * kLanes; ++s) {
+                if (g.slots[size_t(s)] < 0) continue;
+                const Contact& c = byRun[size_t(g.slots[size_t(s)])];
+                for (int body : {c.a, c.b})
+                    if (body != kStatic) touched[half].insert(body);
+            }
+    EXPECT_FALSE(touched[0].empty());
+    EXPECT_FALSE(touched[1].empty());
+    for (int body : touched[0]) EXPECT_EQ(touched[1].count(body), 0u) << "body " << body << " is in both halves";
 }
