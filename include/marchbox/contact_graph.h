@@ -37,11 +37,11 @@ struct ContactGraph {
 // the median x are side 0, the rest side 1. The cut depends on the bodies alone, never on the
 // thread count. `xs` is scratch.
 void sideByMedianX(const std::vector<PhysicsBody>& bodies, std::vector<double>& xs, std::vector<char>& side);
-// A contact within one side (or between one side and the static body) goes to that side's run;
+// A contact of bodies a and b within one side (or between one side and the static body) goes to that side's run;
 // one across the cut to the joining run, 2, solved after both: no body is in both halves.
-inline int runOf(const Contact& c, const std::vector<char>& side, int staticBody) {
-    const int sb = side[size_t(c.b)];
-    return c.a == staticBody || side[size_t(c.a)] == sb ? sb : 2;
+inline int runOf(int a, int b, const std::vector<char>& side, int staticBody) {
+    const int sb = side[size_t(b)];
+    return a == staticBody || side[size_t(a)] == sb ? sb : 2;
 }
 
 // Levels for `contacts` in their solve order, in the runs split[] gives (SolverContext::split);

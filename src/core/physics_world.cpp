@@ -19,6 +19,17 @@ namespace mb {
 
 using glm::dvec3;
 
+namespace {
+
+struct Found {  // a contact as collide() finds it, before its place in the solve order
+    int a, b, feature;
+    bool curved;
+    dvec3 normal;
+    double separation;
+};
+
+}  // namespace
+
 struct PhysicsWorld::Impl {
     explicit Impl(const Scene& scene)
         : statics(scene),
@@ -30,8 +41,9 @@ struct PhysicsWorld::Impl {
     struct Order {
         std::uint64_t height;  // orderedBits(contact height): compares as the double does
         std::uint64_t key;
-        int index;
-        int run;  // SolverContext::split: 0 or 1, one half; 2, both
+        int index;             // in found
+        int run;               // SolverContext::split: 0 or 1, one half; 2, both
+        int warm;              // last step's impulses in warm, or -1
         bool operator<(const Order& o) const { return height < o.height || (height == o.height && key < o.key); }
     };
     struct Warm {  // a contact's impulses, kept for the next step
@@ -46,7 +58,8 @@ struct PhysicsWorld::Impl {
     Impacts impacts;
     ContactBatches batches;  // the solver's state during the substeps
     double gravity, friction, restitution, rolling;
-    std::vector<Contact> contacts, sorted;
+    std::vector<Found> found;
+    std::vector<Contact> contacts;  // in solve order
     std::vector<int> curved;  // contacts on curved static surfaces, followed every substep
     std::vector<Order> order, fresh, merged;
     std::vector<Order> byRank;  // persisting contacts at last step's rank; index -1 where none is
@@ -81,15 +94,32 @@ namespace {
 double slopFor(double radius, const PhysicsSettings& s) { return std::min(s.linearSlop, 0.05 * radius); }
 
 // Warm-start key: first dynamic body, other body, feature + 1, in 24, 24 and 16 bits.
-std::uint64_t contactKey(const Contact& c, int staticBody) {
-    const bool onStatic = c.a == staticBody;
-    const std::uint64_t first = std::uint64_t(onStatic ? c.b : c.a), second = std::uint64_t(onStatic ? c.a : c.b);
-    return first << 40 | second << 16 | std::uint64_t(c.feature + 1);
+std::uint64_t contactKey(int a, int b, int feature, int staticBody) {
+    const bool onStatic = a == staticBody;
+    const std::uint64_t first = std::uint64_t(onStatic ? b : a), second = std::uint64_t(onStatic ? a : b);
+    return first << 40 | second << 16 | std::uint64_t(feature + 1);
 }
 
-double contactHeight(const Contact& c, const std::vector<PhysicsBody>& bodies) {
-    const PhysicsBody& b = bodies[c.b];
-    return b.pos.y - c.armB * c.normal.y;  // the contact point, on b's surface
+double contactHeight(const Found& f, const std::vector<PhysicsBody>& bodies) {
+    const PhysicsBody& b = bodies[size_t(f.b)];
+    return b.pos.y - b.radius * f.normal.y;  // the contact point, on b's surface
+}
+
+// The contact's arms, lever of rolling resistance and slop, from its bodies (a may be static).
+Contact makeContact(const Found& f, const std::vector<PhysicsBody>& bodies, int staticBody,
+                    const PhysicsSettings& settings) {
+    Contact c;
+    c.a = f.a;
+    c.b = f.b;
+    c.feature = f.feature;
+    c.curved = f.curved;
+    c.normal = f.normal;
+    c.separation = f.separation;
+    c.armB = bodies[size_t(f.b)].radius;
+    c.armA = f.a == staticBody ? 0.0 : bodies[size_t(f.a)].radius;
+    c.rollRadius = f.a == staticBody ? c.armB : std::min(c.armA, c.armB);
+    c.slop = slopFor(c.rollRadius, settings);
+    return c;
 }
 
 // The bits of a double as an unsigned integer in the double's order (negatives reversed below
@@ -194,7 +224,7 @@ void PhysicsWorld::collide() {
     Impl& w = *impl_;
     const int n = bodyCount();
     const double dt = settings_.dt;
-    w.contacts.clear();
+    w.found.clear();
     w.centres.resize(n);
     w.extents.resize(n);
     w.margins.resize(n);
@@ -212,18 +242,9 @@ void PhysicsWorld::collide() {
     for (auto [a, b] : w.pairs) {
         const PhysicsBody &A = bodies_[a], &B = bodies_[b];
         if (!A.awake && !B.awake) continue;
-        Contact c;
-        c.a = a;
-        c.b = b;
         const dvec3 d = B.pos - A.pos;
         const double len = glm::length(d);
-        c.normal = len > 0.0 ? d / len : dvec3(0, 1, 0);
-        c.separation = len - A.radius - B.radius;
-        c.armA = A.radius;
-        c.armB = B.radius;
-        c.rollRadius = std::min(A.radius, B.radius);
-        c.slop = slopFor(c.rollRadius, settings_);
-        w.contacts.push_back(c);
+        w.found.push_back({a, b, -1, false, len > 0.0 ? d / len : dvec3(0, 1, 0), len - A.radius - B.radius});
     }
     for (int i = 0; i < n; ++i)
         if (bodies_[i].awake) collideStatic(i);
@@ -238,14 +259,19 @@ void PhysicsWorld::orderAndWarmStart() {
     splitInHalves();
     // Each run keeps the bottom-up order: a stable partition, by counting.
     int next[3] = {0, w.split[0], w.split[1]};
-    w.sorted.resize(w.contacts.size());
-    w.rank.resize(w.contacts.size());
+    w.contacts.resize(w.found.size());
+    w.rank.resize(w.found.size());
     for (size_t i = 0; i < w.order.size(); ++i) {
-        const int to = next[w.order[i].run]++;
-        w.sorted[size_t(to)] = w.contacts[size_t(w.order[i].index)];
+        const Impl::Order& o = w.order[i];
+        const int to = next[o.run]++;
+        Contact& c = w.contacts[size_t(to)] = makeContact(w.found[size_t(o.index)], bodies_, bodyCount(), settings_);
         w.rank[size_t(to)] = int(i);
+        if (o.warm < 0) continue;
+        const Impl::Warm& old = w.warm[size_t(o.warm)];
+        c.normalImpulse = old.normal;
+        c.tangentImpulse = old.tangent;
+        c.rollImpulse = old.roll;
     }
-    w.contacts.swap(w.sorted);
     w.curved.clear();
     for (size_t i = 0; i < w.contacts.size(); ++i)
         if (w.contacts[i].curved) w.curved.push_back(int(i));
@@ -254,23 +280,21 @@ void PhysicsWorld::orderAndWarmStart() {
 // The contacts that persist from the last step, taken in its order, are nearly in order already:
 // an insertion sort puts right the few that moved past each other, in about linear time. The new
 // ones are sorted apart and merged in. Keys are unique, so the order is total: the one a sort of
-// all of them gives. Persisting contacts take their warm-start impulses on the way.
+// all of them gives.
 void PhysicsWorld::sortBottomUp() {
     Impl& w = *impl_;
     const int staticBody = bodyCount();
-    w.byRank.assign(w.warm.size(), Impl::Order{0, 0, -1, 2});
+    w.byRank.assign(w.warm.size(), Impl::Order{0, 0, -1, 2, -1});
     w.fresh.clear();
-    for (size_t i = 0; i < w.contacts.size(); ++i) {
-        Contact& c = w.contacts[i];
-        const Impl::Order o{orderedBits(contactHeight(c, bodies_)), contactKey(c, staticBody), int(i), 2};
+    for (size_t i = 0; i < w.found.size(); ++i) {
+        const Found& f = w.found[i];
+        Impl::Order o{orderedBits(contactHeight(f, bodies_)), contactKey(f.a, f.b, f.feature, staticBody), int(i), 2, -1};
         const Impl::Warm* old = w.findWarm(o.key);
         if (!old) {
             w.fresh.push_back(o);
             continue;
         }
-        c.normalImpulse = old->normal;
-        c.tangentImpulse = old->tangent;
-        c.rollImpulse = old->roll;
+        o.warm = int(old - w.warm.data());
         w.byRank[size_t(old->rank)] = o;
     }
     w.order.clear();
@@ -283,7 +307,7 @@ void PhysicsWorld::sortBottomUp() {
         w.order[j] = o;
     }
     std::sort(w.fresh.begin(), w.fresh.end());
-    w.merged.resize(w.contacts.size());
+    w.merged.resize(w.found.size());
     std::merge(w.order.begin(), w.order.end(), w.fresh.begin(), w.fresh.end(), w.merged.begin());
     w.order.swap(w.merged);
 }
@@ -297,7 +321,8 @@ void PhysicsWorld::splitInHalves() {
     sideByMedianX(bodies_, w.xs, w.side);
     int count[3] = {0, 0, 0};
     for (Impl::Order& o : w.order) {
-        o.run = runOf(w.contacts[size_t(o.index)], w.side, bodyCount());
+        const Found& f = w.found[size_t(o.index)];
+        o.run = runOf(f.a, f.b, w.side, bodyCount());
         ++count[o.run];
     }
     w.split[0] = count[0];
@@ -337,13 +362,13 @@ void PhysicsWorld::keepImpulses() {
     Impl& w = *impl_;
     const int n = bodyCount();
     w.warmBegin.assign(size_t(n) + 2, 0);
-    for (const Contact& c : w.contacts) ++w.warmBegin[size_t(contactKey(c, n) >> 40) + 2];
+    for (const Contact& c : w.contacts) ++w.warmBegin[size_t(contactKey(c.a, c.b, c.feature, n) >> 40) + 2];
     for (int i = 2; i <= n + 1; ++i) w.warmBegin[i] += w.warmBegin[i - 1];
     w.warm.resize(w.contacts.size());
     // warmBegin[f + 1] is the next free slot of body f's group; once filled it is group f + 1's start.
     for (size_t i = 0; i < w.contacts.size(); ++i) {
         const Contact& c = w.contacts[i];
-        const std::uint64_t key = contactKey(c, n);
+        const std::uint64_t key = contactKey(c.a, c.b, c.feature, n);
         w.warm[size_t(w.warmBegin[size_t(key >> 40) + 1]++)] = {key, w.rank[i], c.normalImpulse, c.tangentImpulse,
                                                                c.rollImpulse};
     }
@@ -358,19 +383,10 @@ void PhysicsWorld::collideStatic(int body) {
         // substep by substep (bendCurved, followCurved); flat faces and the ground keep the
         // normal of the step's start, as a plane does.
         const dvec3 move = b.vel * settings_.dt;
-        Contact c;
-        c.curved = settings_.followCurves && hit.feature > 0 &&
-                   std::abs(w.statics.bend(hit.feature, b.pos, hit.normal, move)) >
-                       w.statics.bendNoise(hit.feature, glm::length(move));
-        c.a = bodyCount();
-        c.b = body;
-        c.feature = hit.feature;
-        c.normal = hit.normal;
-        c.separation = hit.separation;
-        c.armB = b.radius;
-        c.rollRadius = b.radius;
-        c.slop = slopFor(b.radius, settings_);
-        w.contacts.push_back(c);
+        const bool curved = settings_.followCurves && hit.feature > 0 &&
+                            std::abs(w.statics.bend(hit.feature, b.pos, hit.normal, move)) >
+                                w.statics.bendNoise(hit.feature, glm::length(move));
+        w.found.push_back({bodyCount(), body, hit.feature, curved, hit.normal, hit.separation});
     }
 }
 

@@ -100,7 +100,7 @@ TEST(ContactGraph, HalvesShareNoBody) {
     for (int run = 0; run < 3; ++run) {
         for (const Contact& c : contacts) {
             const bool crosses = c.a != kStatic && side[size_t(c.a)] != side[size_t(c.b)];
-            if (runOf(c, side, kStatic) != run) continue;
+            if (runOf(c.a, c.b, side, kStatic) != run) continue;
             EXPECT_EQ(run == 2, crosses) << "bodies " << c.a << " and " << c.b;
             across += crosses ? 1 : 0;
             byRun.push_back(c);
