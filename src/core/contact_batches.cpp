@@ -239,7 +239,8 @@ void loadLane(ContactBatch& to, int l, const Contact& c, const std::vector<Physi
     to.separation[l] = c.separation, to.armA[l] = c.armA, to.armB[l] = c.armB, to.slop[l] = c.slop;
     to.curve[l] = 0.0, to.rollRadius[l] = c.rollRadius;  // curve: 0 until setCurve
     setRows(to.solve, l, c.mass, inverseMasses(c, bodies, false));
-    setRows(to.relax, l, c.shock ? c.shockMass : c.mass, inverseMasses(c, bodies, true));
+    const InverseMasses relax = inverseMasses(c, bodies, true);
+    setRows(to.relax, l, c.shock ? rowMasses(c, relax) : c.mass, relax);
     to.normalImpulse[l] = c.normalImpulse, to.maxNormalImpulse[l] = c.maxNormalImpulse;
     to.tx[l] = c.tangentImpulse.x, to.ty[l] = c.tangentImpulse.y, to.tz[l] = c.tangentImpulse.z;
     to.rx[l] = c.rollImpulse.x, to.ry[l] = c.rollImpulse.y, to.rz[l] = c.rollImpulse.z;

@@ -15,12 +15,6 @@ InverseMasses inverseOf(const PhysicsBody& a, const PhysicsBody& b) {
     return {a.invMass, a.invInertia, b.invMass, b.invInertia};
 }
 
-RowMasses rowMasses(const Contact& c, const InverseMasses& w) {
-    const double kn = w.massA + w.massB;
-    return {inverseOrZero(kn), inverseOrZero(kn + w.inertiaA * c.armA * c.armA + w.inertiaB * c.armB * c.armB),
-            inverseOrZero(w.inertiaA + w.inertiaB)};
-}
-
 // Shock propagation (Guendelman et al. 2003) in the relax pass. A light sphere under a heavy one
 // moves the heavy one by only m_light/m_heavy of what it needs per Gauss-Seidel pass, so a 1:1e4
 // stack would take 1e4 passes to hold. Contacts are solved bottom-up; for a resting contact
@@ -38,6 +32,12 @@ InverseMasses fixingLower(const Contact& c, const PhysicsBody& a, const PhysicsB
 }
 
 }  // namespace
+
+RowMasses rowMasses(const Contact& c, const InverseMasses& w) {
+    const double kn = w.massA + w.massB;
+    return {inverseOrZero(kn), inverseOrZero(kn + w.inertiaA * c.armA * c.armA + w.inertiaB * c.armB * c.armB),
+            inverseOrZero(w.inertiaA + w.inertiaB)};
+}
 
 double bounceThreshold(const SolverContext& ctx) {
     return ctx.gravity > 0.0 ? ctx.settings.restitutionThreshold : 0.0;
@@ -64,7 +64,6 @@ void prepareContacts(SolverContext& ctx) {
         c.relativeVelocity = glm::dot(b.vel - a.vel, c.normal);
         c.maxNormalImpulse = 0.0;
         c.shock = shockPropagates(c, ctx);
-        if (c.shock) c.shockMass = rowMasses(c, fixingLower(c, a, b));
     }
 }
 
