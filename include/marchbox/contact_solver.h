@@ -84,7 +84,7 @@ double bounceThreshold(const SolverContext& ctx);
 void prepareContacts(SolverContext& ctx);
 InverseMasses inverseMasses(const Contact& c, const std::vector<PhysicsBody>& bodies, bool relax);
 RowMasses rowMasses(const Contact& c, const InverseMasses& w);  // the row masses with these
-void applyRestitution(SolverContext& ctx);
+void applyRestitution(SolverContext& ctx, int iterations, std::vector<int>& bouncing);  // bouncing: scratch
 double contactSeparation(const Contact& c, const std::vector<PhysicsBody>& bodies);  // now
 
 }  // namespace mb

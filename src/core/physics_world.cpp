@@ -209,7 +209,7 @@ void PhysicsWorld::step() {
         for (int i = 0; i < iterations; ++i) w.batches.solve(ctx, false);
     }
     w.batches.store(w.contacts);
-    for (int i = 0; i < settings_.restitutionIterations; ++i) applyRestitution(ctx);
+    applyRestitution(ctx, settings_.restitutionIterations, w.scratch);
     if (settings_.impacts) w.impacts.correctPositions(bodies_, w.contacts);
     keepImpulses();
     if (settings_.continuous) sweepFast();
