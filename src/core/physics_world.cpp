@@ -377,7 +377,7 @@ void PhysicsWorld::keepImpulses() {
 void PhysicsWorld::collideStatic(int body) {
     Impl& w = *impl_;
     const PhysicsBody& b = bodies_[body];
-    w.statics.query(b.pos, b.radius, w.margins[body], w.hits);
+    w.statics.query(body, b.pos, b.radius, w.margins[body], w.hits);
     for (const StaticHit& hit : w.hits) {
         // A surface that bends by more than its SDF's noise over this step's move is followed
         // substep by substep (bendCurved, followCurved); flat faces and the ground keep the
