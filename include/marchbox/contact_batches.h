@@ -28,7 +28,8 @@ struct LaneRows {
 };
 
 struct ContactBatch {
-    int a[kLanes], b[kLanes];            // bodies; a padding lane has the static body for both
+    PhysicsBody* a[kLanes];              // bodies (in SolverContext::bodies); a padding lane has
+    PhysicsBody* b[kLanes];              // the static body for both
     int count = 0;                       // lanes in use
     Lanes nx, ny, nz;                    // normal
     Lanes separation, armA, armB, slop, curve, rollRadius;

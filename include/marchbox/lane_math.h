@@ -19,10 +19,11 @@ inline Lanes splat(double x) {
 }
 // Bitwise: and, and-not, or (the vector ?: of GCC 12 branches lane by lane).
 inline Lanes select(LaneMask m, Lanes a, Lanes b) { return Lanes((LaneMask(a) & m) | (LaneMask(b) & ~m)); }
+// Whether any lane has a bit set: halves folded onto each other, then the last two lanes.
 inline bool any(LaneMask m) {
-    long long bits = 0;
-    for (int i = 0; i < kLanes; ++i) bits |= m[i];
-    return bits != 0;
+    static_assert(kLanes == 4, "two folds");
+    const LaneMask half = m | __builtin_shufflevector(m, m, 2, 3, 0, 1);
+    return (half[0] | half[1]) != 0;
 }
 inline Lanes maxOf(Lanes a, Lanes b) { return select(a < b, b, a); }  // std::max(a, b)
 inline Lanes minOf(Lanes a, Lanes b) { return select(b < a, b, a); }  // std::min(a, b)

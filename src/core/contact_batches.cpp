@@ -65,10 +65,7 @@ template <class Row>
     first = __builtin_shufflevector(u, v, 0, 4, 2, 6), second = __builtin_shufflevector(u, v, 1, 5, 3, 7);
 }
 
-[[gnu::always_inline]] inline void gatherBodies(const std::vector<PhysicsBody>& bodies, const int (&index)[kLanes],
-                                                BodyLanes& to, Lanes3& delta) {
-    const PhysicsBody* p[kLanes];
-    for (int l = 0; l < kLanes; ++l) p[l] = &bodies[size_t(index[l])];
+[[gnu::always_inline]] inline void gatherBodies(PhysicsBody* const (&p)[kLanes], BodyLanes& to, Lanes3& delta) {
     const Lanes rows[4] = {rowAt<Lanes>(*p[0], 0), rowAt<Lanes>(*p[1], 0), rowAt<Lanes>(*p[2], 0), rowAt<Lanes>(*p[3], 0)};
     Lanes lanes[4];
     transpose(rows, lanes);
@@ -81,10 +78,10 @@ template <class Row>
     delta.z = Lanes{p[0]->delta.z, p[1]->delta.z, p[2]->delta.z, p[3]->delta.z};
 }
 
-[[gnu::always_inline]] inline PairLanes gather(const ContactBatch& c, const std::vector<PhysicsBody>& bodies) {
+[[gnu::always_inline]] inline PairLanes gather(const ContactBatch& c) {
     PairLanes s;
-    gatherBodies(bodies, c.a, s.a, s.deltaA);
-    gatherBodies(bodies, c.b, s.b, s.deltaB);
+    gatherBodies(c.a, s.a, s.deltaA);
+    gatherBodies(c.b, s.b, s.deltaB);
     return s;
 }
 
@@ -109,12 +106,12 @@ struct BodyRows {
 }
 
 // Body a is written back only where it moves (the static body, shared by every level, never is).
-[[gnu::always_inline]] inline void scatter(const ContactBatch& c, const LaneRows& w, const PairLanes& s, std::vector<PhysicsBody>& bodies) {
+[[gnu::always_inline]] inline void scatter(const ContactBatch& c, const LaneRows& w, const PairLanes& s) {
     const BodyRows a = rowsOf(s.a), b = rowsOf(s.b);
     for (int l = 0; l < kLanes; ++l) {
         if (l >= c.count) break;
-        if (w.massA[l] > 0.0) storeLane(bodies[size_t(c.a[l])], a, l);
-        storeLane(bodies[size_t(c.b[l])], b, l);
+        if (w.massA[l] > 0.0) storeLane(*c.a[l], a, l);
+        storeLane(*c.b[l], b, l);
     }
 }
 
@@ -145,7 +142,7 @@ struct BodyRows {
 [[gnu::always_inline]] inline bool anyImpulse(const ContactBatch& c) {
     const LaneMask bits = LaneMask(c.normalImpulse) | LaneMask(c.tx) | LaneMask(c.ty) | LaneMask(c.tz) |
                           LaneMask(c.rx) | LaneMask(c.ry) | LaneMask(c.rz);
-    return any((bits << 1) != 0);  // the sign bit shifted out
+    return any(bits << 1);  // the sign bit shifted out
 }
 
 }  // namespace
@@ -219,12 +216,12 @@ namespace {
     return true;
 }
 
-[[gnu::always_inline]] inline void markSupported(const ContactBatch& c, std::vector<PhysicsBody>& bodies) {
+[[gnu::always_inline]] inline void markSupported(const ContactBatch& c) {
     for (int l = 0; l < kLanes; ++l) {
         if (l >= c.count) break;
         if (c.normalImpulse[l] <= 0.0) continue;
-        bodies[size_t(c.b[l])].supported = true;
-        if (c.solve.massA[l] > 0.0) bodies[size_t(c.a[l])].supported = true;
+        c.b[l]->supported = true;
+        if (c.solve.massA[l] > 0.0) c.a[l]->supported = true;
     }
 }
 
@@ -233,8 +230,8 @@ void setRows(LaneRows& to, int l, const RowMasses& m, const InverseMasses& w) {
     to.massA[l] = w.massA, to.inertiaA[l] = w.inertiaA, to.massB[l] = w.massB, to.inertiaB[l] = w.inertiaB;
 }
 
-void loadLane(ContactBatch& to, int l, const Contact& c, const std::vector<PhysicsBody>& bodies) {
-    to.a[l] = c.a, to.b[l] = c.b;
+void loadLane(ContactBatch& to, int l, const Contact& c, std::vector<PhysicsBody>& bodies) {
+    to.a[l] = &bodies[size_t(c.a)], to.b[l] = &bodies[size_t(c.b)];
     to.nx[l] = c.normal.x, to.ny[l] = c.normal.y, to.nz[l] = c.normal.z;
     to.separation[l] = c.separation, to.armA[l] = c.armA, to.armB[l] = c.armB, to.slop[l] = c.slop;
     to.curve[l] = 0.0, to.rollRadius[l] = c.rollRadius;  // curve: 0 until setCurve
@@ -283,11 +280,11 @@ using PassLevels = void (*)(const Pass& pass, int begin, int end);  // levels [b
     for (int i = pass.levelBegin[begin]; i < pass.levelBegin[end]; ++i) {
         ContactBatch& c = pass.batches[i];
         if (!anyImpulse(c)) continue;
-        PairLanes s = gather(c, pass.ctx.bodies);
+        PairLanes s = gather(c);
         applyNormal(s, c.solve, c.normalImpulse * normalOf(c));
         applyImpulse(s, c, c.solve, {c.tx, c.ty, c.tz});
         applyAngular(s, c.solve, {c.rx, c.ry, c.rz});
-        scatter(c, c.solve, s, pass.ctx.bodies);
+        scatter(c, c.solve, s);
     }
 }
 
@@ -295,10 +292,10 @@ using PassLevels = void (*)(const Pass& pass, int begin, int end);  // levels [b
     for (int i = pass.levelBegin[begin]; i < pass.levelBegin[end]; ++i) {
         ContactBatch& c = pass.batches[i];
         const LaneRows& w = pass.useBias ? c.solve : c.relax;
-        PairLanes s = gather(c, pass.ctx.bodies);
+        PairLanes s = gather(c);
         if (!solveRows(c, s, pass.ctx, w, pass.useBias)) continue;
-        scatter(c, w, s, pass.ctx.bodies);
-        if (pass.useBias) markSupported(c, pass.ctx.bodies);
+        scatter(c, w, s);
+        if (pass.useBias) markSupported(c);
     }
 }
 
