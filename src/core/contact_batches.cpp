@@ -235,8 +235,9 @@ void loadLane(ContactBatch& to, int l, const Contact& c, std::vector<PhysicsBody
     to.nx[l] = c.normal.x, to.ny[l] = c.normal.y, to.nz[l] = c.normal.z;
     to.separation[l] = c.separation, to.armA[l] = c.armA, to.armB[l] = c.armB, to.slop[l] = c.slop;
     to.curve[l] = 0.0, to.rollRadius[l] = c.rollRadius;  // curve: 0 until setCurve
-    setRows(to.solve, l, c.mass, inverseMasses(c, bodies, false));
-    const InverseMasses relax = inverseMasses(c, bodies, true);
+    const InverseMasses solve = inverseMasses(c, bodies, false);
+    setRows(to.solve, l, c.mass, solve);
+    const InverseMasses relax = c.shock ? inverseMasses(c, bodies, true) : solve;  // else the same rows
     setRows(to.relax, l, c.shock ? rowMasses(c, relax) : c.mass, relax);
     to.normalImpulse[l] = c.normalImpulse, to.maxNormalImpulse[l] = c.maxNormalImpulse;
     to.tx[l] = c.tangentImpulse.x, to.ty[l] = c.tangentImpulse.y, to.tz[l] = c.tangentImpulse.z;

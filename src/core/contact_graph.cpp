@@ -18,8 +18,9 @@ void sideByMedianX(const std::vector<PhysicsBody>& bodies, std::vector<double>& 
 void buildContactGraph(const std::vector<Contact>& contacts, const int split[2], int staticBody,
                        ContactGraph& graph, std::vector<int>& scratch) {
     const int n = int(contacts.size());
-    // scratch: per body, one past the level of its last contact so far; per contact, its level;
-    // per level (at most one a contact), the contacts placed in it so far.
+    // scratch: per body, one past the level of its last contact so far; per contact, its level
+    // and (low bit) whether it bore load last step; per level (at most one a contact), the
+    // contacts placed in it so far.
     scratch.assign(size_t(staticBody) + 1 + 2 * size_t(n), 0);
     int* above = scratch.data();
     int* level = above + staticBody + 1;
@@ -31,7 +32,7 @@ void buildContactGraph(const std::vector<Contact>& contacts, const int split[2],
         for (; i < runEnd[run]; ++i) {
             const Contact& c = contacts[size_t(i)];
             const int k = std::max({floor, c.a == staticBody ? 0 : above[c.a], above[c.b]});
-            level[i] = k;
+            level[i] = k << 1 | (c.normalImpulse > 0.0 ? 1 : 0);
             above[c.a] = above[c.b] = k + 1;  // the static body's entry is never read
             levels = std::max(levels, k + 1);
         }
@@ -40,16 +41,17 @@ void buildContactGraph(const std::vector<Contact>& contacts, const int split[2],
     // Counting sort by level, keeping the solve order within each; each level padded to whole batches.
     std::vector<int>& begin = graph.levelBegin;
     begin.assign(size_t(levels) + 1, 0);
-    for (int i = 0; i < n; ++i) ++begin[size_t(level[i]) + 1];
+    for (int i = 0; i < n; ++i) ++begin[size_t(level[i] >> 1) + 1];
     for (int k = 0; k < levels; ++k) begin[size_t(k) + 1] = begin[size_t(k)] + (begin[size_t(k) + 1] + kLanes - 1) / kLanes;
     graph.slots.assign(size_t(begin.back()) * kLanes, -1);
     graph.slotOf.resize(size_t(n));
     // Within a level the order is free: contacts that bore load last step go first, so that the
     // open speculative ones fill batches of their own, whose friction rows the solver skips.
-    for (bool loaded : {true, false})
+    for (int loaded : {1, 0})
         for (int i = 0; i < n; ++i) {
-            if ((contacts[size_t(i)].normalImpulse > 0.0) != loaded) continue;
-            const int slot = begin[size_t(level[i])] * kLanes + placed[level[i]]++;
+            if ((level[i] & 1) != loaded) continue;
+            const int k = level[i] >> 1;
+            const int slot = begin[size_t(k)] * kLanes + placed[k]++;
             graph.slots[size_t(slot)] = i;
             graph.slotOf[size_t(i)] = slot;
         }
