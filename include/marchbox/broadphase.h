@@ -8,8 +8,9 @@
 // cursors that only move forward through it, so pairing is linear too: no per-cell searches.
 //
 // The grid runs with each extent grown by a skin, and its pairs are kept (a Verlet list): while no
-// sphere has moved and grown by more than its skin since, every pair that overlaps now is among
-// them, and a step only tests those. Any sphere past its skin rebuilds the list.
+// sphere has moved (beside the spheres' mean move) and grown by more than its skin since, every
+// pair that overlaps now is among them, and a step only tests those. Any sphere past its skin
+// rebuilds the list.
 #pragma once
 
 #include <cstdint>

@@ -37,7 +37,7 @@ void addPair(std::vector<std::pair<int, int>>& pairs, int i, int j) {
 }  // namespace
 
 // The skin, as a fraction of the extent: larger keeps the list longer, smaller tests fewer pairs.
-constexpr double kSkin = 0.3;
+constexpr double kSkin = 0.5;
 
 void Broadphase::findPairs(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents,
                            std::vector<std::pair<int, int>>& pairs) {
@@ -50,13 +50,18 @@ void Broadphase::findPairs(const std::vector<glm::dvec3>& centres, const std::ve
 }
 
 // A pair left out of the list was at least E_i + E_j apart (grown extents); it overlaps now only if
-// e_i + e_j + (how far each moved since) exceeds that. So the list holds every overlapping pair
-// while each sphere's extent plus its move stays within its grown extent; the factor keeps that
-// true through the rounding of the distance tests.
+// e_i + e_j + how far the two moved apart since exceeds that. Moved apart: |d_i − d_j|, at most
+// |d_i − o| + |d_j − o| for any common move o, here the mean (a pile falling together keeps its
+// pairs). So the list holds every overlapping pair while each sphere's extent plus its move
+// beside the mean stays within its grown extent; the factor keeps that true through the
+// rounding of the distance tests.
 bool Broadphase::listCovers(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents) const {
     if (listCentres_.size() != centres.size()) return false;
+    glm::dvec3 shift(0.0);
+    for (size_t i = 0; i < centres.size(); ++i) shift += centres[i] - listCentres_[i];
+    shift /= double(centres.size());
     for (size_t i = 0; i < centres.size(); ++i)
-        if (extents[i] + glm::length(centres[i] - listCentres_[i]) > (1.0 - 1e-9) * listExtents_[i]) return false;
+        if (extents[i] + glm::length(centres[i] - listCentres_[i] - shift) > (1.0 - 1e-9) * listExtents_[i]) return false;
     return true;
 }
 
