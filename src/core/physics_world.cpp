@@ -43,14 +43,17 @@ struct PhysicsWorld::Impl {
         std::uint64_t key;
         int index;             // in found
         int run;               // SolverContext::split: 0 or 1, one half; 2, both
-        int warm;              // last step's impulses in warm, or -1
+        int warm;              // last step's impulses in kept, or -1
         bool operator<(const Order& o) const { return height < o.height || (height == o.height && key < o.key); }
     };
-    struct Warm {  // a contact's impulses, kept for the next step
-        std::uint64_t key;
-        int rank;  // its place in the step's bottom-up order (Order)
+    struct Impulses {  // a contact's, kept for the next step's warm start
         double normal;
         dvec3 tangent, roll;
+    };
+    struct Warm {  // where last step's contact of this key is: 16 bytes, so the search stays in cache
+        std::uint64_t key;
+        int rank;  // its place in the step's bottom-up order (Order)
+        int slot;  // its impulses in kept
     };
 
     StaticCollider statics;
@@ -68,12 +71,13 @@ struct PhysicsWorld::Impl {
     std::vector<char> side;  // per body: the half it is in, by x
     int split[2] = {0, 0};
     std::unique_ptr<Worker> worker;  // started with the first step that splits
-    // Last step's impulses grouped by the contact's first dynamic body (the key's top bits):
-    // body i's are warm[warmBegin[i] .. warmBegin[i + 1]), a handful, searched linearly.
+    // Last step's contacts grouped by their first dynamic body (the key's top bits): body i's
+    // are warm[warmBegin[i] .. warmBegin[i + 1]), a handful, searched linearly.
     std::vector<Warm> warm;
+    std::vector<Impulses> kept;  // last step's impulses, in its solve order
     std::vector<int> warmBegin;
 
-    const Warm* findWarm(std::uint64_t key) const {  // last step's impulses, or null
+    const Warm* findWarm(std::uint64_t key) const {  // last step's contact, or null
         const auto first = size_t(key >> 40);
         if (first + 1 >= warmBegin.size()) return nullptr;
         for (int i = warmBegin[first]; i < warmBegin[first + 1]; ++i)
@@ -267,7 +271,7 @@ void PhysicsWorld::orderAndWarmStart() {
         Contact& c = w.contacts[size_t(to)] = makeContact(w.found[size_t(o.index)], bodies_, bodyCount(), settings_);
         w.rank[size_t(to)] = int(i);
         if (o.warm < 0) continue;
-        const Impl::Warm& old = w.warm[size_t(o.warm)];
+        const Impl::Impulses& old = w.kept[size_t(o.warm)];
         c.normalImpulse = old.normal;
         c.tangentImpulse = old.tangent;
         c.rollImpulse = old.roll;
@@ -294,7 +298,7 @@ void PhysicsWorld::sortBottomUp() {
             w.fresh.push_back(o);
             continue;
         }
-        o.warm = int(old - w.warm.data());
+        o.warm = old->slot;
         w.byRank[size_t(old->rank)] = o;
     }
     w.order.clear();
@@ -365,12 +369,13 @@ void PhysicsWorld::keepImpulses() {
     for (const Contact& c : w.contacts) ++w.warmBegin[size_t(contactKey(c.a, c.b, c.feature, n) >> 40) + 2];
     for (int i = 2; i <= n + 1; ++i) w.warmBegin[i] += w.warmBegin[i - 1];
     w.warm.resize(w.contacts.size());
+    w.kept.resize(w.contacts.size());
     // warmBegin[f + 1] is the next free slot of body f's group; once filled it is group f + 1's start.
     for (size_t i = 0; i < w.contacts.size(); ++i) {
         const Contact& c = w.contacts[i];
         const std::uint64_t key = contactKey(c.a, c.b, c.feature, n);
-        w.warm[size_t(w.warmBegin[size_t(key >> 40) + 1]++)] = {key, w.rank[i], c.normalImpulse, c.tangentImpulse,
-                                                               c.rollImpulse};
+        w.warm[size_t(w.warmBegin[size_t(key >> 40) + 1]++)] = {key, w.rank[i], int(i)};
+        w.kept[i] = {c.normalImpulse, c.tangentImpulse, c.rollImpulse};
     }
 }
 
