@@ -289,15 +289,22 @@ using PassLevels = void (*)(const Pass& pass, int begin, int end);  // levels [b
     }
 }
 
-[[gnu::target_clones("arch=x86-64-v4", "avx2", "default")]] void solveLevels(const Pass& pass, int begin, int end) {
+template <bool useBias>
+[[gnu::always_inline]] inline void solveBatches(const Pass& pass, int begin, int end) {
     for (int i = pass.levelBegin[begin]; i < pass.levelBegin[end]; ++i) {
         ContactBatch& c = pass.batches[i];
-        const LaneRows& w = pass.useBias ? c.solve : c.relax;
+        const LaneRows& w = useBias ? c.solve : c.relax;
         PairLanes s = gather(c);
-        if (!solveRows(c, s, pass.ctx, w, pass.useBias)) continue;
+        if (!solveRows(c, s, pass.ctx, w, useBias)) continue;
         scatter(c, w, s);
-        if (pass.useBias) markSupported(c);
+        if (useBias) markSupported(c);
     }
+}
+
+// The solve and relax passes compiled apart, each with what it does not use left out.
+[[gnu::target_clones("arch=x86-64-v4", "avx2", "default")]] void solveLevels(const Pass& pass, int begin, int end) {
+    if (pass.useBias) solveBatches<true>(pass, begin, end);
+    else solveBatches<false>(pass, begin, end);
 }
 
 // The levels of the first two runs share no body: with a worker, it takes the first run's while
