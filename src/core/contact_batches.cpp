@@ -26,7 +26,7 @@ struct PairLanes {
     Lanes3 deltaA, deltaB;
 };
 
-Lanes3 normalOf(const ContactBatch& c) { return {c.nx, c.ny, c.nz}; }
+[[gnu::always_inline]] inline Lanes3 normalOf(const ContactBatch& c) { return {c.nx, c.ny, c.nz}; }
 
 // A body's solver fields are nine doubles in a row (physics.h): vel, spin, delta. The four bodies
 // of a batch side are read as rows (vel and spin.x; spin.y and z; delta.x and y; delta.z) and
