@@ -274,10 +274,17 @@ struct Pass {
 };
 using PassLevels = void (*)(const Pass& pass, int begin, int end);  // levels [begin, end)
 
-// Each pass is compiled twice: for AVX2, where the CPU has it (one instruction for the four lanes,
-// chosen at load time), and for baseline x86-64. Without FMA every product rounds on its own, so
-// both give the same bytes.
-[[gnu::target_clones("arch=x86-64-v4", "avx2", "default")]] void warmStartLevels(const Pass& pass, int begin, int end) {
+// Each pass is compiled for AVX-512 and AVX2, where the CPU has them (one instruction for the
+// four lanes, chosen at load time), and for baseline x86-64. Without FMA every product rounds on
+// its own, so all give the same bytes. Clang (the fuzz build) rejects the clones' inlined lane
+// helpers as an ABI change, and other CPUs have other names: those build the baseline alone.
+#if defined(__x86_64__) && !defined(__clang__)
+#define MB_PASS_CLONES [[gnu::target_clones("arch=x86-64-v4", "avx2", "default")]]
+#else
+#define MB_PASS_CLONES
+#endif
+
+MB_PASS_CLONES void warmStartLevels(const Pass& pass, int begin, int end) {
     for (int i = pass.levelBegin[begin]; i < pass.levelBegin[end]; ++i) {
         ContactBatch& c = pass.batches[i];
         if (!anyImpulse(c)) continue;
@@ -302,7 +309,7 @@ template <bool useBias>
 }
 
 // The solve and relax passes compiled apart, each with what it does not use left out.
-[[gnu::target_clones("arch=x86-64-v4", "avx2", "default")]] void solveLevels(const Pass& pass, int begin, int end) {
+MB_PASS_CLONES void solveLevels(const Pass& pass, int begin, int end) {
     if (pass.useBias) solveBatches<true>(pass, begin, end);
     else solveBatches<false>(pass, begin, end);
 }
