@@ -44,9 +44,15 @@ void Broadphase::findPairs(const std::vector<glm::dvec3>& centres, const std::ve
     pairs.clear();
     if (centres.empty()) return;
     if (!listCovers(centres, extents)) buildList(centres, extents);
-    for (auto [i, j] : list_)
-        if (overlaps(centres[size_t(i)], extents[size_t(i)], centres[size_t(j)], extents[size_t(j)]))
-            pairs.emplace_back(i, j);
+    // Every listed pair is written and the count moves on where it overlaps: which do is
+    // anyone's guess, so a branch on it would be guessed wrong often.
+    pairs.resize(list_.size());
+    size_t kept = 0;
+    for (auto [i, j] : list_) {
+        pairs[kept] = {i, j};
+        kept += overlaps(centres[size_t(i)], extents[size_t(i)], centres[size_t(j)], extents[size_t(j)]) ? 1 : 0;
+    }
+    pairs.resize(kept);
 }
 
 // A pair left out of the list was at least E_i + E_j apart (grown extents); it overlaps now only if
@@ -136,16 +142,20 @@ int Broadphase::lowerBound(int from, std::int64_t x, std::int64_t y, std::int64_
     return int(it - cells_.begin());
 }
 
+// Branch-free, as in findPairs: every candidate is written, and kept where it overlaps.
 void Broadphase::pairRuns(int i0, int i1, int j0, int j1, bool self, Pairs& pairs) const {
+    size_t kept = pairs.size();
+    pairs.resize(kept + size_t(i1 - i0) * size_t(std::max(j1 - j0, 0)));
     for (int i = i0; i < i1; ++i) {
         const Sphere& a = spheres_[i];
         if (a.large) continue;
         for (int j = self ? i + 1 : j0; j < j1; ++j) {
             const Sphere& b = spheres_[j];
-            if (!b.large && overlaps(a.centre, a.extent, b.centre, b.extent))
-                addPair(pairs, cells_[i].body, cells_[j].body);
+            pairs[kept] = std::minmax(cells_[i].body, cells_[j].body);
+            kept += !b.large && overlaps(a.centre, a.extent, b.centre, b.extent) ? 1 : 0;
         }
     }
+    pairs.resize(kept);
 }
 
 // Cells are visited in increasing (x, y, z) order, and so, the order being translation

@@ -36,14 +36,19 @@ std::vector<int> levelsOf(const ContactGraph& g, int contacts) {
     return level;
 }
 
+ContactGraph graphOf(const std::vector<Contact>& contacts, const int split[2]) {
+    ContactGraph g;
+    std::vector<int> scratch;
+    buildContactGraph(contacts, split, kStatic, g, scratch);
+    return g;
+}
+
 }  // namespace
 
 TEST(ContactGraph, LevelsShareNoDynamicBodyAndKeepEachBodysOrder) {
     const std::vector<Contact> contacts = randomContacts(300);
     const int split[2] = {100, 180};  // the first two runs share bodies here: the graph must not care
-    ContactGraph g;
-    std::vector<int> scratch;
-    buildContactGraph(contacts, split, kStatic, g, scratch);
+    const ContactGraph g = graphOf(contacts, split);
     const std::vector<int> level = levelsOf(g, 300);
     for (int i = 0; i < 300; ++i) {
         ASSERT_GE(level[size_t(i)], 0) << "contact " << i << " has no slot";
@@ -69,15 +74,38 @@ TEST(ContactGraph, LevelsShareNoDynamicBodyAndKeepEachBodysOrder) {
 TEST(ContactGraph, EachRunKeepsToLevelsOfItsOwnInRunOrder) {
     const std::vector<Contact> contacts = randomContacts(300);
     const int split[2] = {100, 180};
-    ContactGraph g;
-    std::vector<int> scratch;
-    buildContactGraph(contacts, split, kStatic, g, scratch);
+    const ContactGraph g = graphOf(contacts, split);
     const std::vector<int> level = levelsOf(g, 300);
     const int runEnd[3] = {g.runEnd[0], g.runEnd[1], g.levels()};
     for (int i = 0; i < 300; ++i) {
         const int run = i < split[0] ? 0 : i < split[1] ? 1 : 2;
         EXPECT_LT(level[size_t(i)], runEnd[run]) << "contact " << i;
         EXPECT_GE(level[size_t(i)], run > 0 ? runEnd[run - 1] : 0) << "contact " << i;
+    }
+}
+
+// Within a level, the contacts that bore load come first and the open ones after, each group in
+// solve order, with only the level's last batch padded: batches of open contacts skip their rows.
+TEST(ContactGraph, LoadedContactsLeadEachLevel) {
+    const std::vector<Contact> contacts = randomContacts(300);
+    const int split[2] = {100, 180};
+    const ContactGraph g = graphOf(contacts, split);
+    for (int k = 0; k < g.levels(); ++k) {
+        int last[2] = {-1, -1};  // the last open and loaded contact seen in the level
+        bool openSeen = false, padSeen = false;
+        for (int s = g.levelBegin[size_t(k)] * kLanes; s < g.levelBegin[size_t(k) + 1] * kLanes; ++s) {
+            const int i = g.slots[size_t(s)];
+            if (i < 0) {
+                padSeen = true;
+                continue;
+            }
+            EXPECT_FALSE(padSeen) << "level " << k << ": a contact after padding";
+            const bool loaded = contacts[size_t(i)].normalImpulse > 0.0;
+            EXPECT_FALSE(loaded && openSeen) << "level " << k << ": loaded contact " << i << " after an open one";
+            openSeen = openSeen || !loaded;
+            EXPECT_GT(i, last[loaded]) << "level " << k << ": out of solve order";
+            last[loaded] = i;
+        }
     }
 }
 
@@ -110,9 +138,7 @@ TEST(ContactGraph, HalvesShareNoBody) {
     ASSERT_GT(across, 0) << "no contact crosses the cut: the test would not see one";
     ASSERT_GT(split[0], 0);
     ASSERT_GT(split[1], split[0]);
-    ContactGraph g;
-    std::vector<int> scratch;
-    buildContactGraph(byRun, split, kStatic, g, scratch);
+    const ContactGraph g = graphOf(byRun, split);
     std::set<int> touched[2];  // dynamic bodies in the worker's levels, and in this thread's
     for (int half = 0; half < 2; ++half)
         for (int k = half == 0 ? 0 : g.runEnd[0]; k < g.runEnd[half]; ++k)
