@@ -142,20 +142,22 @@ int Broadphase::lowerBound(int from, std::int64_t x, std::int64_t y, std::int64_
     return int(it - cells_.begin());
 }
 
-// Branch-free, as in findPairs: every candidate is written, and kept where it overlaps.
+// Branch-free, as in findPairs: every candidate is written, and kept where it overlaps. Room is
+// made one sphere at a time, so a crowded cell never asks for the square of its crowd.
 void Broadphase::pairRuns(int i0, int i1, int j0, int j1, bool self, Pairs& pairs) const {
-    size_t kept = pairs.size();
-    pairs.resize(kept + size_t(i1 - i0) * size_t(std::max(j1 - j0, 0)));
     for (int i = i0; i < i1; ++i) {
         const Sphere& a = spheres_[i];
-        if (a.large) continue;
-        for (int j = self ? i + 1 : j0; j < j1; ++j) {
+        const int first = self ? i + 1 : j0;
+        if (a.large || first >= j1) continue;
+        size_t kept = pairs.size();
+        pairs.resize(kept + size_t(j1 - first));
+        for (int j = first; j < j1; ++j) {
             const Sphere& b = spheres_[j];
             pairs[kept] = std::minmax(cells_[i].body, cells_[j].body);
             kept += !b.large && overlaps(a.centre, a.extent, b.centre, b.extent) ? 1 : 0;
         }
+        pairs.resize(kept);
     }
-    pairs.resize(kept);
 }
 
 // Cells are visited in increasing (x, y, z) order, and so, the order being translation
