@@ -109,10 +109,11 @@ double contactHeight(const Found& f, const std::vector<PhysicsBody>& bodies) {
     return b.pos.y - b.radius * f.normal.y;  // the contact point, on b's surface
 }
 
-// The contact's arms, lever of rolling resistance and slop, from its bodies (a may be static).
-Contact makeContact(const Found& f, const std::vector<PhysicsBody>& bodies, int staticBody,
-                    const PhysicsSettings& settings) {
-    Contact c;
+// The contact's arms, lever of rolling resistance and slop, from its bodies (a may be static); the
+// rest as a new Contact has them. Written in place, as sortBottomUp writes its Orders.
+void makeContact(Contact& c, const Found& f, const std::vector<PhysicsBody>& bodies, int staticBody,
+                 const PhysicsSettings& settings) {
+    c = Contact{};
     c.a = f.a;
     c.b = f.b;
     c.feature = f.feature;
@@ -123,7 +124,6 @@ Contact makeContact(const Found& f, const std::vector<PhysicsBody>& bodies, int 
     c.armA = f.a == staticBody ? 0.0 : bodies[size_t(f.a)].radius;
     c.rollRadius = f.a == staticBody ? c.armB : std::min(c.armA, c.armB);
     c.slop = slopFor(c.rollRadius, settings);
-    return c;
 }
 
 // The bits of a double as an unsigned integer in the double's order (negatives reversed below
@@ -268,7 +268,8 @@ void PhysicsWorld::orderAndWarmStart() {
     for (size_t i = 0; i < w.order.size(); ++i) {
         const Impl::Order& o = w.order[i];
         const int to = next[o.run]++;
-        Contact& c = w.contacts[size_t(to)] = makeContact(w.found[size_t(o.index)], bodies_, bodyCount(), settings_);
+        Contact& c = w.contacts[size_t(to)];
+        makeContact(c, w.found[size_t(o.index)], bodies_, bodyCount(), settings_);
         w.rank[size_t(to)] = int(i);
         if (o.warm < 0) continue;
         const Impl::Impulses& old = w.kept[size_t(o.warm)];
@@ -292,14 +293,16 @@ void PhysicsWorld::sortBottomUp() {
     w.fresh.clear();
     for (size_t i = 0; i < w.found.size(); ++i) {
         const Found& f = w.found[i];
-        Impl::Order o{orderedBits(contactHeight(f, bodies_)), contactKey(f.a, f.b, f.feature, staticBody), int(i), 2, -1};
-        const Impl::Warm* old = w.findWarm(o.key);
-        if (!old) {
-            w.fresh.push_back(o);
-            continue;
-        }
-        o.warm = old->slot;
-        w.byRank[size_t(old->rank)] = o;
+        const std::uint64_t key = contactKey(f.a, f.b, f.feature, staticBody);
+        const Impl::Warm* old = w.findWarm(key);
+        // Field by field into its place: a whole Order built aside and copied would be read back
+        // in halves that straddle the writes just made, and wait for them to reach the cache.
+        Impl::Order& o = old ? w.byRank[size_t(old->rank)] : w.fresh.emplace_back();
+        o.height = orderedBits(contactHeight(f, bodies_));
+        o.key = key;
+        o.index = int(i);
+        o.run = 2;
+        o.warm = old ? old->slot : -1;
     }
     w.order.clear();
     for (const Impl::Order& o : w.byRank)
