@@ -237,8 +237,12 @@ void loadLane(ContactBatch& to, int l, const Contact& c, std::vector<PhysicsBody
     to.curve[l] = 0.0, to.rollRadius[l] = c.rollRadius;  // curve: 0 until setCurve
     const InverseMasses solve = inverseMasses(c, bodies, false);
     setRows(to.solve, l, c.mass, solve);
-    const InverseMasses relax = c.shock ? inverseMasses(c, bodies, true) : solve;  // else the same rows
-    setRows(to.relax, l, c.shock ? rowMasses(c, relax) : c.mass, relax);
+    if (!c.shock) {
+        setRows(to.relax, l, c.mass, solve);  // the same rows
+    } else {
+        const InverseMasses relax = inverseMasses(c, bodies, true);
+        setRows(to.relax, l, rowMasses(c, relax), relax);
+    }
     to.normalImpulse[l] = c.normalImpulse, to.maxNormalImpulse[l] = c.maxNormalImpulse;
     to.tx[l] = c.tangentImpulse.x, to.ty[l] = c.tangentImpulse.y, to.tz[l] = c.tangentImpulse.z;
     to.rx[l] = c.rollImpulse.x, to.ry[l] = c.rollImpulse.y, to.rz[l] = c.rollImpulse.z;
