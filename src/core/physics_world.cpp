@@ -304,15 +304,15 @@ void PhysicsWorld::sortBottomUp() {
         o.run = 2;
         o.warm = old ? old->slot : -1;
     }
-    w.order.clear();
-    for (const Impl::Order& o : w.byRank)
-        if (o.index >= 0) w.order.push_back(o);
-    for (size_t i = 1; i < w.order.size(); ++i) {
-        const Impl::Order o = w.order[i];
-        size_t j = i;
+    w.order.resize(w.byRank.size());
+    size_t placed = 0;
+    for (const Impl::Order& o : w.byRank) {  // in last step's order, each put in place as it comes
+        if (o.index < 0) continue;
+        size_t j = placed++;
         for (; j > 0 && o < w.order[j - 1]; --j) w.order[j] = w.order[j - 1];
         w.order[j] = o;
     }
+    w.order.resize(placed);
     std::sort(w.fresh.begin(), w.fresh.end());
     w.merged.resize(w.found.size());
     std::merge(w.order.begin(), w.order.end(), w.fresh.begin(), w.fresh.end(), w.merged.begin());
