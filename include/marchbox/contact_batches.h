@@ -1,6 +1,6 @@
 // marchbox/contact_batches.h — the contact solver's rows, four contacts at a time.
 //
-// The solver's state lives here from prepareContacts() to the end of the substeps, structure of
+// The solver's state lives here from load() to the end of the substeps, structure of
 // arrays: a batch holds kLanes contacts of one level (marchbox/contact_graph.h), each field a row
 // of kLanes doubles, so that one pass reads each contact's ~200 bytes once, in memory order, and
 // computes its rows with SIMD instructions. The lanes compute what the rows of one contact
@@ -44,7 +44,8 @@ class Worker;
 
 class ContactBatches {
 public:
-    // Levels and batches for ctx.contacts, prepared (prepareContacts) and in their solve order.
+    // Levels and batches for ctx.contacts, in their solve order, each contact prepared for this
+    // step on the way (prepareContact).
     void load(const SolverContext& ctx);
     void warmStart(SolverContext& ctx);
     // The solve pass (useBias) also sets PhysicsBody::supported: pushed by a contact after it.

@@ -79,11 +79,15 @@ struct SolverContext {
 // resting contacts meet at the speed gravity gives them in a step; 0 without gravity.
 double bounceThreshold(const SolverContext& ctx);
 
-// Row masses, the approach speed and shock propagation of each contact, for this step. The
-// contacts must be sorted bottom-up for shock propagation (see the .cpp).
-void prepareContacts(SolverContext& ctx);
-InverseMasses inverseMasses(const Contact& c, const std::vector<PhysicsBody>& bodies, bool relax);
-RowMasses rowMasses(const Contact& c, const InverseMasses& w);  // the row masses with these
+// What a contact's rows apply this step: the inverse masses of the solve pass, and of the relax
+// pass with its row masses (other than the solve pass's under shock propagation).
+struct PreparedRows {
+    InverseMasses solve, relax;
+    RowMasses relaxMass;
+};
+// Row masses, the approach speed and shock propagation of one contact, for this step, from its
+// bodies. The contacts must be sorted bottom-up for shock propagation (see the .cpp).
+PreparedRows prepareContact(Contact& c, const SolverContext& ctx);
 void applyRestitution(SolverContext& ctx, int iterations, std::vector<int>& bouncing);  // bouncing: scratch
 double contactSeparation(const Contact& c, const std::vector<PhysicsBody>& bodies);  // now
 

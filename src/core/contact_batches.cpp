@@ -230,19 +230,14 @@ void setRows(LaneRows& to, int l, const RowMasses& m, const InverseMasses& w) {
     to.massA[l] = w.massA, to.inertiaA[l] = w.inertiaA, to.massB[l] = w.massB, to.inertiaB[l] = w.inertiaB;
 }
 
-void loadLane(ContactBatch& to, int l, const Contact& c, std::vector<PhysicsBody>& bodies) {
-    to.a[l] = &bodies[size_t(c.a)], to.b[l] = &bodies[size_t(c.b)];
+void loadLane(ContactBatch& to, int l, Contact& c, const SolverContext& ctx) {
+    const PreparedRows rows = prepareContact(c, ctx);
+    to.a[l] = &ctx.bodies[size_t(c.a)], to.b[l] = &ctx.bodies[size_t(c.b)];
     to.nx[l] = c.normal.x, to.ny[l] = c.normal.y, to.nz[l] = c.normal.z;
     to.separation[l] = c.separation, to.armA[l] = c.armA, to.armB[l] = c.armB, to.slop[l] = c.slop;
     to.curve[l] = 0.0, to.rollRadius[l] = c.rollRadius;  // curve: 0 until setCurve
-    const InverseMasses solve = inverseMasses(c, bodies, false);
-    setRows(to.solve, l, c.mass, solve);
-    if (!c.shock) {
-        setRows(to.relax, l, c.mass, solve);  // the same rows
-    } else {
-        const InverseMasses relax = inverseMasses(c, bodies, true);
-        setRows(to.relax, l, rowMasses(c, relax), relax);
-    }
+    setRows(to.solve, l, c.mass, rows.solve);
+    setRows(to.relax, l, rows.relaxMass, rows.relax);
     to.normalImpulse[l] = c.normalImpulse, to.maxNormalImpulse[l] = c.maxNormalImpulse;
     to.tx[l] = c.tangentImpulse.x, to.ty[l] = c.tangentImpulse.y, to.tz[l] = c.tangentImpulse.z;
     to.rx[l] = c.rollImpulse.x, to.ry[l] = c.rollImpulse.y, to.rz[l] = c.rollImpulse.z;
@@ -261,7 +256,7 @@ void ContactBatches::load(const SolverContext& ctx) {
         c.count = 0;
         for (int l = 0; l < kLanes; ++l) {
             const int i = graph_.slots[size_t(k * kLanes + l)];
-            loadLane(c, l, i < 0 ? padding : ctx.contacts[size_t(i)], ctx.bodies);
+            loadLane(c, l, i < 0 ? padding : ctx.contacts[size_t(i)], ctx);
             c.count += i < 0 ? 0 : 1;
         }
     }

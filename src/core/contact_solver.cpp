@@ -15,6 +15,12 @@ InverseMasses inverseOf(const PhysicsBody& a, const PhysicsBody& b) {
     return {a.invMass, a.invInertia, b.invMass, b.invInertia};
 }
 
+RowMasses rowMasses(const Contact& c, const InverseMasses& w) {
+    const double kn = w.massA + w.massB;
+    return {inverseOrZero(kn), inverseOrZero(kn + w.inertiaA * c.armA * c.armA + w.inertiaB * c.armB * c.armB),
+            inverseOrZero(w.inertiaA + w.inertiaB)};
+}
+
 // Shock propagation (Guendelman et al. 2003) in the relax pass. A light sphere under a heavy one
 // moves the heavy one by only m_light/m_heavy of what it needs per Gauss-Seidel pass, so a 1:1e4
 // stack would take 1e4 passes to hold. Contacts are solved bottom-up; for a resting contact
@@ -33,12 +39,6 @@ InverseMasses fixingLower(const Contact& c, const PhysicsBody& a, const PhysicsB
 
 }  // namespace
 
-RowMasses rowMasses(const Contact& c, const InverseMasses& w) {
-    const double kn = w.massA + w.massB;
-    return {inverseOrZero(kn), inverseOrZero(kn + w.inertiaA * c.armA * c.armA + w.inertiaB * c.armB * c.armB),
-            inverseOrZero(w.inertiaA + w.inertiaB)};
-}
-
 double bounceThreshold(const SolverContext& ctx) {
     return ctx.gravity > 0.0 ? ctx.settings.restitutionThreshold : 0.0;
 }
@@ -56,20 +56,17 @@ double contactSeparation(const Contact& c, const std::vector<PhysicsBody>& bodie
     return c.separation + glm::dot(bodies[c.b].delta - bodies[c.a].delta, c.normal);
 }
 
-void prepareContacts(SolverContext& ctx) {
-    for (Contact& c : ctx.contacts) {
-        const PhysicsBody& a = ctx.bodies[c.a];
-        const PhysicsBody& b = ctx.bodies[c.b];
-        c.mass = rowMasses(c, inverseOf(a, b));
-        c.relativeVelocity = glm::dot(b.vel - a.vel, c.normal);
-        c.maxNormalImpulse = 0.0;
-        c.shock = shockPropagates(c, ctx);
-    }
-}
-
-InverseMasses inverseMasses(const Contact& c, const std::vector<PhysicsBody>& bodies, bool relax) {
-    const PhysicsBody &a = bodies[size_t(c.a)], &b = bodies[size_t(c.b)];
-    return relax && c.shock ? fixingLower(c, a, b) : inverseOf(a, b);
+PreparedRows prepareContact(Contact& c, const SolverContext& ctx) {
+    const PhysicsBody& a = ctx.bodies[size_t(c.a)];
+    const PhysicsBody& b = ctx.bodies[size_t(c.b)];
+    const InverseMasses own = inverseOf(a, b);
+    c.mass = rowMasses(c, own);
+    c.relativeVelocity = glm::dot(b.vel - a.vel, c.normal);
+    c.maxNormalImpulse = 0.0;
+    c.shock = shockPropagates(c, ctx);
+    if (!c.shock) return {own, own, c.mass};
+    const InverseMasses fixed = fixingLower(c, a, b);
+    return {own, fixed, rowMasses(c, fixed)};
 }
 
 // Box2D's restitution pass, `iterations` times: only contacts that touched this step and met at

@@ -200,7 +200,6 @@ void PhysicsWorld::step() {
         ctx.worker = w.worker.get();
     }
     if (settings_.impacts) w.impacts.resolve(ctx);
-    prepareContacts(ctx);
     w.batches.load(ctx);
     for (PhysicsBody& b : bodies_) b.delta = dvec3(0.0);
     for (int k = 0; k < substeps; ++k) {
