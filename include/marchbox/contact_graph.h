@@ -37,8 +37,9 @@ struct ContactGraph {
 // the median x are side 0, the rest side 1. The cut depends on the bodies alone, never on the
 // thread count. `xs` is scratch.
 void sideByMedianX(const std::vector<PhysicsBody>& bodies, std::vector<double>& xs, std::vector<char>& side);
-// A contact of bodies a and b within one side (or between one side and the static body) goes to that side's run;
-// one across the cut to the joining run, 2, solved after both: no body is in both halves.
+// A contact of bodies a and b within one side (or between one side and the static body) goes to
+// that side's run; one across the cut to the joining run, 2, solved after both: no body is in
+// both halves.
 inline int runOf(int a, int b, const std::vector<char>& side, int staticBody) {
     const int sb = side[size_t(b)];
     return a == staticBody || side[size_t(a)] == sb ? sb : 2;
