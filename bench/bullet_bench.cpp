@@ -13,9 +13,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace {
@@ -284,7 +286,18 @@ void pileRows(float radius, const std::vector<int>& counts) {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+    // `bullet_bench pile COUNT [RADIUS]`: the pile alone, Marchbox then Bullet, one run each, for
+    // timing them side by side (run it a few times and take the medians).
+    if (argc > 2 && std::string(argv[1]) == "pile") {
+        const int count = std::atoi(argv[2]);
+        const float radius = argc > 3 ? float(std::atof(argv[3])) : 0.2f;
+        const double marchbox = pile<MarchboxEngine>(count, radius, 1.5).msPerStep;
+        const double bullet = pile<BulletEngine>(count, radius, 1.5).msPerStep;
+        std::printf("pile of %d, r = %.2f: Marchbox %.3f ms/step, Bullet %.3f ms/step, ratio %.3f\n", count,
+                    double(radius), marchbox, bullet, marchbox / bullet);
+        return 0;
+    }
     std::printf("Bullet %d (btDiscreteDynamicsWorld, sequential impulse, 10 iterations, no deactivation) against "
                 "Marchbox defaults (one thread), both at dt = 1/120 s. Overlap sampled every 10 steps.\n\n",
                 btGetVersion());

@@ -6,6 +6,11 @@
 // block of cells their reach covers, and each other by sweep and prune along x. The cell list
 // stays sorted between steps, so re-sorting is near linear, and neighbour cells are found by
 // cursors that only move forward through it, so pairing is linear too: no per-cell searches.
+//
+// The grid runs with each extent grown by a skin, and its pairs are kept (a Verlet list): while no
+// sphere has moved (beside the spheres' mean move) and grown by more than its skin since, every
+// pair that overlaps now is among them, and a step only tests those. Any sphere past its skin
+// rebuilds the list.
 #pragma once
 
 #include <cstdint>
@@ -22,6 +27,9 @@ public:
                    std::vector<std::pair<int, int>>& pairs);
 
 private:
+    bool listCovers(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents) const;
+    void buildList(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents);
+
     struct Entry {
         std::int64_t x, y, z;  // cell
         int body;
@@ -47,6 +55,9 @@ private:
     std::vector<int> large_;    // entries of bodies too big for the grid, by the low end of their reach in x
     std::vector<double> scratch_;
     double cell_ = 1.0;         // edge of a grid cell, this step
+    std::vector<std::pair<int, int>> list_;  // pairs of the grown spheres, when the list was built
+    std::vector<glm::dvec3> listCentres_;    // centres then
+    std::vector<double> listExtents_;        // grown extents then
 };
 
 }  // namespace mb

@@ -1,6 +1,6 @@
 // marchbox/contact_batches.h — the contact solver's rows, four contacts at a time.
 //
-// The solver's state lives here from prepareContacts() to the end of the substeps, structure of
+// The solver's state lives here from load() to the end of the substeps, structure of
 // arrays: a batch holds kLanes contacts of one level (marchbox/contact_graph.h), each field a row
 // of kLanes doubles, so that one pass reads each contact's ~200 bytes once, in memory order, and
 // computes its rows with SIMD instructions. The lanes compute what the rows of one contact
@@ -17,8 +17,11 @@
 
 namespace mb {
 
-// kLanes doubles side by side (GCC's vector extension: two SSE2 registers on baseline x86-64).
-using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
+// kLanes doubles side by side (GCC's vector extension): one AVX register where the CPU has AVX2 or
+// AVX-512, two SSE2 registers on baseline x86-64 (contact_batches.cpp compiles its passes for
+// each). Aligned to its size even where the baseline would align it less: the AVX code loads it
+// whole.
+using Lanes = double __attribute__((vector_size(kLanes * sizeof(double)), aligned(kLanes * sizeof(double))));
 
 // A row set: effective masses (RowMasses) and the inverse masses the impulses are applied with.
 struct LaneRows {
@@ -27,7 +30,8 @@ struct LaneRows {
 };
 
 struct ContactBatch {
-    int a[kLanes], b[kLanes];            // bodies; a padding lane has the static body for both
+    PhysicsBody* a[kLanes];              // bodies (in SolverContext::bodies); a padding lane has
+    PhysicsBody* b[kLanes];              // the static body for both
     int count = 0;                       // lanes in use
     Lanes nx, ny, nz;                    // normal
     Lanes separation, armA, armB, slop, curve, rollRadius;
@@ -40,7 +44,8 @@ class Worker;
 
 class ContactBatches {
 public:
-    // Levels and batches for ctx.contacts, prepared (prepareContacts) and in their solve order.
+    // Levels and batches for ctx.contacts, in their solve order, each contact prepared for this
+    // step on the way (prepareContact).
     void load(const SolverContext& ctx);
     void warmStart(SolverContext& ctx);
     // The solve pass (useBias) also sets PhysicsBody::supported: pushed by a contact after it.
@@ -54,10 +59,6 @@ public:
     int levels() const { return graph_.levels(); }
 
 private:
-    template <class Kernel>
-    void byLevels(Worker* worker, const Kernel& kernel);
-    template <class Kernel>
-    void levels(int begin, int end, const Kernel& kernel);  // levels [begin, end)
     ContactBatch& batchOf(int contact, int& lane);
 
     ContactGraph graph_;

@@ -19,7 +19,7 @@
 
 namespace mb {
 
-constexpr int kLanes = 2;  // contacts per batch: an SSE2 register of doubles per field
+constexpr int kLanes = 4;  // contacts per batch: an AVX register of doubles per field
 
 struct ContactGraph {
     // Contacts (indices into the solve order) batch by batch, kLanes to a batch; -1 pads a batch.
@@ -32,6 +32,18 @@ struct ContactGraph {
     int batches() const { return int(slots.size()) / kLanes; }
     int levels() const { return int(levelBegin.size()) - 1; }
 };
+
+// The halves two threads may solve at once (SolverContext::split): the dynamic bodies left of
+// the median x are side 0, the rest side 1. The cut depends on the bodies alone, never on the
+// thread count. `xs` is scratch.
+void sideByMedianX(const std::vector<PhysicsBody>& bodies, std::vector<double>& xs, std::vector<char>& side);
+// A contact of bodies a and b within one side (or between one side and the static body) goes to
+// that side's run; one across the cut to the joining run, 2, solved after both: no body is in
+// both halves.
+inline int runOf(int a, int b, const std::vector<char>& side, int staticBody) {
+    const int sb = side[size_t(b)];
+    return a == staticBody || side[size_t(a)] == sb ? sb : 2;
+}
 
 // Levels for `contacts` in their solve order, in the runs split[] gives (SolverContext::split);
 // `staticBody` is the index of the static body. `scratch` is kept by the caller so that a step

@@ -25,15 +25,14 @@ struct RowMasses {
 struct Contact {
     int a = 0, b = 0;                    // bodies; a is the static body for a static surface
     int feature = -1;                    // StaticHit::feature, or -1 between two spheres
+    bool shock = false;                  // the relax pass holds the lower body fixed
+    bool curved = false;                 // a static surface that curves: followed every substep
     glm::dvec3 normal{0, 1, 0};          // from a to b
     double separation = 0.0;             // at the start of the step; < 0 overlaps
     double armA = 0.0, armB = 0.0;       // centre to contact point, along ±normal
     double slop = 0.0;                   // overlap left alone, m
     RowMasses mass;
-    RowMasses shockMass;                 // with the lower body held fixed (shock propagation)
-    bool shock = false;                  // the relax pass holds the lower body fixed
     double rollRadius = 0.0;             // lever of rolling resistance
-    bool curved = false;                 // a static surface that curves: followed every substep
     double shift = 0.0;                  // added to separation for the impacts (impacts.h), m
     double relativeVelocity = 0.0;       // normal velocity at the start of the step, for bounce
     double normalImpulse = 0.0;          // accumulated per substep, warm started across steps
@@ -80,11 +79,16 @@ struct SolverContext {
 // resting contacts meet at the speed gravity gives them in a step; 0 without gravity.
 double bounceThreshold(const SolverContext& ctx);
 
-// Row masses, the approach speed and shock propagation of each contact, for this step. The
-// contacts must be sorted bottom-up for shock propagation (see the .cpp).
-void prepareContacts(SolverContext& ctx);
-InverseMasses inverseMasses(const Contact& c, const std::vector<PhysicsBody>& bodies, bool relax);
-void applyRestitution(SolverContext& ctx);
+// What a contact's rows apply this step: the inverse masses of the solve pass, and of the relax
+// pass with its row masses (other than the solve pass's under shock propagation).
+struct PreparedRows {
+    InverseMasses solve, relax;
+    RowMasses relaxMass;
+};
+// Row masses, the approach speed and shock propagation of one contact, for this step, from its
+// bodies. The contacts must be sorted bottom-up for shock propagation (see the .cpp).
+PreparedRows prepareContact(Contact& c, const SolverContext& ctx);
+void applyRestitution(SolverContext& ctx, int iterations, std::vector<int>& bouncing);  // bouncing: scratch
 double contactSeparation(const Contact& c, const std::vector<PhysicsBody>& bodies);  // now
 
 }  // namespace mb

@@ -114,6 +114,7 @@ private:
     void collide();                  // this step's contacts, warm started from the last step
     void collideStatic(int body);
     void orderAndWarmStart();        // bottom-up solve order; impulses of persisting contacts
+    void sortBottomUp();             // ... the order, without the runs of splitInHalves
     void splitInHalves();            // which contacts two threads may solve at once
     void keepImpulses();             // for the next step's warm start
     void integrateVelocities(double h);

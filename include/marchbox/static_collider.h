@@ -30,8 +30,9 @@ class StaticCollider {
 public:
     explicit StaticCollider(const Scene& scene);  // the non-dynamic objects and the ground
 
-    // Every surface within `reach` of the sphere's surface.
-    void query(const glm::dvec3& centre, double radius, double reach, std::vector<StaticHit>& out);
+    // Every surface within `reach` of the sphere's surface. `body` names the sphere from one call
+    // to the next: how far its groups were when last measured spares most calls measuring again.
+    void query(int body, const glm::dvec3& centre, double radius, double reach, std::vector<StaticHit>& out);
 
     // One surface (StaticHit::feature, not the ground) seen from a sphere at `centre`.
     StaticHit hit(int feature, const glm::dvec3& centre, double radius);
@@ -62,6 +63,7 @@ private:
         double less;           // the distance's shortfall: the sphere's radius, or rounding
         double grow;           // what a smooth union adds, k/4
         bool box;
+        bool rotated;          // toLocal is not the identity (an upright box needs no product)
     };
     static Bound boundOf(const SdfObject& o);
     double lowerBound(const Group& g, const glm::dvec3& p) const;  // <= distance to the group
@@ -73,6 +75,11 @@ private:
     // The group localised at the centre, `d` its localDistance().
     StaticHit localHit(int group, double radius, double d) const;
 
+    struct Clearance {         // a lower bound on every group's distance from `at`
+        glm::dvec3 at{0.0};
+        double distance = -1.0;  // none yet
+    };
+    std::vector<Clearance> clearance_;  // per body given to query()
     std::vector<SdfObject> statics_;
     std::vector<Bound> bounds_;  // per static object
     std::vector<Group> groups_;

@@ -36,13 +36,49 @@ void addPair(std::vector<std::pair<int, int>>& pairs, int i, int j) {
 
 }  // namespace
 
+// The skin, as a fraction of the extent: larger keeps the list longer, smaller tests fewer pairs.
+constexpr double kSkin = 0.5;
+
 void Broadphase::findPairs(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents,
                            std::vector<std::pair<int, int>>& pairs) {
     pairs.clear();
     if (centres.empty()) return;
-    buildCells(centres, extents);
-    pairCells(pairs);
-    pairLarge(pairs);
+    if (!listCovers(centres, extents)) buildList(centres, extents);
+    // Every listed pair is written and the count moves on where it overlaps: which do is
+    // anyone's guess, so a branch on it would be guessed wrong often.
+    pairs.resize(list_.size());
+    size_t kept = 0;
+    for (auto [i, j] : list_) {
+        pairs[kept] = {i, j};
+        kept += overlaps(centres[size_t(i)], extents[size_t(i)], centres[size_t(j)], extents[size_t(j)]) ? 1 : 0;
+    }
+    pairs.resize(kept);
+}
+
+// A pair left out of the list was at least E_i + E_j apart (grown extents); it overlaps now only if
+// e_i + e_j + how far the two moved apart since exceeds that. Moved apart: |d_i − d_j|, at most
+// |d_i − o| + |d_j − o| for any common move o, here the mean (a pile falling together keeps its
+// pairs). So the list holds every overlapping pair while each sphere's extent plus its move
+// beside the mean stays within its grown extent; the factor keeps that true through the
+// rounding of the distance tests.
+bool Broadphase::listCovers(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents) const {
+    if (listCentres_.size() != centres.size()) return false;
+    glm::dvec3 shift(0.0);
+    for (size_t i = 0; i < centres.size(); ++i) shift += centres[i] - listCentres_[i];
+    shift /= double(centres.size());
+    for (size_t i = 0; i < centres.size(); ++i)
+        if (extents[i] + glm::length(centres[i] - listCentres_[i] - shift) > (1.0 - 1e-9) * listExtents_[i]) return false;
+    return true;
+}
+
+void Broadphase::buildList(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents) {
+    listCentres_ = centres;
+    listExtents_.resize(extents.size());
+    for (size_t i = 0; i < extents.size(); ++i) listExtents_[i] = (1.0 + kSkin) * extents[i];
+    list_.clear();
+    buildCells(centres, listExtents_);
+    pairCells(list_);
+    pairLarge(list_);
 }
 
 void Broadphase::buildCells(const std::vector<glm::dvec3>& centres,
@@ -106,15 +142,21 @@ int Broadphase::lowerBound(int from, std::int64_t x, std::int64_t y, std::int64_
     return int(it - cells_.begin());
 }
 
+// Branch-free, as in findPairs: every candidate is written, and kept where it overlaps. Room is
+// made one sphere at a time, so a crowded cell never asks for the square of its crowd.
 void Broadphase::pairRuns(int i0, int i1, int j0, int j1, bool self, Pairs& pairs) const {
     for (int i = i0; i < i1; ++i) {
         const Sphere& a = spheres_[i];
-        if (a.large) continue;
-        for (int j = self ? i + 1 : j0; j < j1; ++j) {
+        const int first = self ? i + 1 : j0;
+        if (a.large || first >= j1) continue;
+        size_t kept = pairs.size();
+        pairs.resize(kept + size_t(j1 - first));
+        for (int j = first; j < j1; ++j) {
             const Sphere& b = spheres_[j];
-            if (!b.large && overlaps(a.centre, a.extent, b.centre, b.extent))
-                addPair(pairs, cells_[i].body, cells_[j].body);
+            pairs[kept] = std::minmax(cells_[i].body, cells_[j].body);
+            kept += !b.large && overlaps(a.centre, a.extent, b.centre, b.extent) ? 1 : 0;
         }
+        pairs.resize(kept);
     }
 }
 

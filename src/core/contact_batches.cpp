@@ -26,54 +26,92 @@ struct PairLanes {
     Lanes3 deltaA, deltaB;
 };
 
-Lanes3 normalOf(const ContactBatch& c) { return {c.nx, c.ny, c.nz}; }
+[[gnu::always_inline]] inline Lanes3 normalOf(const ContactBatch& c) { return {c.nx, c.ny, c.nz}; }
 
-// A body's solver fields are nine doubles in a row (physics.h): vel, spin, delta. Two bodies'
-// fields go into two lanes as pairs: load a pair from each, then take the low halves together and
-// the high halves together (unpcklpd, unpckhpd). The fifth pair reads a tenth double, invMass,
-// and drops it: it must be a double, inside the struct.
-static_assert(kLanes == 2, "gather and scatter transpose pairs of bodies");
-static_assert(offsetof(PhysicsBody, spin) == 3 * sizeof(double) && offsetof(PhysicsBody, delta) == 6 * sizeof(double) &&
-                  offsetof(PhysicsBody, invMass) == 9 * sizeof(double),
-              "the solver's fields come first in PhysicsBody, in a row, and a double follows them");
+// A body's solver fields are nine doubles in a row (physics.h): vel, spin, delta. The four bodies
+// of a batch side are read as rows (vel and spin.x; spin.y and z; delta.x and y; delta.z) and
+// transposed into lanes; vel and spin go back the same way, row by row, so that the next level's
+// reads of the same rows come straight from these writes (a read that straddled two writes would
+// wait for both to reach the cache).
+static_assert(kLanes == 4, "gather and scatter transpose four bodies' rows");
+static_assert(offsetof(PhysicsBody, spin) == 3 * sizeof(double) && offsetof(PhysicsBody, delta) == 6 * sizeof(double),
+              "the solver's fields come first in PhysicsBody, in a row");
 
-Lanes pairAt(const PhysicsBody& body, int k) {  // fields 2k and 2k + 1
-    Lanes r;
-    std::memcpy(&r, reinterpret_cast<const char*>(&body.vel) + k * sizeof r, sizeof r);
+using Pair = double __attribute__((vector_size(2 * sizeof(double))));
+
+template <class Row>
+[[gnu::always_inline]] inline Row rowAt(const PhysicsBody& body, int field) {
+    Row r;
+    std::memcpy(&r, reinterpret_cast<const char*>(&body.vel) + field * sizeof(double), sizeof r);
     return r;
 }
-Lanes lows(Lanes p, Lanes q) { return __builtin_shuffle(p, q, LaneMask{0, 2}); }
-Lanes highs(Lanes p, Lanes q) { return __builtin_shuffle(p, q, LaneMask{1, 3}); }
 
-[[gnu::always_inline]] inline void gatherBodies(const PhysicsBody& p, const PhysicsBody& q, BodyLanes& to, Lanes3& delta) {
-    Lanes pairs[2][5];
-    for (int k = 0; k < 5; ++k) pairs[0][k] = pairAt(p, k), pairs[1][k] = pairAt(q, k);
-    auto lo = [&](int k) { return lows(pairs[0][k], pairs[1][k]); };
-    auto hi = [&](int k) { return highs(pairs[0][k], pairs[1][k]); };
-    to.vel = {lo(0), hi(0), lo(1)};
-    to.spin = {hi(1), lo(2), hi(2)};
-    delta = {lo(3), hi(3), lo(4)};
+template <class Row>
+[[gnu::always_inline]] inline void storeRow(PhysicsBody& body, int field, const Row& r) {
+    std::memcpy(reinterpret_cast<char*>(&body.vel) + field * sizeof(double), &r, sizeof r);
 }
 
-[[gnu::always_inline]] inline PairLanes gather(const ContactBatch& c, const std::vector<PhysicsBody>& bodies) {
+// Four rows of four become four lanes of four, and back: c[k][l] = r[l][k].
+[[gnu::always_inline]] inline void transpose(const Lanes (&r)[4], Lanes (&c)[4]) {
+    const Lanes t0 = __builtin_shufflevector(r[0], r[1], 0, 4, 2, 6), t1 = __builtin_shufflevector(r[0], r[1], 1, 5, 3, 7);
+    const Lanes t2 = __builtin_shufflevector(r[2], r[3], 0, 4, 2, 6), t3 = __builtin_shufflevector(r[2], r[3], 1, 5, 3, 7);
+    c[0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5), c[1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+    c[2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7), c[3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+}
+
+// Four pairs become two lanes of four.
+[[gnu::always_inline]] inline void transpose(const Pair (&p)[4], Lanes& first, Lanes& second) {
+    const Lanes u = __builtin_shufflevector(p[0], p[2], 0, 1, 2, 3), v = __builtin_shufflevector(p[1], p[3], 0, 1, 2, 3);
+    first = __builtin_shufflevector(u, v, 0, 4, 2, 6), second = __builtin_shufflevector(u, v, 1, 5, 3, 7);
+}
+
+[[gnu::always_inline]] inline void gatherBodies(PhysicsBody* const (&p)[kLanes], BodyLanes& to, Lanes3& delta) {
+    const Lanes rows[4] = {rowAt<Lanes>(*p[0], 0), rowAt<Lanes>(*p[1], 0), rowAt<Lanes>(*p[2], 0), rowAt<Lanes>(*p[3], 0)};
+    Lanes lanes[4];
+    transpose(rows, lanes);
+    to.vel = {lanes[0], lanes[1], lanes[2]};
+    to.spin.x = lanes[3];
+    const Pair spins[4] = {rowAt<Pair>(*p[0], 4), rowAt<Pair>(*p[1], 4), rowAt<Pair>(*p[2], 4), rowAt<Pair>(*p[3], 4)};
+    transpose(spins, to.spin.y, to.spin.z);
+    const Pair deltas[4] = {rowAt<Pair>(*p[0], 6), rowAt<Pair>(*p[1], 6), rowAt<Pair>(*p[2], 6), rowAt<Pair>(*p[3], 6)};
+    transpose(deltas, delta.x, delta.y);
+    delta.z = Lanes{p[0]->delta.z, p[1]->delta.z, p[2]->delta.z, p[3]->delta.z};
+}
+
+[[gnu::always_inline]] inline PairLanes gather(const ContactBatch& c) {
     PairLanes s;
-    gatherBodies(bodies[size_t(c.a[0])], bodies[size_t(c.a[1])], s.a, s.deltaA);
-    gatherBodies(bodies[size_t(c.b[0])], bodies[size_t(c.b[1])], s.b, s.deltaB);
+    gatherBodies(c.a, s.a, s.deltaA);
+    gatherBodies(c.b, s.b, s.deltaB);
     return s;
 }
 
-[[gnu::always_inline]] inline void storeLane(PhysicsBody& body, const BodyLanes& from, int l) {
-    auto pick = [l](Lanes u, Lanes v) { return l == 0 ? lows(u, v) : highs(u, v); };
-    const Lanes pairs[3] = {pick(from.vel.x, from.vel.y), pick(from.vel.z, from.spin.x),
-                            pick(from.spin.y, from.spin.z)};
-    std::memcpy(reinterpret_cast<char*>(&body.vel), pairs, sizeof pairs);
+// One side's rows: vel and spin.x in rows[l], spin.y and z in the halves of spins[l % 2].
+struct BodyRows {
+    Lanes rows[4];
+    Lanes spins[2];
+};
+
+[[gnu::always_inline]] inline BodyRows rowsOf(const BodyLanes& from) {
+    BodyRows r;
+    transpose({from.vel.x, from.vel.y, from.vel.z, from.spin.x}, r.rows);
+    r.spins[0] = __builtin_shufflevector(from.spin.y, from.spin.z, 0, 4, 2, 6);
+    r.spins[1] = __builtin_shufflevector(from.spin.y, from.spin.z, 1, 5, 3, 7);
+    return r;
+}
+
+[[gnu::always_inline]] inline void storeLane(PhysicsBody& body, const BodyRows& from, int l) {
+    storeRow(body, 0, from.rows[l]);
+    const Lanes& spins = from.spins[l % 2];
+    storeRow(body, 4, l < 2 ? __builtin_shufflevector(spins, spins, 0, 1) : __builtin_shufflevector(spins, spins, 2, 3));
 }
 
 // Body a is written back only where it moves (the static body, shared by every level, never is).
-[[gnu::always_inline]] inline void scatter(const ContactBatch& c, const LaneRows& w, const PairLanes& s, std::vector<PhysicsBody>& bodies) {
-    for (int l = 0; l < c.count; ++l) {
-        if (w.massA[l] > 0.0) storeLane(bodies[size_t(c.a[l])], s.a, l);
-        storeLane(bodies[size_t(c.b[l])], s.b, l);
+[[gnu::always_inline]] inline void scatter(const ContactBatch& c, const LaneRows& w, const PairLanes& s) {
+    const BodyRows a = rowsOf(s.a), b = rowsOf(s.b);
+    for (int l = 0; l < kLanes; ++l) {
+        if (l >= c.count) break;
+        if (w.massA[l] > 0.0) storeLane(*c.a[l], a, l);
+        storeLane(*c.b[l], b, l);
     }
 }
 
@@ -104,7 +142,7 @@ Lanes highs(Lanes p, Lanes q) { return __builtin_shuffle(p, q, LaneMask{1, 3}); 
 [[gnu::always_inline]] inline bool anyImpulse(const ContactBatch& c) {
     const LaneMask bits = LaneMask(c.normalImpulse) | LaneMask(c.tx) | LaneMask(c.ty) | LaneMask(c.tz) |
                           LaneMask(c.rx) | LaneMask(c.ry) | LaneMask(c.rz);
-    return any((bits << 1) != 0);  // the sign bit shifted out
+    return any(bits << 1);  // the sign bit shifted out
 }
 
 }  // namespace
@@ -178,11 +216,12 @@ namespace {
     return true;
 }
 
-[[gnu::always_inline]] inline void markSupported(const ContactBatch& c, std::vector<PhysicsBody>& bodies) {
-    for (int l = 0; l < c.count; ++l) {
+[[gnu::always_inline]] inline void markSupported(const ContactBatch& c) {
+    for (int l = 0; l < kLanes; ++l) {
+        if (l >= c.count) break;
         if (c.normalImpulse[l] <= 0.0) continue;
-        bodies[size_t(c.b[l])].supported = true;
-        if (c.solve.massA[l] > 0.0) bodies[size_t(c.a[l])].supported = true;
+        c.b[l]->supported = true;
+        if (c.solve.massA[l] > 0.0) c.a[l]->supported = true;
     }
 }
 
@@ -191,13 +230,14 @@ void setRows(LaneRows& to, int l, const RowMasses& m, const InverseMasses& w) {
     to.massA[l] = w.massA, to.inertiaA[l] = w.inertiaA, to.massB[l] = w.massB, to.inertiaB[l] = w.inertiaB;
 }
 
-void loadLane(ContactBatch& to, int l, const Contact& c, const std::vector<PhysicsBody>& bodies) {
-    to.a[l] = c.a, to.b[l] = c.b;
+void loadLane(ContactBatch& to, int l, Contact& c, const SolverContext& ctx) {
+    const PreparedRows rows = prepareContact(c, ctx);
+    to.a[l] = &ctx.bodies[size_t(c.a)], to.b[l] = &ctx.bodies[size_t(c.b)];
     to.nx[l] = c.normal.x, to.ny[l] = c.normal.y, to.nz[l] = c.normal.z;
     to.separation[l] = c.separation, to.armA[l] = c.armA, to.armB[l] = c.armB, to.slop[l] = c.slop;
     to.curve[l] = 0.0, to.rollRadius[l] = c.rollRadius;  // curve: 0 until setCurve
-    setRows(to.solve, l, c.mass, inverseMasses(c, bodies, false));
-    setRows(to.relax, l, c.shock ? c.shockMass : c.mass, inverseMasses(c, bodies, true));
+    setRows(to.solve, l, c.mass, rows.solve);
+    setRows(to.relax, l, rows.relaxMass, rows.relax);
     to.normalImpulse[l] = c.normalImpulse, to.maxNormalImpulse[l] = c.maxNormalImpulse;
     to.tx[l] = c.tangentImpulse.x, to.ty[l] = c.tangentImpulse.y, to.tz[l] = c.tangentImpulse.z;
     to.rx[l] = c.rollImpulse.x, to.ry[l] = c.rollImpulse.y, to.rz[l] = c.rollImpulse.z;
@@ -216,51 +256,85 @@ void ContactBatches::load(const SolverContext& ctx) {
         c.count = 0;
         for (int l = 0; l < kLanes; ++l) {
             const int i = graph_.slots[size_t(k * kLanes + l)];
-            loadLane(c, l, i < 0 ? padding : ctx.contacts[size_t(i)], ctx.bodies);
+            loadLane(c, l, i < 0 ? padding : ctx.contacts[size_t(i)], ctx);
             c.count += i < 0 ? 0 : 1;
         }
     }
 }
 
-template <class Kernel>
-void ContactBatches::levels(int begin, int end, const Kernel& kernel) {
-    for (int i = graph_.levelBegin[size_t(begin)]; i < graph_.levelBegin[size_t(end)]; ++i) kernel(batches_[size_t(i)]);
+namespace {
+
+// One pass's batches, levels [levelBegin[k], levelBegin[k + 1]) for level k.
+struct Pass {
+    ContactBatch* batches;
+    const int* levelBegin;
+    SolverContext& ctx;
+    bool useBias;
+};
+using PassLevels = void (*)(const Pass& pass, int begin, int end);  // levels [begin, end)
+
+// Each pass is compiled for AVX-512 and AVX2, where the CPU has them (one instruction for the
+// four lanes, chosen at load time), and for baseline x86-64. Without FMA every product rounds on
+// its own, so all give the same bytes. Clang (the fuzz build) rejects the clones' inlined lane
+// helpers as an ABI change, and other CPUs have other names: those build the baseline alone.
+#if defined(__x86_64__) && !defined(__clang__)
+#define MB_PASS_CLONES [[gnu::target_clones("arch=x86-64-v4", "avx2", "default")]]
+#else
+#define MB_PASS_CLONES
+#endif
+
+MB_PASS_CLONES void warmStartLevels(const Pass& pass, int begin, int end) {
+    for (int i = pass.levelBegin[begin]; i < pass.levelBegin[end]; ++i) {
+        ContactBatch& c = pass.batches[i];
+        if (!anyImpulse(c)) continue;
+        PairLanes s = gather(c);
+        applyNormal(s, c.solve, c.normalImpulse * normalOf(c));
+        applyImpulse(s, c, c.solve, {c.tx, c.ty, c.tz});
+        applyAngular(s, c.solve, {c.rx, c.ry, c.rz});
+        scatter(c, c.solve, s);
+    }
+}
+
+template <bool useBias>
+[[gnu::always_inline]] inline void solveBatches(const Pass& pass, int begin, int end) {
+    for (int i = pass.levelBegin[begin]; i < pass.levelBegin[end]; ++i) {
+        ContactBatch& c = pass.batches[i];
+        const LaneRows& w = useBias ? c.solve : c.relax;
+        PairLanes s = gather(c);
+        if (!solveRows(c, s, pass.ctx, w, useBias)) continue;
+        scatter(c, w, s);
+        if (useBias) markSupported(c);
+    }
+}
+
+// The solve and relax passes compiled apart, each with what it does not use left out.
+MB_PASS_CLONES void solveLevels(const Pass& pass, int begin, int end) {
+    if (pass.useBias) solveBatches<true>(pass, begin, end);
+    else solveBatches<false>(pass, begin, end);
 }
 
 // The levels of the first two runs share no body: with a worker, it takes the first run's while
 // this thread takes the second's. The same bytes whatever the thread count.
-template <class Kernel>
-void ContactBatches::byLevels(Worker* worker, const Kernel& kernel) {
-    const int* runEnd = graph_.runEnd;
-    auto first = [&] { levels(0, runEnd[0], kernel); };
+void byLevels(const ContactGraph& graph, PassLevels levels, const Pass& pass) {
+    Worker* worker = pass.ctx.worker;
+    auto first = [&] { levels(pass, 0, graph.runEnd[0]); };
     if (worker) worker->post(first);
     else first();
-    levels(runEnd[0], runEnd[1], kernel);
+    levels(pass, graph.runEnd[0], graph.runEnd[1]);
     if (worker) worker->wait();
-    levels(runEnd[1], graph_.levels(), kernel);
+    levels(pass, graph.runEnd[1], graph.levels());
 }
 
+}  // namespace
+
 void ContactBatches::warmStart(SolverContext& ctx) {
-    byLevels(ctx.worker, [&](ContactBatch& c) {
-        if (!anyImpulse(c)) return;
-        PairLanes s = gather(c, ctx.bodies);
-        applyNormal(s, c.solve, c.normalImpulse * normalOf(c));
-        applyImpulse(s, c, c.solve, {c.tx, c.ty, c.tz});
-        applyAngular(s, c.solve, {c.rx, c.ry, c.rz});
-        scatter(c, c.solve, s, ctx.bodies);
-    });
+    byLevels(graph_, warmStartLevels, {batches_.data(), graph_.levelBegin.data(), ctx, true});
 }
 
 void ContactBatches::solve(SolverContext& ctx, bool useBias) {
     if (useBias)
         for (PhysicsBody& b : ctx.bodies) b.supported = false;
-    byLevels(ctx.worker, [&](ContactBatch& c) {
-        const LaneRows& w = useBias ? c.solve : c.relax;
-        PairLanes s = gather(c, ctx.bodies);
-        if (!solveRows(c, s, ctx, w, useBias)) return;
-        scatter(c, w, s, ctx.bodies);
-        if (useBias) markSupported(c, ctx.bodies);
-    });
+    byLevels(graph_, solveLevels, {batches_.data(), graph_.levelBegin.data(), ctx, useBias});
 }
 
 void ContactBatches::store(std::vector<Contact>& contacts) const {

@@ -56,42 +56,44 @@ double contactSeparation(const Contact& c, const std::vector<PhysicsBody>& bodie
     return c.separation + glm::dot(bodies[c.b].delta - bodies[c.a].delta, c.normal);
 }
 
-void prepareContacts(SolverContext& ctx) {
-    for (Contact& c : ctx.contacts) {
-        const PhysicsBody& a = ctx.bodies[c.a];
-        const PhysicsBody& b = ctx.bodies[c.b];
-        c.mass = rowMasses(c, inverseOf(a, b));
-        c.relativeVelocity = glm::dot(b.vel - a.vel, c.normal);
-        c.maxNormalImpulse = 0.0;
-        c.shock = shockPropagates(c, ctx);
-        if (c.shock) c.shockMass = rowMasses(c, fixingLower(c, a, b));
-    }
+PreparedRows prepareContact(Contact& c, const SolverContext& ctx) {
+    const PhysicsBody& a = ctx.bodies[size_t(c.a)];
+    const PhysicsBody& b = ctx.bodies[size_t(c.b)];
+    const InverseMasses own = inverseOf(a, b);
+    c.mass = rowMasses(c, own);
+    c.relativeVelocity = glm::dot(b.vel - a.vel, c.normal);
+    c.maxNormalImpulse = 0.0;
+    c.shock = shockPropagates(c, ctx);
+    if (!c.shock) return {own, own, c.mass};
+    const InverseMasses fixed = fixingLower(c, a, b);
+    return {own, fixed, rowMasses(c, fixed)};
 }
 
-InverseMasses inverseMasses(const Contact& c, const std::vector<PhysicsBody>& bodies, bool relax) {
-    const PhysicsBody &a = bodies[size_t(c.a)], &b = bodies[size_t(c.b)];
-    return relax && c.shock ? fixingLower(c, a, b) : inverseOf(a, b);
-}
-
-// Box2D's restitution pass: only contacts that touched this step and met at more than the
-// threshold bounce, and they bounce off the normal velocity they had before the step. Along the
-// normal there is no torque; body a is left alone where it does not move (the static body).
-void applyRestitution(SolverContext& ctx) {
+// Box2D's restitution pass, `iterations` times: only contacts that touched this step and met at
+// more than the threshold bounce, and they bounce off the normal velocity they had before the
+// step. The passes change neither condition, so the contacts are found once. Along the normal
+// there is no torque; body a is left alone where it does not move (the static body).
+void applyRestitution(SolverContext& ctx, int iterations, std::vector<int>& bouncing) {
     if (ctx.restitution <= 0.0) return;
-    for (Contact& c : ctx.contacts) {
-        if (c.relativeVelocity >= -bounceThreshold(ctx) || c.maxNormalImpulse <= 0.0)
-            continue;
-        PhysicsBody& a = ctx.bodies[c.a];
-        PhysicsBody& b = ctx.bodies[c.b];
-        const double vn = glm::dot(b.vel - a.vel, c.normal);
-        const double impulse = -c.mass.normal * (vn + ctx.restitution * c.relativeVelocity);
-        const double total = std::max(c.normalImpulse + impulse, 0.0);
-        const glm::dvec3 p = (total - c.normalImpulse) * c.normal;
-        if (a.invMass > 0.0) a.vel -= a.invMass * p;
-        b.vel += b.invMass * p;
-        c.normalImpulse = total;
-        c.maxNormalImpulse = std::max(c.maxNormalImpulse, total);
+    bouncing.clear();
+    for (size_t i = 0; i < ctx.contacts.size(); ++i) {
+        const Contact& c = ctx.contacts[i];
+        if (c.relativeVelocity < -bounceThreshold(ctx) && c.maxNormalImpulse > 0.0) bouncing.push_back(int(i));
     }
+    for (int k = 0; k < iterations; ++k)
+        for (int i : bouncing) {
+            Contact& c = ctx.contacts[size_t(i)];
+            PhysicsBody& a = ctx.bodies[c.a];
+            PhysicsBody& b = ctx.bodies[c.b];
+            const double vn = glm::dot(b.vel - a.vel, c.normal);
+            const double impulse = -c.mass.normal * (vn + ctx.restitution * c.relativeVelocity);
+            const double total = std::max(c.normalImpulse + impulse, 0.0);
+            const glm::dvec3 p = (total - c.normalImpulse) * c.normal;
+            if (a.invMass > 0.0) a.vel -= a.invMass * p;
+            b.vel += b.invMass * p;
+            c.normalImpulse = total;
+            c.maxNormalImpulse = std::max(c.maxNormalImpulse, total);
+        }
 }
 
 }  // namespace mb

@@ -33,7 +33,8 @@ int Impacts::resolve(SolverContext& ctx) {
     stamp_.assign(contacts, 0);
     count_.assign(contacts, 0);
     heap_.clear();
-    for (size_t i = 0; i < contacts; ++i) schedule(ctx, int(i), 0.0);
+    for (size_t i = 0; i < contacts; ++i)
+        if (!(ctx.contacts[i].normalImpulse > 0.0)) schedule(ctx, int(i), 0.0);  // else it returns at once
     const int staticBody = int(n) - 1;
     int impacts = 0;
     while (!heap_.empty()) {

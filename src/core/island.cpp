@@ -29,6 +29,9 @@ void updateSleep(std::vector<PhysicsBody>& bodies, const std::vector<Contact>& c
             bodies[i].sleepTime = slow(bodies[i], settings.sleepSpeed) ? bodies[i].sleepTime + settings.dt
                                                                        : 0.0;
     if (!settings.sleep) return;
+    // An island sleeps once its least settled body is ready: with no body ready, none sleeps.
+    auto ready = [&](const PhysicsBody& b) { return b.awake && b.sleepTime >= settings.timeToSleep; };
+    if (std::none_of(bodies.begin(), bodies.begin() + n, ready)) return;
     parent.resize(n);
     for (int i = 0; i < n; ++i) parent[i] = i;
     // Every contact between two spheres links them, touching or only within speculative reach:

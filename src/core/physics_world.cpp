@@ -19,6 +19,17 @@ namespace mb {
 
 using glm::dvec3;
 
+namespace {
+
+struct Found {  // a contact as collide() finds it, before its place in the solve order
+    int a, b, feature;
+    bool curved;
+    dvec3 normal;
+    double separation;
+};
+
+}  // namespace
+
 struct PhysicsWorld::Impl {
     explicit Impl(const Scene& scene)
         : statics(scene),
@@ -30,14 +41,19 @@ struct PhysicsWorld::Impl {
     struct Order {
         std::uint64_t height;  // orderedBits(contact height): compares as the double does
         std::uint64_t key;
-        int index;
-        int run;  // SolverContext::split: 0 or 1, one half; 2, both
+        int index;             // in found
+        int run;               // SolverContext::split: 0 or 1, one half; 2, both
+        int warm;              // last step's impulses in kept, or -1
         bool operator<(const Order& o) const { return height < o.height || (height == o.height && key < o.key); }
     };
-    struct Warm {  // a contact's impulses, kept for the next step
-        std::uint64_t key;
+    struct Impulses {  // a contact's, kept for the next step's warm start
         double normal;
         dvec3 tangent, roll;
+    };
+    struct Warm {  // where last step's contact of this key is: 16 bytes, so the search stays in cache
+        std::uint64_t key;
+        int rank;  // its place in the step's bottom-up order (Order)
+        int slot;  // its impulses in kept
     };
 
     StaticCollider statics;
@@ -45,19 +61,23 @@ struct PhysicsWorld::Impl {
     Impacts impacts;
     ContactBatches batches;  // the solver's state during the substeps
     double gravity, friction, restitution, rolling;
-    std::vector<Contact> contacts, sorted;
+    std::vector<Found> found;
+    std::vector<Contact> contacts;  // in solve order
     std::vector<int> curved;  // contacts on curved static surfaces, followed every substep
-    std::vector<Order> order;
+    std::vector<Order> order, fresh, merged;
+    std::vector<Order> byRank;  // persisting contacts at last step's rank; index -1 where none is
+    std::vector<int> rank;      // per contact, in solve order: its rank in the bottom-up order
     std::vector<double> xs;
     std::vector<char> side;  // per body: the half it is in, by x
     int split[2] = {0, 0};
     std::unique_ptr<Worker> worker;  // started with the first step that splits
-    // Last step's impulses grouped by the contact's first dynamic body (the key's top bits):
-    // body i's are warm[warmBegin[i] .. warmBegin[i + 1]), a handful, searched linearly.
+    // Last step's contacts grouped by their first dynamic body (the key's top bits): body i's
+    // are warm[warmBegin[i] .. warmBegin[i + 1]), a handful, searched linearly.
     std::vector<Warm> warm;
+    std::vector<Impulses> kept;  // last step's impulses, in its solve order
     std::vector<int> warmBegin;
 
-    const Warm* findWarm(std::uint64_t key) const {  // last step's impulses, or null
+    const Warm* findWarm(std::uint64_t key) const {  // last step's contact, or null
         const auto first = size_t(key >> 40);
         if (first + 1 >= warmBegin.size()) return nullptr;
         for (int i = warmBegin[first]; i < warmBegin[first + 1]; ++i)
@@ -78,15 +98,32 @@ namespace {
 double slopFor(double radius, const PhysicsSettings& s) { return std::min(s.linearSlop, 0.05 * radius); }
 
 // Warm-start key: first dynamic body, other body, feature + 1, in 24, 24 and 16 bits.
-std::uint64_t contactKey(const Contact& c, int staticBody) {
-    const bool onStatic = c.a == staticBody;
-    const std::uint64_t first = std::uint64_t(onStatic ? c.b : c.a), second = std::uint64_t(onStatic ? c.a : c.b);
-    return first << 40 | second << 16 | std::uint64_t(c.feature + 1);
+std::uint64_t contactKey(int a, int b, int feature, int staticBody) {
+    const bool onStatic = a == staticBody;
+    const std::uint64_t first = std::uint64_t(onStatic ? b : a), second = std::uint64_t(onStatic ? a : b);
+    return first << 40 | second << 16 | std::uint64_t(feature + 1);
 }
 
-double contactHeight(const Contact& c, const std::vector<PhysicsBody>& bodies) {
-    const PhysicsBody& b = bodies[c.b];
-    return b.pos.y - c.armB * c.normal.y;  // the contact point, on b's surface
+double contactHeight(const Found& f, const std::vector<PhysicsBody>& bodies) {
+    const PhysicsBody& b = bodies[size_t(f.b)];
+    return b.pos.y - b.radius * f.normal.y;  // the contact point, on b's surface
+}
+
+// The contact's arms, lever of rolling resistance and slop, from its bodies (a may be static); the
+// rest as a new Contact has them. Written in place, as sortBottomUp writes its Orders.
+void makeContact(Contact& c, const Found& f, const std::vector<PhysicsBody>& bodies, int staticBody,
+                 const PhysicsSettings& settings) {
+    c = Contact{};
+    c.a = f.a;
+    c.b = f.b;
+    c.feature = f.feature;
+    c.curved = f.curved;
+    c.normal = f.normal;
+    c.separation = f.separation;
+    c.armB = bodies[size_t(f.b)].radius;
+    c.armA = f.a == staticBody ? 0.0 : bodies[size_t(f.a)].radius;
+    c.rollRadius = f.a == staticBody ? c.armB : std::min(c.armA, c.armB);
+    c.slop = slopFor(c.rollRadius, settings);
 }
 
 // The bits of a double as an unsigned integer in the double's order (negatives reversed below
@@ -163,7 +200,6 @@ void PhysicsWorld::step() {
         ctx.worker = w.worker.get();
     }
     if (settings_.impacts) w.impacts.resolve(ctx);
-    prepareContacts(ctx);
     w.batches.load(ctx);
     for (PhysicsBody& b : bodies_) b.delta = dvec3(0.0);
     for (int k = 0; k < substeps; ++k) {
@@ -176,7 +212,7 @@ void PhysicsWorld::step() {
         for (int i = 0; i < iterations; ++i) w.batches.solve(ctx, false);
     }
     w.batches.store(w.contacts);
-    for (int i = 0; i < settings_.restitutionIterations; ++i) applyRestitution(ctx);
+    applyRestitution(ctx, settings_.restitutionIterations, w.scratch);
     if (settings_.impacts) w.impacts.correctPositions(bodies_, w.contacts);
     keepImpulses();
     if (settings_.continuous) sweepFast();
@@ -191,7 +227,7 @@ void PhysicsWorld::collide() {
     Impl& w = *impl_;
     const int n = bodyCount();
     const double dt = settings_.dt;
-    w.contacts.clear();
+    w.found.clear();
     w.centres.resize(n);
     w.extents.resize(n);
     w.margins.resize(n);
@@ -209,18 +245,9 @@ void PhysicsWorld::collide() {
     for (auto [a, b] : w.pairs) {
         const PhysicsBody &A = bodies_[a], &B = bodies_[b];
         if (!A.awake && !B.awake) continue;
-        Contact c;
-        c.a = a;
-        c.b = b;
         const dvec3 d = B.pos - A.pos;
         const double len = glm::length(d);
-        c.normal = len > 0.0 ? d / len : dvec3(0, 1, 0);
-        c.separation = len - A.radius - B.radius;
-        c.armA = A.radius;
-        c.armB = B.radius;
-        c.rollRadius = std::min(A.radius, B.radius);
-        c.slop = slopFor(c.rollRadius, settings_);
-        w.contacts.push_back(c);
+        w.found.push_back({a, b, -1, false, len > 0.0 ? d / len : dvec3(0, 1, 0), len - A.radius - B.radius});
     }
     for (int i = 0; i < n; ++i)
         if (bodies_[i].awake) collideStatic(i);
@@ -231,51 +258,77 @@ void PhysicsWorld::collide() {
 // persist from the last step start from its impulses.
 void PhysicsWorld::orderAndWarmStart() {
     Impl& w = *impl_;
-    const int staticBody = bodyCount();
-    w.order.clear();
-    for (size_t i = 0; i < w.contacts.size(); ++i)
-        w.order.push_back({orderedBits(contactHeight(w.contacts[i], bodies_)), contactKey(w.contacts[i], staticBody),
-                           int(i), 2});
-    std::sort(w.order.begin(), w.order.end());
+    sortBottomUp();
     splitInHalves();
     // Each run keeps the bottom-up order: a stable partition, by counting.
     int next[3] = {0, w.split[0], w.split[1]};
-    w.sorted.resize(w.contacts.size());
+    w.contacts.resize(w.found.size());
+    w.rank.resize(w.found.size());
     for (size_t i = 0; i < w.order.size(); ++i) {
-        Contact& c = w.sorted[size_t(next[w.order[i].run]++)] = w.contacts[size_t(w.order[i].index)];
-        if (const Impl::Warm* old = w.findWarm(w.order[i].key)) {
-            c.normalImpulse = old->normal;
-            c.tangentImpulse = old->tangent;
-            c.rollImpulse = old->roll;
-        }
+        const Impl::Order& o = w.order[i];
+        const int to = next[o.run]++;
+        Contact& c = w.contacts[size_t(to)];
+        makeContact(c, w.found[size_t(o.index)], bodies_, bodyCount(), settings_);
+        w.rank[size_t(to)] = int(i);
+        if (o.warm < 0) continue;
+        const Impl::Impulses& old = w.kept[size_t(o.warm)];
+        c.normalImpulse = old.normal;
+        c.tangentImpulse = old.tangent;
+        c.rollImpulse = old.roll;
     }
-    w.contacts.swap(w.sorted);
     w.curved.clear();
     for (size_t i = 0; i < w.contacts.size(); ++i)
         if (w.contacts[i].curved) w.curved.push_back(int(i));
 }
 
-// Bodies left of the median x form one half, the rest the other; a contact within one half goes
-// to its run, one across the cut to the joining run, solved after both. The cut depends on the
-// bodies alone, never on the thread count, so one thread or two give the same bytes. Few
-// contacts are not worth a second thread: they all go to the joining run, in order.
+// The contacts that persist from the last step, taken in its order, are nearly in order already:
+// an insertion sort puts right the few that moved past each other, in about linear time. The new
+// ones are sorted apart and merged in. Keys are unique, so the order is total: the one a sort of
+// all of them gives.
+void PhysicsWorld::sortBottomUp() {
+    Impl& w = *impl_;
+    const int staticBody = bodyCount();
+    w.byRank.assign(w.warm.size(), Impl::Order{0, 0, -1, 2, -1});
+    w.fresh.clear();
+    for (size_t i = 0; i < w.found.size(); ++i) {
+        const Found& f = w.found[i];
+        const std::uint64_t key = contactKey(f.a, f.b, f.feature, staticBody);
+        const Impl::Warm* old = w.findWarm(key);
+        // Field by field into its place: a whole Order built aside and copied would be read back
+        // in halves that straddle the writes just made, and wait for them to reach the cache.
+        Impl::Order& o = old ? w.byRank[size_t(old->rank)] : w.fresh.emplace_back();
+        o.height = orderedBits(contactHeight(f, bodies_));
+        o.key = key;
+        o.index = int(i);
+        o.run = 2;
+        o.warm = old ? old->slot : -1;
+    }
+    w.order.resize(w.byRank.size());
+    size_t placed = 0;
+    for (const Impl::Order& o : w.byRank) {  // in last step's order, each put in place as it comes
+        if (o.index < 0) continue;
+        size_t j = placed++;
+        for (; j > 0 && o < w.order[j - 1]; --j) w.order[j] = w.order[j - 1];
+        w.order[j] = o;
+    }
+    w.order.resize(placed);
+    std::sort(w.fresh.begin(), w.fresh.end());
+    w.merged.resize(w.found.size());
+    std::merge(w.order.begin(), w.order.end(), w.fresh.begin(), w.fresh.end(), w.merged.begin());
+    w.order.swap(w.merged);
+}
+
+// Few contacts are not worth a second thread: they all go to the joining run, in order.
 void PhysicsWorld::splitInHalves() {
     constexpr size_t kMinContacts = 512;
     Impl& w = *impl_;
-    const int n = bodyCount();
     w.split[0] = w.split[1] = 0;
     if (w.order.size() < kMinContacts) return;
-    w.xs.resize(size_t(n));
-    for (int i = 0; i < n; ++i) w.xs[size_t(i)] = bodies_[i].pos.x;
-    const auto middle = w.xs.begin() + n / 2;
-    std::nth_element(w.xs.begin(), middle, w.xs.end());
-    w.side.resize(size_t(n));
-    for (int i = 0; i < n; ++i) w.side[size_t(i)] = bodies_[i].pos.x < *middle ? 0 : 1;
+    sideByMedianX(bodies_, w.xs, w.side);
     int count[3] = {0, 0, 0};
     for (Impl::Order& o : w.order) {
-        const Contact& c = w.contacts[size_t(o.index)];
-        const int sb = w.side[size_t(c.b)];
-        o.run = c.a == n || w.side[size_t(c.a)] == sb ? sb : 2;
+        const Found& f = w.found[size_t(o.index)];
+        o.run = runOf(f.a, f.b, w.side, bodyCount());
         ++count[o.run];
     }
     w.split[0] = count[0];
@@ -315,38 +368,32 @@ void PhysicsWorld::keepImpulses() {
     Impl& w = *impl_;
     const int n = bodyCount();
     w.warmBegin.assign(size_t(n) + 2, 0);
-    for (const Contact& c : w.contacts) ++w.warmBegin[size_t(contactKey(c, n) >> 40) + 2];
+    for (const Contact& c : w.contacts) ++w.warmBegin[size_t(contactKey(c.a, c.b, c.feature, n) >> 40) + 2];
     for (int i = 2; i <= n + 1; ++i) w.warmBegin[i] += w.warmBegin[i - 1];
     w.warm.resize(w.contacts.size());
+    w.kept.resize(w.contacts.size());
     // warmBegin[f + 1] is the next free slot of body f's group; once filled it is group f + 1's start.
-    for (const Contact& c : w.contacts) {
-        const std::uint64_t key = contactKey(c, n);
-        w.warm[size_t(w.warmBegin[size_t(key >> 40) + 1]++)] = {key, c.normalImpulse, c.tangentImpulse, c.rollImpulse};
+    for (size_t i = 0; i < w.contacts.size(); ++i) {
+        const Contact& c = w.contacts[i];
+        const std::uint64_t key = contactKey(c.a, c.b, c.feature, n);
+        w.warm[size_t(w.warmBegin[size_t(key >> 40) + 1]++)] = {key, w.rank[i], int(i)};
+        w.kept[i] = {c.normalImpulse, c.tangentImpulse, c.rollImpulse};
     }
 }
 
 void PhysicsWorld::collideStatic(int body) {
     Impl& w = *impl_;
     const PhysicsBody& b = bodies_[body];
-    w.statics.query(b.pos, b.radius, w.margins[body], w.hits);
+    w.statics.query(body, b.pos, b.radius, w.margins[body], w.hits);
     for (const StaticHit& hit : w.hits) {
         // A surface that bends by more than its SDF's noise over this step's move is followed
         // substep by substep (bendCurved, followCurved); flat faces and the ground keep the
         // normal of the step's start, as a plane does.
         const dvec3 move = b.vel * settings_.dt;
-        Contact c;
-        c.curved = settings_.followCurves && hit.feature > 0 &&
-                   std::abs(w.statics.bend(hit.feature, b.pos, hit.normal, move)) >
-                       w.statics.bendNoise(hit.feature, glm::length(move));
-        c.a = bodyCount();
-        c.b = body;
-        c.feature = hit.feature;
-        c.normal = hit.normal;
-        c.separation = hit.separation;
-        c.armB = b.radius;
-        c.rollRadius = b.radius;
-        c.slop = slopFor(b.radius, settings_);
-        w.contacts.push_back(c);
+        const bool curved = settings_.followCurves && hit.feature > 0 &&
+                            std::abs(w.statics.bend(hit.feature, b.pos, hit.normal, move)) >
+                                w.statics.bendNoise(hit.feature, glm::length(move));
+        w.found.push_back({bodyCount(), body, hit.feature, curved, hit.normal, hit.separation});
     }
 }
 

@@ -43,7 +43,7 @@ StaticCollider::Bound StaticCollider::boundOf(const SdfObject& o) {
     constexpr double kRounding = 1e-5;
     const bool box = o.type == ShapeType::Box;
     return {glm::dvec3(o.pos), glm::dmat3(o.toLocal), box ? glm::dvec3(o.size) : glm::dvec3(0.0),
-            box ? kRounding * o.bound : double(o.bound), 0.25 * o.blend, box};
+            box ? kRounding * o.bound : double(o.bound), 0.25 * o.blend, box, o.toLocal != glm::mat3(1.0f)};
 }
 
 double StaticCollider::lowerBound(const Group& g, const glm::dvec3& p) const {
@@ -52,7 +52,8 @@ double StaticCollider::lowerBound(const Group& g, const glm::dvec3& p) const {
         const Bound& b = bounds_[size_t(i)];
         if (statics_[size_t(i)].op != CsgOp::Union) continue;
         const glm::dvec3 d = p - b.centre;
-        const double distance = b.box ? glm::length(glm::max(glm::abs(b.toLocal * d) - b.half, 0.0)) : glm::length(d);
+        const glm::dvec3 local = b.rotated ? b.toLocal * d : d;  // the same |components| either way
+        const double distance = b.box ? glm::length(glm::max(glm::abs(local) - b.half, 0.0)) : glm::length(d);
         bound = std::min(bound, distance - b.less - b.grow);
     }
     return bound;
@@ -77,13 +78,23 @@ double StaticCollider::groundDistance(const glm::dvec3& p) const {
     return ground_ ? p.y - floor_ : kInf;
 }
 
-void StaticCollider::query(const glm::dvec3& centre, double radius, double reach,
+// A distance bound is 1-Lipschitz: the groups are at least clearance − |move| from the sphere
+// once it has moved. While that leaves them out of reach, none is measured; the slack is far
+// above the rounding of the bounds, so a group left out would have been left out measured.
+void StaticCollider::query(int body, const glm::dvec3& centre, double radius, double reach,
                            std::vector<StaticHit>& out) {
     out.clear();
     if (groundDistance(centre) - radius < reach)
         out.push_back({0, groundDistance(centre) - radius, glm::dvec3(0, 1, 0)});
+    if (size_t(body) >= clearance_.size()) clearance_.resize(size_t(body) + 1);
+    Clearance& clear = clearance_[size_t(body)];
+    const double slack = 1e-9 * (glm::length(centre) + std::abs(clear.distance) + 1.0);
+    if (clear.distance >= 0.0 && clear.distance - glm::length(centre - clear.at) - radius >= reach + slack) return;
+    clear = {centre, kInf};
     for (size_t g = 0; g < groups_.size(); ++g) {
-        if (lowerBound(groups_[g], centre) - radius >= reach) continue;
+        const double bound = lowerBound(groups_[g], centre);
+        clear.distance = std::min(clear.distance, bound);
+        if (bound - radius >= reach) continue;
         localise(groups_[g], centre, false);
         // The distance alone rules most groups out (a pile's far walls); only a surface in
         // reach pays for the four samples of its normal.

@@ -169,10 +169,30 @@ TEST(PhysicsStatic, DistancesKeepPrecisionFarFromTheOrigin) {
     StaticCollider c(s);
     EXPECT_NEAR(c.distance(dvec3(1e5 + 0.5 + 0.123456, 0, 0)), 0.123456, 1e-6);
     std::vector<StaticHit> hits;
-    c.query(dvec3(1e5, 0.9, 0), 0.3, 0.2, hits);
+    c.query(0, dvec3(1e5, 0.9, 0), 0.3, 0.2, hits);
     ASSERT_EQ(hits.size(), 1u);
     EXPECT_NEAR(hits[0].separation, 0.1, 1e-6);
     EXPECT_NEAR(hits[0].normal.y, 1.0, 1e-6);
+}
+
+// A sphere's query skips measuring groups while its last clearance, less how far it moved, keeps
+// them out of reach: walking into a box and back in steps of 7.5 mm, it must see the box at the
+// same steps as a query that measures afresh (a new body each time).
+TEST(PhysicsStatic, KeptClearanceFindsWhatMeasuringFinds) {
+    Scene s = physicsWorld(9.81f, 0.3f, 0.5f, false);
+    s.objects.push_back(staticObject(ShapeType::Box, {0, 0, 0}));  // half-extent 0.5
+    StaticCollider kept(s), fresh(s);
+    std::vector<StaticHit> a, b;
+    int seen = 0;
+    for (int i = 0; i < 400; ++i) {
+        const double x = 2.0 - 0.0075 * (i < 200 ? i : 400 - i);  // into the box (its face at 0.5) and back
+        kept.query(0, dvec3(x, 0.1, 0), 0.05, 0.02, a);
+        fresh.query(i, dvec3(x, 0.1, 0), 0.05, 0.02, b);
+        ASSERT_EQ(a.size(), b.size()) << "at x = " << x;
+        for (size_t k = 0; k < a.size(); ++k) EXPECT_EQ(a[k].separation, b[k].separation) << "at x = " << x;
+        seen += a.empty() ? 0 : 1;
+    }
+    EXPECT_GT(seen, 0) << "the walk never reached the box: the test would see nothing";
 }
 
 TEST(PhysicsStatic, CastStopsBeforeAThinPlate) {
