@@ -50,10 +50,14 @@ struct PhysicsWorld::Impl {
         double normal;
         dvec3 tangent, roll;
     };
-    struct Warm {  // where last step's contact of this key is: 16 bytes, so the search stays in cache
+    struct Warm {  // last step's contact of this key
         std::uint64_t key;
         int rank;  // its place in the step's bottom-up order (Order)
         int slot;  // its impulses in kept
+    };
+    struct Keyed {  // where in previous a key is: 16 bytes, so the search stays in cache
+        std::uint64_t key;
+        int found;
     };
 
     StaticCollider statics;
@@ -71,17 +75,26 @@ struct PhysicsWorld::Impl {
     std::vector<char> side;  // per body: the half it is in, by x
     int split[2] = {0, 0};
     std::unique_ptr<Worker> worker;  // started with the first step that splits
-    // Last step's contacts grouped by their first dynamic body (the key's top bits): body i's
-    // are warm[warmBegin[i] .. warmBegin[i + 1]), a handful, searched linearly.
-    std::vector<Warm> warm;
+    std::vector<Warm> previous;  // last step's contacts, in the order collide() found them
     std::vector<Impulses> kept;  // last step's impulses, in its solve order
+    // previous grouped by first dynamic body (the key's top bits): body i's are
+    // grouped[warmBegin[i] .. warmBegin[i + 1]), a handful, searched linearly.
+    std::vector<Keyed> grouped;
     std::vector<int> warmBegin;
 
-    const Warm* findWarm(std::uint64_t key) const {  // last step's contact, or null
+    // Last step's contact of this key, or null. Until the pair list is rebuilt, collide() finds
+    // the contacts in last step's order less those that ended: the one after the last found
+    // (`next`) is nearly always it, and the group search, whose exit is hard to predict, is
+    // left for the contacts that begin or follow one that ended.
+    const Warm* findWarm(std::uint64_t key, size_t& next) const {
+        if (next < previous.size() && previous[next].key == key) return &previous[next++];
         const auto first = size_t(key >> 40);
         if (first + 1 >= warmBegin.size()) return nullptr;
         for (int i = warmBegin[first]; i < warmBegin[first + 1]; ++i)
-            if (warm[size_t(i)].key == key) return &warm[size_t(i)];
+            if (grouped[size_t(i)].key == key) {
+                next = size_t(grouped[size_t(i)].found) + 1;
+                return &previous[next - 1];
+            }
         return nullptr;
     }
     std::vector<dvec3> centres;
@@ -288,12 +301,13 @@ void PhysicsWorld::orderAndWarmStart() {
 void PhysicsWorld::sortBottomUp() {
     Impl& w = *impl_;
     const int staticBody = bodyCount();
-    w.byRank.assign(w.warm.size(), Impl::Order{0, 0, -1, 2, -1});
+    w.byRank.assign(w.previous.size(), Impl::Order{0, 0, -1, 2, -1});
     w.fresh.clear();
+    size_t next = 0;
     for (size_t i = 0; i < w.found.size(); ++i) {
         const Found& f = w.found[i];
         const std::uint64_t key = contactKey(f.a, f.b, f.feature, staticBody);
-        const Impl::Warm* old = w.findWarm(key);
+        const Impl::Warm* old = w.findWarm(key, next);
         // Field by field into its place: a whole Order built aside and copied would be read back
         // in halves that straddle the writes just made, and wait for them to reach the cache.
         Impl::Order& o = old ? w.byRank[size_t(old->rank)] : w.fresh.emplace_back();
@@ -363,22 +377,26 @@ void PhysicsWorld::followCurved() {
     }
 }
 
-// A counting sort by first body: linear, where a sort by key was O(n log n) with cache misses.
+// The groups by a counting sort by first body: linear, where a sort by key was O(n log n) with
+// cache misses.
 void PhysicsWorld::keepImpulses() {
     Impl& w = *impl_;
     const int n = bodyCount();
-    w.warmBegin.assign(size_t(n) + 2, 0);
-    for (const Contact& c : w.contacts) ++w.warmBegin[size_t(contactKey(c.a, c.b, c.feature, n) >> 40) + 2];
-    for (int i = 2; i <= n + 1; ++i) w.warmBegin[i] += w.warmBegin[i - 1];
-    w.warm.resize(w.contacts.size());
+    w.previous.resize(w.contacts.size());
     w.kept.resize(w.contacts.size());
-    // warmBegin[f + 1] is the next free slot of body f's group; once filled it is group f + 1's start.
     for (size_t i = 0; i < w.contacts.size(); ++i) {
         const Contact& c = w.contacts[i];
-        const std::uint64_t key = contactKey(c.a, c.b, c.feature, n);
-        w.warm[size_t(w.warmBegin[size_t(key >> 40) + 1]++)] = {key, w.rank[i], int(i)};
+        const Impl::Order& o = w.order[size_t(w.rank[i])];
+        w.previous[size_t(o.index)] = {o.key, w.rank[i], int(i)};
         w.kept[i] = {c.normalImpulse, c.tangentImpulse, c.rollImpulse};
     }
+    w.warmBegin.assign(size_t(n) + 2, 0);
+    for (const Impl::Warm& p : w.previous) ++w.warmBegin[size_t(p.key >> 40) + 2];
+    for (int i = 2; i <= n + 1; ++i) w.warmBegin[i] += w.warmBegin[i - 1];
+    w.grouped.resize(w.previous.size());
+    // warmBegin[f + 1] is the next free slot of body f's group; once filled it is group f + 1's start.
+    for (size_t i = 0; i < w.previous.size(); ++i)
+        w.grouped[size_t(w.warmBegin[size_t(w.previous[i].key >> 40) + 1]++)] = {w.previous[i].key, int(i)};
 }
 
 void PhysicsWorld::collideStatic(int body) {
