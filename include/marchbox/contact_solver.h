@@ -76,8 +76,11 @@ struct SolverContext {
 };
 
 // Impacts slower than this do not bounce: settings.restitutionThreshold under gravity, where
-// resting contacts meet at the speed gravity gives them in a step; 0 without gravity.
-double bounceThreshold(const SolverContext& ctx);
+// resting contacts meet at the speed gravity gives them in a step; 0 without gravity. Inline: the
+// relax pass asks for it per batch, and a call there would spill every vector register it holds.
+inline double bounceThreshold(const SolverContext& ctx) {
+    return ctx.gravity > 0.0 ? ctx.settings.restitutionThreshold : 0.0;
+}
 
 // What a contact's rows apply this step: the inverse masses of the solve pass, and of the relax
 // pass with its row masses (other than the solve pass's under shock propagation).

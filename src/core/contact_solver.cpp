@@ -39,10 +39,6 @@ InverseMasses fixingLower(const Contact& c, const PhysicsBody& a, const PhysicsB
 
 }  // namespace
 
-double bounceThreshold(const SolverContext& ctx) {
-    return ctx.gravity > 0.0 ? ctx.settings.restitutionThreshold : 0.0;
-}
-
 Softness makeSoftness(double hertz, double dampingRatio, double h) {
     if (hertz <= 0.0) return {};
     const double omega = 2.0 * M_PI * hertz;
