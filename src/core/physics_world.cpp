@@ -377,8 +377,9 @@ void PhysicsWorld::followCurved() {
     }
 }
 
-// The groups by a counting sort by first body: linear, where a sort by key was O(n log n) with
-// cache misses.
+// Last step's contacts for findWarm: in the order collide() found them, for its walk, and grouped
+// by first body for its search, by a counting sort (linear, where a sort by key was O(n log n)
+// with cache misses).
 void PhysicsWorld::keepImpulses() {
     Impl& w = *impl_;
     const int n = bodyCount();
