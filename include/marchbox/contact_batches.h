@@ -18,9 +18,9 @@
 namespace mb {
 
 // kLanes doubles side by side (GCC's vector extension): one AVX register where the CPU has AVX2 or
-// AVX-512, two SSE2 registers on baseline x86-64 (contact_batches.cpp compiles its passes for
-// each). Aligned to its size even where the baseline would align it less: the AVX code loads it
-// whole.
+// AVX-512; on baseline x86-64 the passes take it in halves, an SSE2 register each
+// (contact_batches.cpp compiles its passes for each). Aligned to its size even where the baseline
+// would align it less: the AVX code loads it whole.
 using Lanes = double __attribute__((vector_size(kLanes * sizeof(double)), aligned(kLanes * sizeof(double))));
 
 // A row set: effective masses (RowMasses) and the inverse masses the impulses are applied with.

@@ -17,27 +17,43 @@ namespace mb {
 
 namespace {
 
+template <class V>
 struct BodyLanes {
-    Lanes3 vel, spin;
+    Lanes3<V> vel, spin;
 };
 
+template <class V>
 struct PairLanes {
-    BodyLanes a, b;
-    Lanes3 deltaA, deltaB;
+    BodyLanes<V> a, b;
+    Lanes3<V> deltaA, deltaB;
 };
 
-[[gnu::always_inline]] inline Lanes3 normalOf(const ContactBatch& c) { return {c.nx, c.ny, c.nz}; }
+// Lanes [first, first + widthOf<V>) of batch c: the whole batch with AVX, a half of it in the
+// baseline. Its fields stay kLanes wide in memory; at(field) loads these lanes of one.
+template <class V>
+struct Slice {
+    ContactBatch& c;
+    int first;
 
-// A body's solver fields are nine doubles in a row (physics.h): vel, spin, delta. The four bodies
-// of a batch side are read as rows (vel and spin.x; spin.y and z; delta.x and y; delta.z) and
+    [[gnu::always_inline]] V operator()(const Lanes& field) const {
+        V v;
+        std::memcpy(&v, reinterpret_cast<const double*>(&field) + first, sizeof v);
+        return v;
+    }
+    [[gnu::always_inline]] void set(Lanes& field, const V& v) const {
+        std::memcpy(reinterpret_cast<double*>(&field) + first, &v, sizeof v);
+    }
+    [[gnu::always_inline]] Lanes3<V> normal() const { return {(*this)(c.nx), (*this)(c.ny), (*this)(c.nz)}; }
+};
+
+// A body's solver fields are nine doubles in a row (physics.h): vel, spin, delta. The bodies of a
+// batch side are read as rows (four wide: vel and spin.x, then pairs; two wide: pairs) and
 // transposed into lanes; vel and spin go back the same way, row by row, so that the next level's
 // reads of the same rows come straight from these writes (a read that straddled two writes would
 // wait for both to reach the cache).
 static_assert(kLanes == 4, "gather and scatter transpose four bodies' rows");
 static_assert(offsetof(PhysicsBody, spin) == 3 * sizeof(double) && offsetof(PhysicsBody, delta) == 6 * sizeof(double),
               "the solver's fields come first in PhysicsBody, in a row");
-
-using Pair = double __attribute__((vector_size(2 * sizeof(double))));
 
 template <class Row>
 [[gnu::always_inline]] inline Row rowAt(const PhysicsBody& body, int field) {
@@ -51,47 +67,77 @@ template <class Row>
     std::memcpy(reinterpret_cast<char*>(&body.vel) + field * sizeof(double), &r, sizeof r);
 }
 
+// The four-wide forms below are unused where the baseline is built alone (see passLevels).
+//
 // Four rows of four become four lanes of four, and back: c[k][l] = r[l][k].
-[[gnu::always_inline]] inline void transpose(const Lanes (&r)[4], Lanes (&c)[4]) {
-    const Lanes t0 = __builtin_shufflevector(r[0], r[1], 0, 4, 2, 6), t1 = __builtin_shufflevector(r[0], r[1], 1, 5, 3, 7);
-    const Lanes t2 = __builtin_shufflevector(r[2], r[3], 0, 4, 2, 6), t3 = __builtin_shufflevector(r[2], r[3], 1, 5, 3, 7);
+[[gnu::always_inline]] inline void transpose(const Quad (&r)[4], Quad (&c)[4]) {
+    const Quad t0 = __builtin_shufflevector(r[0], r[1], 0, 4, 2, 6), t1 = __builtin_shufflevector(r[0], r[1], 1, 5, 3, 7);
+    const Quad t2 = __builtin_shufflevector(r[2], r[3], 0, 4, 2, 6), t3 = __builtin_shufflevector(r[2], r[3], 1, 5, 3, 7);
     c[0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5), c[1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
     c[2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7), c[3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
 }
 
 // Four pairs become two lanes of four.
-[[gnu::always_inline]] inline void transpose(const Pair (&p)[4], Lanes& first, Lanes& second) {
-    const Lanes u = __builtin_shufflevector(p[0], p[2], 0, 1, 2, 3), v = __builtin_shufflevector(p[1], p[3], 0, 1, 2, 3);
+[[gnu::always_inline, maybe_unused]] inline void transpose(const Pair (&p)[4], Quad& first, Quad& second) {
+    const Quad u = __builtin_shufflevector(p[0], p[2], 0, 1, 2, 3), v = __builtin_shufflevector(p[1], p[3], 0, 1, 2, 3);
     first = __builtin_shufflevector(u, v, 0, 4, 2, 6), second = __builtin_shufflevector(u, v, 1, 5, 3, 7);
 }
 
-[[gnu::always_inline]] inline void gatherBodies(PhysicsBody* const (&p)[kLanes], BodyLanes& to, Lanes3& delta) {
-    const Lanes rows[4] = {rowAt<Lanes>(*p[0], 0), rowAt<Lanes>(*p[1], 0), rowAt<Lanes>(*p[2], 0), rowAt<Lanes>(*p[3], 0)};
-    Lanes lanes[4];
-    transpose(rows, lanes);
-    to.vel = {lanes[0], lanes[1], lanes[2]};
-    to.spin.x = lanes[3];
-    const Pair spins[4] = {rowAt<Pair>(*p[0], 4), rowAt<Pair>(*p[1], 4), rowAt<Pair>(*p[2], 4), rowAt<Pair>(*p[3], 4)};
-    transpose(spins, to.spin.y, to.spin.z);
-    const Pair deltas[4] = {rowAt<Pair>(*p[0], 6), rowAt<Pair>(*p[1], 6), rowAt<Pair>(*p[2], 6), rowAt<Pair>(*p[3], 6)};
-    transpose(deltas, delta.x, delta.y);
-    delta.z = Lanes{p[0]->delta.z, p[1]->delta.z, p[2]->delta.z, p[3]->delta.z};
+// Two pairs become two lanes of two, and back.
+[[gnu::always_inline]] inline void transpose(const Pair (&p)[2], Pair& first, Pair& second) {
+    first = __builtin_shufflevector(p[0], p[1], 0, 2), second = __builtin_shufflevector(p[0], p[1], 1, 3);
 }
 
-[[gnu::always_inline]] inline PairLanes gather(const ContactBatch& c) {
-    PairLanes s;
-    gatherBodies(c.a, s.a, s.deltaA);
-    gatherBodies(c.b, s.b, s.deltaB);
+// Fields field and field + 1 of each body, as two lanes.
+template <class V>
+[[gnu::always_inline]] inline void gatherPairs(PhysicsBody* const* p, int field, V& first, V& second) {
+    Pair pairs[widthOf<V>];
+    for (int l = 0; l < widthOf<V>; ++l) pairs[l] = rowAt<Pair>(*p[l], field);
+    transpose(pairs, first, second);
+}
+
+// Fields 0-3: vel and spin.x.
+[[gnu::always_inline, maybe_unused]] inline void gatherRows(PhysicsBody* const* p, Lanes3<Quad>& vel, Quad& spinX) {
+    const Quad rows[4] = {rowAt<Quad>(*p[0], 0), rowAt<Quad>(*p[1], 0), rowAt<Quad>(*p[2], 0), rowAt<Quad>(*p[3], 0)};
+    Quad lanes[4];
+    transpose(rows, lanes);
+    vel = {lanes[0], lanes[1], lanes[2]};
+    spinX = lanes[3];
+}
+
+[[gnu::always_inline]] inline void gatherRows(PhysicsBody* const* p, Lanes3<Pair>& vel, Pair& spinX) {
+    gatherPairs(p, 0, vel.x, vel.y);
+    gatherPairs(p, 2, vel.z, spinX);
+}
+
+template <class V>
+[[gnu::always_inline]] inline void gatherBodies(PhysicsBody* const* p, BodyLanes<V>& to, Lanes3<V>& delta) {
+    gatherRows(p, to.vel, to.spin.x);
+    gatherPairs(p, 4, to.spin.y, to.spin.z);
+    gatherPairs(p, 6, delta.x, delta.y);
+    for (int l = 0; l < widthOf<V>; ++l) delta.z[l] = p[l]->delta.z;
+}
+
+template <class V>
+[[gnu::always_inline]] inline PairLanes<V> gather(const Slice<V>& at) {
+    PairLanes<V> s;
+    gatherBodies(at.c.a + at.first, s.a, s.deltaA);
+    gatherBodies(at.c.b + at.first, s.b, s.deltaB);
     return s;
 }
 
-// One side's rows: vel and spin.x in rows[l], spin.y and z in the halves of spins[l % 2].
+// One side's rows, four wide: vel and spin.x in rows[l], spin.y and z in the halves of spins[l % 2].
 struct BodyRows {
-    Lanes rows[4];
-    Lanes spins[2];
+    Quad rows[4];
+    Quad spins[2];
 };
 
-[[gnu::always_inline]] inline BodyRows rowsOf(const BodyLanes& from) {
+// Two wide: body l's fields 2k and 2k + 1 in pairs[k][l], k = 0, 1, 2 (vel and spin).
+struct BodyPairs {
+    Pair pairs[3][2];
+};
+
+[[gnu::always_inline, maybe_unused]] inline BodyRows rowsOf(const BodyLanes<Quad>& from) {
     BodyRows r;
     transpose({from.vel.x, from.vel.y, from.vel.z, from.spin.x}, r.rows);
     r.spins[0] = __builtin_shufflevector(from.spin.y, from.spin.z, 0, 4, 2, 6);
@@ -99,19 +145,33 @@ struct BodyRows {
     return r;
 }
 
-[[gnu::always_inline]] inline void storeLane(PhysicsBody& body, const BodyRows& from, int l) {
+[[gnu::always_inline]] inline BodyPairs rowsOf(const BodyLanes<Pair>& from) {
+    BodyPairs r;
+    transpose({from.vel.x, from.vel.y}, r.pairs[0][0], r.pairs[0][1]);
+    transpose({from.vel.z, from.spin.x}, r.pairs[1][0], r.pairs[1][1]);
+    transpose({from.spin.y, from.spin.z}, r.pairs[2][0], r.pairs[2][1]);
+    return r;
+}
+
+[[gnu::always_inline, maybe_unused]] inline void storeLane(PhysicsBody& body, const BodyRows& from, int l) {
     storeRow(body, 0, from.rows[l]);
-    const Lanes& spins = from.spins[l % 2];
+    const Quad& spins = from.spins[l % 2];
     storeRow(body, 4, l < 2 ? __builtin_shufflevector(spins, spins, 0, 1) : __builtin_shufflevector(spins, spins, 2, 3));
 }
 
+[[gnu::always_inline]] inline void storeLane(PhysicsBody& body, const BodyPairs& from, int l) {
+    for (int k = 0; k < 3; ++k) storeRow(body, 2 * k, from.pairs[k][l]);
+}
+
 // Body a is written back only where it moves (the static body, shared by every level, never is).
-[[gnu::always_inline]] inline void scatter(const ContactBatch& c, const LaneRows& w, const PairLanes& s) {
-    const BodyRows a = rowsOf(s.a), b = rowsOf(s.b);
-    for (int l = 0; l < kLanes; ++l) {
-        if (l >= c.count) break;
-        if (w.massA[l] > 0.0) storeLane(*c.a[l], a, l);
-        storeLane(*c.b[l], b, l);
+template <class V>
+[[gnu::always_inline]] inline void scatter(const Slice<V>& at, const LaneRows& w, const PairLanes<V>& s) {
+    const auto a = rowsOf(s.a), b = rowsOf(s.b);
+    for (int l = 0; l < widthOf<V>; ++l) {
+        const int lane = at.first + l;
+        if (lane >= at.c.count) break;
+        if (w.massA[lane] > 0.0) storeLane(*at.c.a[lane], a, l);
+        storeLane(*at.c.b[lane], b, l);
     }
 }
 
@@ -119,29 +179,35 @@ struct BodyRows {
 // torques are r_a·(n × p) on a and r_b·(n × p) on b, against their spins: one cross product.
 // A body held fixed has inverse mass 0 and is not moved; nor is a lane whose impulse did not
 // change (its change is 0).
-[[gnu::always_inline]] inline void applyImpulse(PairLanes& s, const ContactBatch& c, const LaneRows& w, const Lanes3& p) {
-    const Lanes3 np = cross(normalOf(c), p);
-    s.a.vel = s.a.vel - w.massA * p;
-    s.a.spin = s.a.spin - (w.inertiaA * c.armA) * np;
-    s.b.vel = s.b.vel + w.massB * p;
-    s.b.spin = s.b.spin - (w.inertiaB * c.armB) * np;
+template <class V>
+[[gnu::always_inline]] inline void applyImpulse(PairLanes<V>& s, const Slice<V>& at, const LaneRows& w, const Lanes3<V>& p) {
+    const Lanes3<V> np = cross(at.normal(), p);
+    s.a.vel = s.a.vel - at(w.massA) * p;
+    s.a.spin = s.a.spin - (at(w.inertiaA) * at(at.c.armA)) * np;
+    s.b.vel = s.b.vel + at(w.massB) * p;
+    s.b.spin = s.b.spin - (at(w.inertiaB) * at(at.c.armB)) * np;
 }
 
 // Along the normal there is no torque (the cross products would only add rounding noise).
-[[gnu::always_inline]] inline void applyNormal(PairLanes& s, const LaneRows& w, const Lanes3& p) {
-    s.a.vel = s.a.vel - w.massA * p;
-    s.b.vel = s.b.vel + w.massB * p;
+template <class V>
+[[gnu::always_inline]] inline void applyNormal(PairLanes<V>& s, const Slice<V>& at, const LaneRows& w, const Lanes3<V>& p) {
+    s.a.vel = s.a.vel - at(w.massA) * p;
+    s.b.vel = s.b.vel + at(w.massB) * p;
 }
 
-[[gnu::always_inline]] inline void applyAngular(PairLanes& s, const LaneRows& w, const Lanes3& l) {
-    s.a.spin = s.a.spin - w.inertiaA * l;
-    s.b.spin = s.b.spin + w.inertiaB * l;
+template <class V>
+[[gnu::always_inline]] inline void applyAngular(PairLanes<V>& s, const Slice<V>& at, const LaneRows& w, const Lanes3<V>& l) {
+    s.a.spin = s.a.spin - at(w.inertiaA) * l;
+    s.b.spin = s.b.spin + at(w.inertiaB) * l;
 }
 
 // Whether any lane carries an impulse (a zero of either sign carries none).
-[[gnu::always_inline]] inline bool anyImpulse(const ContactBatch& c) {
-    const LaneMask bits = LaneMask(c.normalImpulse) | LaneMask(c.tx) | LaneMask(c.ty) | LaneMask(c.tz) |
-                          LaneMask(c.rx) | LaneMask(c.ry) | LaneMask(c.rz);
+template <class V>
+[[gnu::always_inline]] inline bool anyImpulse(const Slice<V>& at) {
+    const ContactBatch& c = at.c;
+    using Mask = MaskOf<V>;
+    const Mask bits = Mask(at(c.normalImpulse)) | Mask(at(c.tx)) | Mask(at(c.ty)) | Mask(at(c.tz)) |
+                      Mask(at(c.rx)) | Mask(at(c.ry)) | Mask(at(c.rz));
     return any(bits << 1);  // the sign bit shifted out
 }
 
@@ -150,74 +216,84 @@ struct BodyRows {
 namespace {
 
 // Returns whether any lane's impulse changed.
-[[gnu::always_inline]] inline bool solveNormal(ContactBatch& c, PairLanes& s, const SolverContext& ctx, const LaneRows& w, bool useBias) {
-    const Lanes3 n = normalOf(c);
-    const Lanes sep = c.separation + dot(s.deltaB - s.deltaA, n);
-    const Lanes zero{};
-    const LaneMask open = sep > zero;
-    const LaneMask push = useBias ? ~open & (sep + c.slop < zero) : LaneMask{};
+template <class V>
+[[gnu::always_inline]] inline bool solveNormal(const Slice<V>& at, PairLanes<V>& s, const SolverContext& ctx, const LaneRows& w, bool useBias) {
+    ContactBatch& c = at.c;
+    const Lanes3<V> n = at.normal();
+    const V sep = at(c.separation) + dot(s.deltaB - s.deltaA, n);
+    const V zero{};
+    const MaskOf<V> open = sep > zero;
+    const MaskOf<V> push = useBias ? ~open & (sep + at(c.slop) < zero) : MaskOf<V>{};
     // Open: speculative, close at most the gap this substep. Pushing: soft, with bias.
-    const Lanes pushBias = maxOf(ctx.soft.biasRate * (sep + c.slop), splat(-ctx.settings.maxPushSpeed));
-    Lanes bias = select(open, sep / ctx.h, select(push, pushBias, zero));
-    const Lanes massScale = select(push, splat(ctx.soft.massScale), splat(1.0));
-    const Lanes impulseScale = select(push, splat(ctx.soft.impulseScale), zero);
+    const V pushBias = maxOf(ctx.soft.biasRate * (sep + at(c.slop)), splat<V>(-ctx.settings.maxPushSpeed));
+    V bias = select(open, sep / ctx.h, select(push, pushBias, zero));
+    const V massScale = select(push, splat<V>(ctx.soft.massScale), splat<V>(1.0));
+    const V impulseScale = select(push, splat<V>(ctx.soft.impulseScale), zero);
     // A curved surface bends away from the straight path a substep takes along it; the solve pass
     // aims the path's end at the surface (RATTLE's position step), the relax pass then works
     // along the normal found there (its velocity step). Exact for a circle: speed is kept.
-    if (useBias) bias += c.curve / ctx.h;
-    const Lanes vn = dot(s.b.vel - s.a.vel, n);
-    const Lanes impulse = -w.normal * massScale * (vn + bias) - impulseScale * c.normalImpulse;
-    Lanes total = maxOf(c.normalImpulse + impulse, zero);
+    if (useBias) bias += at(c.curve) / ctx.h;
+    const V vn = dot(s.b.vel - s.a.vel, n);
+    const V old = at(c.normalImpulse);
+    const V impulse = -at(w.normal) * massScale * (vn + bias) - impulseScale * old;
+    V total = maxOf(old + impulse, zero);
     // An open contact in the relax pass may give back impulse (the solve pass's push-out) but
     // not slow an approach fast enough to bounce: the solve pass before each position update
     // already keeps it from closing past its gap, and at the end of the step that approach is
     // the next step's impact, which Impacts resolves at its time (slowed here, it would bounce
     // lower).
     if (!useBias && ctx.settings.impacts)
-        total = select(open & (vn < splat(-bounceThreshold(ctx))), minOf(total, c.normalImpulse), total);
-    const LaneMask changed = total != c.normalImpulse;  // an open contact that stays open: nothing
+        total = select(open & (vn < splat<V>(-bounceThreshold(ctx))), minOf(total, old), total);
+    const MaskOf<V> changed = total != old;  // an open contact that stays open: nothing
     if (!any(changed)) return false;
-    applyNormal(s, w, (total - c.normalImpulse) * n);
-    c.maxNormalImpulse = select(changed, maxOf(c.maxNormalImpulse, total), c.maxNormalImpulse);
-    c.normalImpulse = total;
+    applyNormal(s, at, w, (total - old) * n);
+    at.set(c.maxNormalImpulse, select(changed, maxOf(at(c.maxNormalImpulse), total), at(c.maxNormalImpulse)));
+    at.set(c.normalImpulse, total);
     return true;
 }
 
-[[gnu::always_inline]] inline void solveFriction(ContactBatch& c, PairLanes& s, const LaneRows& w, double friction) {
+template <class V>
+[[gnu::always_inline]] inline void solveFriction(const Slice<V>& at, PairLanes<V>& s, const LaneRows& w, double friction) {
     // The contact points move at v_a + ω_a × r_a·n and v_b − ω_b × r_b·n; the spin terms lie in
     // the tangent plane already.
-    const Lanes3 n = normalOf(c);
-    Lanes3 vt = s.b.vel - s.a.vel;
-    vt = vt - (dot(vt, n) * n + cross(c.armA * s.a.spin + c.armB * s.b.spin, n));
-    const Lanes3 old{c.tx, c.ty, c.tz};
-    const Lanes3 total = clampLength(old - w.tangent * vt, friction * c.normalImpulse);
-    applyImpulse(s, c, w, total - old);
-    c.tx = total.x, c.ty = total.y, c.tz = total.z;
+    ContactBatch& c = at.c;
+    const Lanes3<V> n = at.normal();
+    Lanes3<V> vt = s.b.vel - s.a.vel;
+    vt = vt - (dot(vt, n) * n + cross(at(c.armA) * s.a.spin + at(c.armB) * s.b.spin, n));
+    const Lanes3<V> old{at(c.tx), at(c.ty), at(c.tz)};
+    const Lanes3<V> total = clampLength(old - at(w.tangent) * vt, friction * at(c.normalImpulse));
+    applyImpulse(s, at, w, total - old);
+    at.set(c.tx, total.x), at.set(c.ty, total.y), at.set(c.tz, total.z);
 }
 
-[[gnu::always_inline]] inline void solveRolling(ContactBatch& c, PairLanes& s, const LaneRows& w, double resistance) {
+template <class V>
+[[gnu::always_inline]] inline void solveRolling(const Slice<V>& at, PairLanes<V>& s, const LaneRows& w, double resistance) {
     if (resistance <= 0.0) return;
-    const Lanes3 relative = s.b.spin - s.a.spin;
-    const Lanes limit = resistance * c.rollRadius * c.normalImpulse;
-    const Lanes3 old{c.rx, c.ry, c.rz};
-    const Lanes3 total = clampLength(old - w.roll * relative, limit);
-    applyAngular(s, w, total - old);
-    c.rx = total.x, c.ry = total.y, c.rz = total.z;
+    ContactBatch& c = at.c;
+    const Lanes3<V> relative = s.b.spin - s.a.spin;
+    const V limit = resistance * at(c.rollRadius) * at(c.normalImpulse);
+    const Lanes3<V> old{at(c.rx), at(c.ry), at(c.rz)};
+    const Lanes3<V> total = clampLength(old - at(w.roll) * relative, limit);
+    applyAngular(s, at, w, total - old);
+    at.set(c.rx, total.x), at.set(c.ry, total.y), at.set(c.rz, total.z);
 }
 
 // The rows of a contact, in Box2D's order: normal, then friction limited by the normal impulse
 // just found, then rolling resistance. A speculative contact that stays open carries no friction:
 // a batch of them skips the rows that would find 0. Returns whether the bodies may have moved.
-[[gnu::always_inline]] inline bool solveRows(ContactBatch& c, PairLanes& s, const SolverContext& ctx, const LaneRows& w, bool useBias) {
-    const bool moved = solveNormal(c, s, ctx, w, useBias);
-    if (!anyImpulse(c)) return moved;
-    solveFriction(c, s, w, ctx.friction);
-    solveRolling(c, s, w, ctx.rolling);
+template <class V>
+[[gnu::always_inline]] inline bool solveRows(const Slice<V>& at, PairLanes<V>& s, const SolverContext& ctx, const LaneRows& w, bool useBias) {
+    const bool moved = solveNormal(at, s, ctx, w, useBias);
+    if (!anyImpulse(at)) return moved;
+    solveFriction(at, s, w, ctx.friction);
+    solveRolling(at, s, w, ctx.rolling);
     return true;
 }
 
-[[gnu::always_inline]] inline void markSupported(const ContactBatch& c) {
-    for (int l = 0; l < kLanes; ++l) {
+template <class V>
+[[gnu::always_inline]] inline void markSupported(const Slice<V>& at) {
+    const ContactBatch& c = at.c;
+    for (int l = at.first; l < at.first + widthOf<V>; ++l) {
         if (l >= c.count) break;
         if (c.normalImpulse[l] <= 0.0) continue;
         c.b[l]->supported = true;
@@ -264,77 +340,103 @@ void ContactBatches::load(const SolverContext& ctx) {
 
 namespace {
 
+enum class Step { warmStart, solve, relax };
+
 // One pass's batches, levels [levelBegin[k], levelBegin[k + 1]) for level k.
 struct Pass {
     ContactBatch* batches;
     const int* levelBegin;
     SolverContext& ctx;
-    bool useBias;
+    Step step;
 };
-using PassLevels = void (*)(const Pass& pass, int begin, int end);  // levels [begin, end)
 
-// Each pass is compiled for AVX-512 and AVX2, where the CPU has them (one instruction for the
-// four lanes, chosen at load time), and for baseline x86-64. Without FMA every product rounds on
-// its own, so all give the same bytes. Clang (the fuzz build) rejects the clones' inlined lane
-// helpers as an ABI change, and other CPUs have other names: those build the baseline alone.
-#if defined(__x86_64__) && !defined(__clang__)
-#define MB_PASS_CLONES [[gnu::target_clones("arch=x86-64-v4", "avx2", "default")]]
-#else
-#define MB_PASS_CLONES
-#endif
+// A batch's lanes are solved widthOf<V> at a time: four wide, the whole batch, no test; two wide,
+// each half that holds a contact (the last batch of a level may hold one or two).
+template <class V>
+[[gnu::always_inline]] inline int lanesHeld(const ContactBatch& c) {
+    return widthOf<V> == kLanes ? kLanes : c.count;
+}
 
-MB_PASS_CLONES void warmStartLevels(const Pass& pass, int begin, int end) {
+template <class V>
+[[gnu::always_inline]] inline void warmStartBatches(const Pass& pass, int begin, int end) {
     for (int i = pass.levelBegin[begin]; i < pass.levelBegin[end]; ++i) {
         ContactBatch& c = pass.batches[i];
-        if (!anyImpulse(c)) continue;
-        PairLanes s = gather(c);
-        applyNormal(s, c.solve, c.normalImpulse * normalOf(c));
-        applyImpulse(s, c, c.solve, {c.tx, c.ty, c.tz});
-        applyAngular(s, c.solve, {c.rx, c.ry, c.rz});
-        scatter(c, c.solve, s);
+        for (int first = 0; first < lanesHeld<V>(c); first += widthOf<V>) {
+            const Slice<V> at{c, first};
+            if (!anyImpulse(at)) continue;
+            PairLanes<V> s = gather(at);
+            applyNormal(s, at, c.solve, at(c.normalImpulse) * at.normal());
+            applyImpulse(s, at, c.solve, {at(c.tx), at(c.ty), at(c.tz)});
+            applyAngular(s, at, c.solve, {at(c.rx), at(c.ry), at(c.rz)});
+            scatter(at, c.solve, s);
+        }
     }
 }
 
-template <bool useBias>
+template <class V, bool useBias>
 [[gnu::always_inline]] inline void solveBatches(const Pass& pass, int begin, int end) {
     for (int i = pass.levelBegin[begin]; i < pass.levelBegin[end]; ++i) {
         ContactBatch& c = pass.batches[i];
         const LaneRows& w = useBias ? c.solve : c.relax;
-        PairLanes s = gather(c);
-        if (!solveRows(c, s, pass.ctx, w, useBias)) continue;
-        scatter(c, w, s);
-        if (useBias) markSupported(c);
+        for (int first = 0; first < lanesHeld<V>(c); first += widthOf<V>) {
+            const Slice<V> at{c, first};
+            PairLanes<V> s = gather(at);
+            if (!solveRows(at, s, pass.ctx, w, useBias)) continue;
+            scatter(at, w, s);
+            if (useBias) markSupported(at);
+        }
     }
 }
 
 // The solve and relax passes compiled apart, each with what it does not use left out.
-MB_PASS_CLONES void solveLevels(const Pass& pass, int begin, int end) {
-    if (pass.useBias) solveBatches<true>(pass, begin, end);
-    else solveBatches<false>(pass, begin, end);
+template <class V>
+[[gnu::always_inline]] inline void passLevelsOf(const Pass& pass, int begin, int end) {
+    switch (pass.step) {
+    case Step::warmStart: return warmStartBatches<V>(pass, begin, end);
+    case Step::solve: return solveBatches<V, true>(pass, begin, end);
+    case Step::relax: return solveBatches<V, false>(pass, begin, end);
+    }
+}
+
+// Levels [begin, end) of a pass, compiled for AVX-512 and AVX2 where the CPU has them (one
+// instruction for a batch's four lanes, chosen at load time) and for baseline x86-64, which takes
+// a batch in halves: four-wide lanes would each fill two of its sixteen SSE2 registers and spill
+// (physics_step_bench 1000 180 under callgrind: 1.78e9 instructions four wide, 1.30e9 in halves).
+// The lanes of a batch are independent, and without FMA every product rounds on its own, so all
+// give the same bytes. Clang (the fuzz build) rejects the AVX
+// versions' inlined lane helpers as an ABI change, and other CPUs have other names: those build
+// the baseline alone.
+#if defined(__x86_64__) && !defined(__clang__)
+[[gnu::target("arch=x86-64-v4")]] void passLevels(const Pass& pass, int begin, int end) { passLevelsOf<Quad>(pass, begin, end); }
+[[gnu::target("avx2")]] void passLevels(const Pass& pass, int begin, int end) { passLevelsOf<Quad>(pass, begin, end); }
+[[gnu::target("default")]]
+#endif
+void passLevels(const Pass& pass, int begin, int end) {
+    passLevelsOf<Pair>(pass, begin, end);
 }
 
 // The levels of the first two runs share no body: with a worker, it takes the first run's while
 // this thread takes the second's. The same bytes whatever the thread count.
-void byLevels(const ContactGraph& graph, PassLevels levels, const Pass& pass) {
+void byLevels(const ContactGraph& graph, const Pass& pass) {
     Worker* worker = pass.ctx.worker;
-    auto first = [&] { levels(pass, 0, graph.runEnd[0]); };
+    auto first = [&] { passLevels(pass, 0, graph.runEnd[0]); };
     if (worker) worker->post(first);
     else first();
-    levels(pass, graph.runEnd[0], graph.runEnd[1]);
+    passLevels(pass, graph.runEnd[0], graph.runEnd[1]);
     if (worker) worker->wait();
-    levels(pass, graph.runEnd[1], graph.levels());
+    passLevels(pass, graph.runEnd[1], graph.levels());
 }
 
 }  // namespace
 
 void ContactBatches::warmStart(SolverContext& ctx) {
-    byLevels(graph_, warmStartLevels, {batches_.data(), graph_.levelBegin.data(), ctx, true});
+    byLevels(graph_, {batches_.data(), graph_.levelBegin.data(), ctx, Step::warmStart});
 }
 
 void ContactBatches::solve(SolverContext& ctx, bool useBias) {
     if (useBias)
         for (PhysicsBody& b : ctx.bodies) b.supported = false;
-    byLevels(graph_, solveLevels, {batches_.data(), graph_.levelBegin.data(), ctx, useBias});
+    byLevels(graph_, {batches_.data(), graph_.levelBegin.data(), ctx, useBias ? Step::solve : Step::relax});
 }
 
 void ContactBatches::store(std::vector<Contact>& contacts) const {
