@@ -59,6 +59,9 @@ struct PhysicsSettings {
     double maxSpeed = 1e4;              // m/s, a guard against runaway input
     int threads = 1;                    // 1 or 2: the solver's second thread, where the contacts
                                         // are many; the result is the same either way
+    bool twoLanes = false;              // the solver's baseline x86-64 code (a batch in halves)
+                                        // whatever the CPU has: tests compare the two, which
+                                        // give the same bytes
 };
 
 //-----------------------------------------------------------------------------

@@ -406,25 +406,30 @@ template <class V>
 // give the same bytes. Clang (the fuzz build) rejects the AVX
 // versions' inlined lane helpers as an ABI change, and other CPUs have other names: those build
 // the baseline alone.
+void twoLanes(const Pass& pass, int begin, int end) { passLevelsOf<Pair>(pass, begin, end); }
+
 #if defined(__x86_64__) && !defined(__clang__)
 [[gnu::target("arch=x86-64-v4")]] void passLevels(const Pass& pass, int begin, int end) { passLevelsOf<Quad>(pass, begin, end); }
 [[gnu::target("avx2")]] void passLevels(const Pass& pass, int begin, int end) { passLevelsOf<Quad>(pass, begin, end); }
 [[gnu::target("default")]]
 #endif
 void passLevels(const Pass& pass, int begin, int end) {
-    passLevelsOf<Pair>(pass, begin, end);
+    twoLanes(pass, begin, end);
 }
 
 // The levels of the first two runs share no body: with a worker, it takes the first run's while
 // this thread takes the second's. The same bytes whatever the thread count.
 void byLevels(const ContactGraph& graph, const Pass& pass) {
     Worker* worker = pass.ctx.worker;
-    auto first = [&] { passLevels(pass, 0, graph.runEnd[0]); };
+    auto levels = [&](int begin, int end) {
+        pass.ctx.settings.twoLanes ? twoLanes(pass, begin, end) : passLevels(pass, begin, end);
+    };
+    auto first = [&] { levels(0, graph.runEnd[0]); };
     if (worker) worker->post(first);
     else first();
-    passLevels(pass, graph.runEnd[0], graph.runEnd[1]);
+    levels(graph.runEnd[0], graph.runEnd[1]);
     if (worker) worker->wait();
-    passLevels(pass, graph.runEnd[1], graph.levels());
+    levels(graph.runEnd[1], graph.levels());
 }
 
 }  // namespace
