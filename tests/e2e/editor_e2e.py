@@ -543,6 +543,27 @@ def case_save_replace(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+def case_save_as_folder(app, scene):
+    """Save As onto a folder is refused at once, saying so, with no offer to replace it; the
+    path field keeps the keys, so the path typed next and Return save there."""
+    folder = os.path.join(app.workdir, 'shaders')
+    target = os.path.join(app.workdir, 'fixed.txt')
+    app.menu('File', 'Save As...')
+    app.wait('typing Save scene as/path')
+    app.type(folder)
+    app.key('Return')
+    said = app.wait('save')
+    check(said == "save-failed cannot save '%s': is a directory" % folder, 'a folder as target: %r' % said)
+    app.wait('typing Save scene as/path')  # the field took the keys again, its text selected
+    app.type(target)
+    app.key('Return')
+    check(app.wait('save ') == 'save ' + target, 'the path typed after the refusal was not saved to')
+    check(scene_values(target, 'object', 'pos') == scene_values(scene, 'object', 'pos'),
+          'the saved file does not hold the scene')
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
 VIEW = (420, 140, 620, 340)  # x0, y0, x1, y1: the 3D view clear of the panels and statistics
 
 
