@@ -165,7 +165,16 @@ static void unsavedPrompt(UiContext& c) {
 static void errorsPopup(UiContext& c) {
     if (!beginModal(kErrorsPopup)) return;
     ImGui::TextUnformatted("The file did not load; the open scene is unchanged.");
+    // The errors scroll in a list of at most half the window, so OK stays on screen however
+    // many there are (up to 100).
+    const ImVec2 screen = ImGui::GetIO().DisplaySize;
+    float width = 0.0f;
+    for (const std::string& e : c.ui.openErrors) width = std::max(width, ImGui::CalcTextSize(e.c_str()).x);
+    const float height = ImGui::GetTextLineHeightWithSpacing() * float(c.ui.openErrors.size());
+    const float bar = ImGui::GetStyle().ScrollbarSize;
+    ImGui::BeginChild("errors", ImVec2(std::min(width + bar, screen.x * 0.9f), std::min(height, screen.y * 0.5f)));
     for (const std::string& e : c.ui.openErrors) fieldErrorLine(e);
+    ImGui::EndChild();
     if (button(kErrorsPopup, "OK") || escaped(c)) {
         c.ui.openErrors.clear();
         ImGui::CloseCurrentPopup();
