@@ -9,7 +9,8 @@ namespace mb {
 
 // Returns "" on success, else why it failed in a few words (strerror, or "is a directory").
 // On failure the old file is whole and no temporary is left. A symbolic link at `path` is kept
-// and the file it points to replaced; a device, pipe or folder is refused.
+// and the file it points to replaced; a device, pipe or folder is refused. The replaced file's
+// permission bits carry over to the new one.
 std::string replaceFile(const std::string& path, std::string_view bytes);
 
 }  // namespace mb

@@ -54,10 +54,10 @@ static bool button(const char* popup, const char* label) {
     return clicked;
 }
 
-// The path field, focused when the dialog appears; Enter confirms. Wide enough to show the
-// whole path, up to the window's width.
-static bool pathField(const char* popup, std::string* path) {
-    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+// The path field, focused when the dialog appears or `refocus` asks; Enter confirms. Wide
+// enough to show the whole path, up to the window's width.
+static bool pathField(const char* popup, std::string* path, bool refocus = false) {
+    if (ImGui::IsWindowAppearing() || refocus) ImGui::SetKeyboardFocusHere();
     const float pad = 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetFontSize();
     const float room = ImGui::GetIO().DisplaySize.x - 120.0f;  // the label and the window's edges
     ImGui::SetNextItemWidth(std::max(480.0f, std::min(ImGui::CalcTextSize(path->c_str()).x + pad, room)));
@@ -106,7 +106,8 @@ static bool confirmedTarget(UiContext& c, bool go) {
     const std::string& path = c.ui.pathField;
     const std::string& own = c.editor.document().path();
     bool same = path == own || (!own.empty() && std::filesystem::equivalent(path, own, ec));
-    bool other = !same && std::filesystem::exists(path, ec);
+    // Only a file is replaced; a folder or device is refused by the save, which says so.
+    bool other = !same && std::filesystem::is_regular_file(path, ec);
     if (other && go && c.ui.replacePath != path) {
         c.ui.replacePath = path;
         emitEvent("confirm replace " + path);
@@ -119,7 +120,8 @@ static bool confirmedTarget(UiContext& c, bool go) {
 
 static void saveAsDialog(UiContext& c) {
     if (!beginModal(kSaveAsPopup)) return;
-    bool go = pathField(kSaveAsPopup, &c.ui.pathField);
+    bool enter = pathField(kSaveAsPopup, &c.ui.pathField, c.ui.refocusPath);
+    bool go = enter;
     go |= button(kSaveAsPopup, "Save");
     ImGui::SameLine();
     bool cancel = button(kSaveAsPopup, "Cancel") || escaped(c);
@@ -128,6 +130,9 @@ static void saveAsDialog(UiContext& c) {
     std::string* why = c.ui.messages.at(Place::SaveAs);
     bool saved = go && c.editor.saveAs(c.ui.pathField, why);
     if (saved) why->clear();
+    // A failed save keeps the keys in the field, so the path can be fixed at once. Not after
+    // the replace warning: a held Return would repeat into the Save that replaces the file.
+    c.ui.refocusPath = enter && go && !saved;
     if (saved || cancel) {
         c.ui.replacePath.clear();
         ImGui::CloseCurrentPopup();
@@ -160,7 +165,16 @@ static void unsavedPrompt(UiContext& c) {
 static void errorsPopup(UiContext& c) {
     if (!beginModal(kErrorsPopup)) return;
     ImGui::TextUnformatted("The file did not load; the open scene is unchanged.");
+    // The errors scroll in a list of at most half the window, so OK stays on screen however
+    // many there are (up to 100).
+    const ImVec2 screen = ImGui::GetIO().DisplaySize;
+    float width = 0.0f;
+    for (const std::string& e : c.ui.openErrors) width = std::max(width, ImGui::CalcTextSize(e.c_str()).x);
+    const float height = ImGui::GetTextLineHeightWithSpacing() * float(c.ui.openErrors.size());
+    const float bar = ImGui::GetStyle().ScrollbarSize;
+    ImGui::BeginChild("errors", ImVec2(std::min(width + bar, screen.x * 0.9f), std::min(height, screen.y * 0.5f)));
     for (const std::string& e : c.ui.openErrors) fieldErrorLine(e);
+    ImGui::EndChild();
     if (button(kErrorsPopup, "OK") || escaped(c)) {
         c.ui.openErrors.clear();
         ImGui::CloseCurrentPopup();

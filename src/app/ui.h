@@ -48,6 +48,7 @@ struct UiState {
     std::vector<std::string> openErrors;   // FILE:LINE lines of the last failed open
     bool saveThenLeave = false;            // Save As was asked for by the unsaved-changes prompt
     std::string replacePath;               // Save As warned once that this file exists
+    bool refocusPath = false;              // Save As failed on Enter: the field keeps the keys
     bool escape = false;                   // Esc this frame: the open dialog cancels
 
     Messages messages;                     // refusals and failures, each in its place, in red

@@ -12,6 +12,7 @@
 #include <csignal>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -34,12 +35,12 @@ namespace {
 
 // Creates a new, empty file beside `path` with a name no one else uses (pid + counter, and
 // O_EXCL for anything left over). Returns the descriptor, or -1 with errno set.
-int createTemp(const std::string& path, std::string* tmp) {
+int createTemp(const std::string& path, mode_t mode, std::string* tmp) {
     static std::atomic<unsigned> counter{0};
     for (int attempt = 0; attempt < 100; ++attempt) {
         std::string name = path + ".tmp" + std::to_string(::getpid()) + "." +
                            std::to_string(counter++);
-        int fd = fileOps().open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        int fd = fileOps().open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, mode);
         if (fd >= 0) *tmp = name;
         if (fd >= 0 || errno != EEXIST) return fd;
     }
@@ -60,10 +61,13 @@ int writeAll(int fd, std::string_view text) {
 
 // Writes `text` to a new temporary file beside `path` and flushes it to disk; no stdio
 // buffer is involved, so fsync is the flush. Returns 0 or an errno. *tmp names the file as
-// soon as it exists, so the caller can remove it whatever happens next.
-int writeTemp(const std::string& path, std::string_view text, std::string* tmp) {
-    int fd = createTemp(path, tmp);
+// soon as it exists, so the caller can remove it whatever happens next. `keep`: the mode of
+// the file it replaces, set past the umask, so a private (0600) or shared (0664) file stays so.
+int writeTemp(const std::string& path, std::string_view text, std::optional<mode_t> keep,
+              std::string* tmp) {
+    int fd = createTemp(path, keep.value_or(0666), tmp);
     if (fd < 0) return errno;
+    if (keep) ::fchmod(fd, *keep);  // best effort: some file systems have no modes to keep
     int err = writeAll(fd, text);
     if (err == 0 && fileOps().fsync(fd) != 0) err = errno;
     // Closed whatever happened, and checked: NFS may report a failed write only here.
@@ -72,14 +76,16 @@ int writeTemp(const std::string& path, std::string_view text, std::string* tmp) 
 }
 
 // The file a save replaces: `path`, or the file a symbolic link there points to, so the link
-// survives. Returns "" or why `path` cannot be saved to. A device, pipe or folder is refused:
-// the rename would replace it (as root, /dev/stdout itself) rather than write into it.
-std::string saveTarget(const std::string& path, std::string* target) {
+// survives, and that file's permission bits in *mode. Returns "" or why `path` cannot be saved
+// to. A device, pipe or folder is refused: the rename would replace it (as root, /dev/stdout
+// itself) rather than write into it.
+std::string saveTarget(const std::string& path, std::string* target, std::optional<mode_t>* mode) {
     *target = path;
     struct stat st;
     if (::stat(path.c_str(), &st) != 0) return "";  // nothing there yet: the save creates it
     if (S_ISDIR(st.st_mode)) return "is a directory";
     if (!S_ISREG(st.st_mode)) return "not a regular file";
+    *mode = st.st_mode & 0777;
     if (::lstat(path.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return "";
     std::unique_ptr<char, decltype(&std::free)> real(::realpath(path.c_str(), nullptr), std::free);
     if (real) *target = real.get();
@@ -135,9 +141,10 @@ private:
 std::string replaceFile(const std::string& path, std::string_view bytes) {
     TerminationHeld held;
     std::string target, tmp;
-    std::string why = saveTarget(path, &target);
+    std::optional<mode_t> mode;
+    std::string why = saveTarget(path, &target, &mode);
     if (why.empty()) {
-        int err = writeTemp(target, bytes, &tmp);
+        int err = writeTemp(target, bytes, mode, &tmp);
         if (err == 0 && fileOps().rename(tmp.c_str(), target.c_str()) != 0) err = errno;
         if (err == 0) return "";
         why = std::strerror(err);

@@ -48,9 +48,16 @@ bool matches(std::string_view s, const std::regex& re, std::cmatch* m = nullptr)
 
 std::string_view view(const std::csub_match& m) { return {m.first, size_t(m.length())}; }
 
+// Control bytes (a lone CR, ESC, NUL) are shown as '?': echoed raw they would rewrite the
+// terminal the message is printed on. A cut backs off to a whole UTF-8 character.
 std::string quote(std::string_view s) {
-    if (s.size() > kMaxQuote) return "'" + std::string(s.substr(0, kMaxQuote)) + "...'";
-    return "'" + std::string(s) + "'";
+    size_t n = s.size();
+    if (n > kMaxQuote)
+        for (n = kMaxQuote; n > 0 && (s[n] & 0xC0) == 0x80;) --n;
+    std::string q(s.substr(0, n));
+    for (char& c : q)
+        if ((unsigned char)c < 0x20 || c == 0x7f) c = '?';
+    return "'" + q + (n < s.size() ? "...'" : "'");
 }
 
 // from_chars reports underflow and overflow alike. long double (to 1e±4932) holds any mantissa

@@ -134,10 +134,13 @@ bool acceptVec(Field f, glm::vec3 typed, glm::vec3 kept, std::string* why) {
     return true;
 }
 
+// A file's lines end at kMaxLineBytes: a longer name would save a material line that no longer
+// loads. kMaxNameBytes leaves the line room for every other key, and for duplicates' "-copy"s.
 bool validateName(const std::string& name, std::string* why) {
     auto allowed = [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '.' || c == '-'; };
-    if (!name.empty() && std::all_of(name.begin(), name.end(), allowed)) return true;
-    *why = "a name is letters, digits, '_', '.' or '-', at least one";
+    if (!name.empty() && name.size() <= kMaxNameBytes && std::all_of(name.begin(), name.end(), allowed))
+        return true;
+    *why = "a name is letters, digits, '_', '.' or '-', 1 to " + std::to_string(kMaxNameBytes);
     return false;
 }
 

@@ -251,6 +251,16 @@ TEST(SceneErrors, EachKindWithItsLine) {
     }
 }
 
+// `check` prints messages on a terminal: a quoted CR, ESC or NUL from the file would rewrite it,
+// and a cut through a UTF-8 character would print half of one.
+TEST(SceneErrors, QuotedTextHasNoControlBytesAndWholeCharacters) {
+    expectError("camera fov:\x1b[2J40", 1, "'fov' must be a number, got '?[2J40'");
+    expectError("camera fov:40\r fov:30", 1, "expected key:value, got 'fov:40?'");
+    expectError(std::string("camera fov:4\0", 13), 1, "'fov' must be a number, got '4?'");
+    const std::string e39 = std::string(39, 'e') + "\xC3\xA9";  // 'é' straddles byte 40
+    expectError("camera " + e39 + ":1", 1, "expected key:value, got '" + std::string(39, 'e') + "...'");
+}
+
 // Every range in the spec's table: the value just outside fails, the bound itself loads.
 TEST(SceneErrors, EveryRangeRejectsOutsideAndAcceptsTheBound) {
     struct Case {

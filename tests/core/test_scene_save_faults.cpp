@@ -311,6 +311,16 @@ TEST_F(SaveFaults, DeviceAsTargetIsRefusedAndLeftAlone) {
     EXPECT_TRUE(S_ISCHR(st.st_mode));
 }
 
+// The rename puts a new file in place: it must not trade a private file's mode for the umask's.
+TEST_F(SaveFaults, TheReplacedFilesModeIsKept) {
+    for (fs::perms mode : {fs::perms(0600), fs::perms(0664), fs::perms(0640)}) {
+        fs::permissions(target(), mode);
+        std::string error;
+        ASSERT_TRUE(saveScene(target(), scene_, &error)) << error;
+        EXPECT_EQ(int(fs::status(target()).permissions()), int(mode)) << "modes in decimal";
+    }
+}
+
 TEST_F(SaveFaults, SymlinkSurvivesAndItsFileIsSaved) {
     fs::create_symlink(target(), dir_ / "link.txt");
     std::string error;

@@ -441,10 +441,11 @@ def case_simulate(app, scene):
 
 
 def case_open_error(app, scene):
-    """A file that fails to load leaves the open scene as it was."""
+    """A file that fails to load leaves the open scene as it was. Its 41 errors scroll in a
+    list: OK stays on screen."""
     bad = os.path.join(app.workdir, 'bad.txt')
     with open(bad, 'w') as f:
-        f.write('material r:1 g:0 b:0\nobject type:sphere pos:0,1\n')
+        f.write('material r:1 g:0 b:0\nobject type:sphere pos:0,1\n' + 'bogus\n' * 40)
     app.key('ctrl+o')
     app.wait('typing Open scene/path')
     app.type(bad)
@@ -539,6 +540,27 @@ def case_save_replace(app, scene):
     check(app.wait('save ') == 'save ' + target, 'the second Save did not replace the file')
     check(scene_values(target, 'object', 'pos') == scene_values(scene, 'object', 'pos'),
           'the replaced file does not hold the scene')
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def case_save_as_folder(app, scene):
+    """Save As onto a folder is refused at once, saying so, with no offer to replace it; the
+    path field keeps the keys, so the path typed next and Return save there."""
+    folder = os.path.join(app.workdir, 'shaders')
+    target = os.path.join(app.workdir, 'fixed.txt')
+    app.menu('File', 'Save As...')
+    app.wait('typing Save scene as/path')
+    app.type(folder)
+    app.key('Return')
+    said = app.wait('save')
+    check(said == "save-failed cannot save '%s': is a directory" % folder, 'a folder as target: %r' % said)
+    app.wait('typing Save scene as/path')  # the field took the keys again, its text selected
+    app.type(target)
+    app.key('Return')
+    check(app.wait('save ') == 'save ' + target, 'the path typed after the refusal was not saved to')
+    check(scene_values(target, 'object', 'pos') == scene_values(scene, 'object', 'pos'),
+          'the saved file does not hold the scene')
     app.key('Escape')
     check(app.finish() == 0, 'exit status not 0')
 

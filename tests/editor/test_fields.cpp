@@ -1,5 +1,6 @@
 // test_fields.cpp — typed values are checked against SCENE_FORMAT.md's ranges.
 #include "marchbox/editor/fields.h"
+#include "marchbox/scene_io.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -136,4 +137,22 @@ TEST(Fields, MaterialNames) {
     EXPECT_FALSE(validateName("", &why));
     EXPECT_FALSE(validateName("two words", &why));
     EXPECT_FALSE(validateName("r:1", &why));
+}
+
+// A name the editor takes must save to a file that loads: lines stop at 4096 bytes.
+TEST(Fields, MaterialNamesTakenSaveToALoadableFile) {
+    std::string why;
+    for (size_t length : {size_t(1), kMaxNameBytes, size_t(kMaxLineBytes)}) {
+        Scene scene;
+        scene.materials.push_back(Material{});
+        scene.materials[0].name = std::string(length, 'a');
+        std::vector<SceneError> errors;
+        bool taken = validateName(scene.materials[0].name, &why);
+        EXPECT_EQ(taken, length <= kMaxNameBytes) << length;
+        if (taken) {
+            EXPECT_TRUE(parseScene(formatScene(scene), nullptr, &errors)) << length;
+        }
+    }
+    EXPECT_FALSE(validateName(std::string(kMaxNameBytes + 1, 'a'), &why));
+    EXPECT_EQ(why, "a name is letters, digits, '_', '.' or '-', 1 to 256");
 }

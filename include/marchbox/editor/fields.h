@@ -60,7 +60,8 @@ bool validateVec(Field f, glm::vec3 v, std::string* why);
 bool acceptField(Field f, double typed, double kept, std::string* why);
 bool acceptVec(Field f, glm::vec3 typed, glm::vec3 kept, std::string* why);
 
-// A material name: one or more of A-Z a-z 0-9 _ . -
+// A material name: 1 to kMaxNameBytes of A-Z a-z 0-9 _ . -
+constexpr size_t kMaxNameBytes = 256;
 bool validateName(const std::string& name, std::string* why);
 
 }  // namespace mb
