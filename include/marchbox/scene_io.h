@@ -25,7 +25,8 @@ struct SceneError {
 // one entry, in line order) and leaves *out untouched.
 bool parseScene(std::string_view text, Scene* out, std::vector<SceneError>* errors);
 
-// Reads and parses a file. Errors come back formatted "FILE:LINE: message", one per entry.
+// Reads and parses a file. Errors come back formatted "FILE:LINE: message", one per entry, each
+// one line: FILE with its control bytes shown as '?' (printable.h).
 bool loadScene(const std::string& path, Scene* out, std::vector<std::string>* errors);
 
 // The canonical text of a scene, its comments where they belong.

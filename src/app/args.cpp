@@ -1,6 +1,8 @@
 // args.cpp — strict parsing of the options in ../shared/CLI.md.
 #include "args.h"
 
+#include "marchbox/printable.h"
+
 #include <charconv>
 #include <cmath>
 
@@ -8,10 +10,7 @@ namespace mb {
 
 std::string quoteArg(const std::string& arg) {
     constexpr size_t kMax = 60;
-    std::string q = arg.substr(0, kMax);
-    for (char& c : q)
-        if ((unsigned char)c < 0x20 || c == 0x7f) c = '?';
-    return "'" + q + (arg.size() > kMax ? "...'" : "'");
+    return "'" + printable(arg.substr(0, kMax)) + (arg.size() > kMax ? "...'" : "'");
 }
 
 static bool parseInt(const std::string& s, int lo, int hi, int* out) {

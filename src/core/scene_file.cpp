@@ -3,6 +3,7 @@
 #include "marchbox/scene_io.h"
 
 #include "marchbox/atomic_file.h"
+#include "marchbox/printable.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -50,9 +51,10 @@ std::string readFile(const std::string& path, std::string* text) {
     return readAll(fd, text);
 }
 
+// A name with a newline in it would make the one error two lines; its control bytes show as '?'.
 std::string formatError(const std::string& path, const SceneError& e) {
-    if (e.line == 0) return path + ": " + e.message;
-    return path + ":" + std::to_string(e.line) + ": " + e.message;
+    if (e.line == 0) return printable(path) + ": " + e.message;
+    return printable(path) + ":" + std::to_string(e.line) + ": " + e.message;
 }
 
 }  // namespace
@@ -72,7 +74,7 @@ bool loadScene(const std::string& path, Scene* out, std::vector<std::string>* er
 
 bool saveScene(const std::string& path, const Scene& scene, std::string* error) {
     std::string why = replaceFile(path, formatScene(scene));
-    if (!why.empty() && error) *error = "cannot save '" + path + "': " + why;
+    if (!why.empty() && error) *error = "cannot save '" + printable(path) + "': " + why;
     return why.empty();
 }
 

@@ -8,6 +8,8 @@
 // the ones after the last record are the file's end.
 #include "marchbox/scene_io.h"
 
+#include "marchbox/printable.h"
+
 #include "scene_schema.h"
 
 #include <algorithm>
@@ -54,10 +56,7 @@ std::string quote(std::string_view s) {
     size_t n = s.size();
     if (n > kMaxQuote)
         for (n = kMaxQuote; n > 0 && (s[n] & 0xC0) == 0x80;) --n;
-    std::string q(s.substr(0, n));
-    for (char& c : q)
-        if ((unsigned char)c < 0x20 || c == 0x7f) c = '?';
-    return "'" + q + (n < s.size() ? "...'" : "'");
+    return "'" + printable(s.substr(0, n)) + (n < s.size() ? "...'" : "'");
 }
 
 // from_chars reports underflow and overflow alike. long double (to 1e±4932) holds any mantissa

@@ -72,6 +72,9 @@ files_cases() {
   expect 1 "$mb" simulate "$src/scenes"
   expect 1 "$mb" check "$src/scenes"
   expect 1 "$mb" check "$tmp/missing.txt"
+  # A file name with a newline in it: each error still one line.
+  printf 'world gravity:-1\n' >"$tmp/$(printf 'two\nlines').txt"
+  expect_says "two?lines.txt:1: 'gravity' must be >= 0" 1 "$mb" check "$tmp/$(printf 'two\nlines').txt"
   # 8 MB scenes: one line of 8 MB, and 8 MB of objects past the limit. Each is one error.
   head -c 8388608 /dev/zero | tr '\0' x >"$tmp/line.txt"
   expect_says "line longer than 4096 bytes" 1 "$mb" check "$tmp/line.txt"

@@ -704,6 +704,22 @@ TEST_F(SceneFile, UnreadablePathsGiveOneErrorWithoutLine) {
     EXPECT_EQ(errors[0], dir_.string() + ": is a directory");
 }
 
+// `check` promises one line per error: a newline or ESC in the file's name shows as '?'.
+TEST_F(SceneFile, ControlBytesInTheFileNameKeepEachErrorOneLine) {
+    write("two\nlines\x1b.txt", "camera fov:45\nworld gravity:-1\n");
+    Scene s;
+    std::vector<std::string> errors;
+    EXPECT_FALSE(loadScene(path("two\nlines\x1b.txt"), &s, &errors));
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_EQ(errors[0], path("two?lines?.txt") + ":2: 'gravity' must be >= 0");
+    EXPECT_FALSE(loadScene(path("gone\r.txt"), &s, &errors));
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_EQ(errors[0], path("gone?.txt") + ": cannot open: No such file or directory");
+    std::string error;
+    EXPECT_FALSE(saveScene(path("no\ndir/scene.txt"), Scene{}, &error));
+    EXPECT_EQ(error, "cannot save '" + path("no?dir/scene.txt") + "': No such file or directory");
+}
+
 TEST_F(SceneFile, HugeFileIsRefusedWithoutReadingIt) {
     std::string big = path("big.txt");
     write("big.txt", "");
