@@ -47,6 +47,13 @@ static bool escaped(UiContext& c) {
     return esc;
 }
 
+// Return over a dialog with no field: its OK. Only in the frame Return goes down, so the press
+// that opened the dialog (Return in Open's path field), held on, does not also close it.
+static bool returnPressed() {
+    return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
+           ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter), false);
+}
+
 // A button with a widget mark.
 static bool button(const char* popup, const char* label) {
     bool clicked = ImGui::Button(label);
@@ -175,7 +182,7 @@ static void errorsPopup(UiContext& c) {
     ImGui::BeginChild("errors", ImVec2(std::min(width + bar, screen.x * 0.9f), std::min(height, screen.y * 0.5f)));
     for (const std::string& e : c.ui.openErrors) fieldErrorLine(e);
     ImGui::EndChild();
-    if (button(kErrorsPopup, "OK") || escaped(c)) {
+    if (button(kErrorsPopup, "OK") || returnPressed() || escaped(c)) {
         c.ui.openErrors.clear();
         ImGui::CloseCurrentPopup();
     }
