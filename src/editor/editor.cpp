@@ -80,6 +80,11 @@ bool Editor::save(std::string* error) {
 }
 
 bool Editor::saveAs(const std::string& path, std::string* error) {
+    if (path.empty()) {  // not a file that cannot be written: nothing to write to
+        *error = "type a file name to save the scene to";
+        emitEvent("refuse " + *error);
+        return false;
+    }
     // What is on screen is what gets saved: a running simulation is recorded first.
     sim_.commitRun(doc_);
     if (!saveScene(path, doc_.scene(), error)) {

@@ -128,6 +128,18 @@ TEST(Editor, SaveWithoutAFileAsksForSaveAs) {
     EXPECT_NE(error.find("Save As"), std::string::npos);
 }
 
+TEST(Editor, SaveAsWithoutAFileNameAsksForOneAndKeepsTheScene) {
+    std::string path = writeFile("unnamed.txt", kScene);
+    Editor e = openEditor(path);
+    e.kick();
+    std::string error;
+    EXPECT_FALSE(e.saveAs("", &error));
+    EXPECT_EQ(error, "type a file name to save the scene to");
+    EXPECT_TRUE(e.document().dirty());
+    EXPECT_EQ(e.document().path(), path);
+    EXPECT_EQ(e.lastFile(), path);
+}
+
 TEST(Editor, ASimulationRunIsOneUndoStep) {
     Editor e = openEditor(writeFile("run.txt", kScene));
     const glm::vec3 start = e.scene().objects[0].pos;

@@ -39,7 +39,7 @@ public:
     bool quitRequested() const { return quit_; }
 
     bool save(std::string* error);  // to document().path(); fails when the scene has none
-    bool saveAs(const std::string& path, std::string* error);
+    bool saveAs(const std::string& path, std::string* error);  // "" is refused: asks for a name
     // The file last opened or saved, kept through New: where Save As starts a new scene.
     const std::string& lastFile() const { return lastFile_; }
 
