@@ -13,4 +13,9 @@ namespace mb {
 // permission bits carry over to the new one.
 std::string replaceFile(const std::string& path, std::string_view bytes);
 
+// Whether replaceFile(path, ...) would get as far as writing: "" or why not, in its words. It
+// tries, making the temporary and removing it, so a missing or read-only folder shows before
+// minutes of work, not after; what only the write meets (a full disk) still shows only then.
+std::string checkReplaceFile(const std::string& path);
+
 }  // namespace mb

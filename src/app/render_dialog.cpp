@@ -1,7 +1,9 @@
 // render_dialog.cpp — large renders from the editor.
 #include "render_dialog.h"
 
+#include "marchbox/atomic_file.h"
 #include "marchbox/editor/events.h"
+#include "marchbox/printable.h"
 #include "widgets.h"
 
 #include <GLFW/glfw3.h>
@@ -11,11 +13,18 @@
 
 namespace mb {
 
+// A folder that is missing or read-only is found before the render, not after it. The save at
+// the end still checks what only the write can meet (a full disk).
 void RenderDialog::start(UiContext& c) {
     width_ = std::clamp(width_, 1, 16384);
     height_ = std::clamp(height_, 1, 16384);
+    std::string error = checkReplaceFile(path_);
+    if (!error.empty()) {
+        status_ = "cannot write '" + printable(path_) + "': " + error;
+        emitEvent(status_);
+        return;
+    }
     renderer_ = std::make_unique<Renderer>();
-    std::string error;
     RenderOptions options = c.ui.render;
     options.outline = false;  // a still shows no selection
     if (!renderer_->init(&error) || !renderer_->setScene(c.editor.scene(), options, &error)) {
@@ -59,6 +68,7 @@ void RenderDialog::draw(UiContext& c) {
         ImGui::InputInt("height", &height_);
         markItem("render/height");
         ImGui::InputText("PNG file", &path_);
+        markItem("render/file");
         ImGui::TextDisabled("Debug view, fog and FXAA follow the View settings.");
         if (ImGui::Button("Render")) start(c);
         markItem("render/start");
@@ -71,7 +81,10 @@ void RenderDialog::draw(UiContext& c) {
                 status_ = "cancelled";
             }
         }
-        if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
+        if (!status_.empty()) {
+            ImGui::TextWrapped("%s", status_.c_str());
+            markItem("render/status");
+        }
     }
     ImGui::End();
 }

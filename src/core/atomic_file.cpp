@@ -81,6 +81,7 @@ int writeTemp(const std::string& path, std::string_view text, std::optional<mode
 // itself) rather than write into it.
 std::string saveTarget(const std::string& path, std::string* target, std::optional<mode_t>* mode) {
     *target = path;
+    if (path.empty()) return "no file name";  // the temporary would go in the working folder
     struct stat st;
     if (::stat(path.c_str(), &st) != 0) return "";  // nothing there yet: the save creates it
     if (S_ISDIR(st.st_mode)) return "is a directory";
@@ -151,6 +152,19 @@ std::string replaceFile(const std::string& path, std::string_view bytes) {
     }
     if (!tmp.empty()) fileOps().unlink(tmp.c_str());
     return why;
+}
+
+std::string checkReplaceFile(const std::string& path) {
+    TerminationHeld held;  // dying before the unlink would leave the temporary
+    std::string target, tmp;
+    std::optional<mode_t> mode;
+    std::string why = saveTarget(path, &target, &mode);
+    if (!why.empty()) return why;
+    int fd = createTemp(target, 0600, &tmp);
+    if (fd < 0) return std::strerror(errno);
+    fileOps().close(fd);
+    fileOps().unlink(tmp.c_str());
+    return "";
 }
 
 }  // namespace mb

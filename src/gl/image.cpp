@@ -2,6 +2,7 @@
 #include "marchbox/image.h"
 
 #include "marchbox/atomic_file.h"
+#include "marchbox/printable.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -29,7 +30,7 @@ bool savePng(const std::string& path, const Image& img, std::string* error) {
     std::string why = png ? replaceFile(path, std::string_view(reinterpret_cast<char*>(png), size_t(size)))
                           : "cannot encode PNG";
     std::free(png);  // stb allocates with malloc
-    if (!why.empty()) *error = "cannot write '" + path + "': " + why;
+    if (!why.empty()) *error = "cannot write '" + printable(path) + "': " + why;
     return why.empty();
 }
 

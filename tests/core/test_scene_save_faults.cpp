@@ -3,6 +3,8 @@
 // Every time the old file stays whole, no temporary is left, and the error is one clear line.
 #include "marchbox/scene_io.h"
 
+#include "marchbox/atomic_file.h"
+
 #include "file_ops.h"
 
 #include <gtest/gtest.h>
@@ -286,10 +288,12 @@ TEST_F(SaveFaults, ReadOnlyFolderIsOneClearError) {
         const uid_t nobody = 65534;
         if (geteuid() == 0 && (setgid(nobody) != 0 || setuid(nobody) != 0)) return 2;
         std::string error;
+        if (checkReplaceFile(target()) != "Permission denied") return 5;
         if (saveScene(target(), scene_, &error)) return 3;
         return error == "cannot save '" + target() + "': Permission denied" ? 0 : 4;
     });
-    EXPECT_EQ(code, 0) << "2: cannot become nobody, 3: saved anyway, 4: another message";
+    EXPECT_EQ(code, 0) << "2: cannot become nobody, 3: saved anyway, 4: another message, "
+                          "5: the check before saving missed it";
     EXPECT_EQ(oldBytes(), kOld);
     EXPECT_EQ(fileCount(), 1u);
 }
@@ -309,6 +313,22 @@ TEST_F(SaveFaults, DeviceAsTargetIsRefusedAndLeftAlone) {
     struct stat st;
     ASSERT_EQ(stat("/dev/null", &st), 0);
     EXPECT_TRUE(S_ISCHR(st.st_mode));
+}
+
+// File > Render checks before minutes of work: each place above is found, in the save's words,
+// and the check writes nothing, where it fails or not.
+TEST_F(SaveFaults, TheCheckBeforeSavingFindsEachPlaceAndWritesNothing) {
+    const std::string places[] = {(dir_ / "no_such_folder" / "scene.txt").string(),
+                                  target() + "/scene.txt", dir_.string(), "/dev/null", ""};
+    for (const std::string& path : places) {
+        std::string error;
+        EXPECT_FALSE(saveScene(path, scene_, &error));
+        EXPECT_EQ("cannot save '" + path + "': " + checkReplaceFile(path), error);
+    }
+    EXPECT_EQ(checkReplaceFile((dir_ / "new.txt").string()), "");
+    EXPECT_EQ(checkReplaceFile(target()), "");
+    EXPECT_EQ(oldBytes(), kOld);
+    EXPECT_EQ(fileCount(), 1u);
 }
 
 // The rename puts a new file in place: it must not trade a private file's mode for the umask's.

@@ -667,13 +667,24 @@ def case_camera(app, scene):
 
 
 def case_render(app, scene):
-    """File > Render… draws a PNG of the asked size tile by tile while the window stays live."""
+    """File > Render… draws a PNG of the asked size tile by tile while the window stays live.
+    A PNG file in a missing folder is refused before rendering, saying so in the dialog."""
     app.menu('File', 'Render...')
-    for field, value in (('render/width', '300'), ('render/height', '200')):
+    missing = os.path.join(app.workdir, 'missing', 'render.png')
+    for field, value in (('render/width', '300'), ('render/height', '200'), ('render/file', missing)):
         app.click_widget(field)
         app.key('ctrl+a')
         app.type(value)
     app.click_widget('render/start')
+    said = app.wait('cannot write ', timeout=90)
+    check(said == "cannot write '%s': No such file or directory" % missing, 'refused as %r' % said)
+    check(not [l for l in app.events() if l.startswith('render started')], 'rendered before refusing')
+    x, y = app.widget('render/status')
+    check(text_in(app.screenshot(), x, y), 'no message in the dialog at %d,%d' % (x, y))
+    app.click_widget('render/file', fresh=False)
+    app.key('ctrl+a')
+    app.type('render.png')
+    app.click_widget('render/start', fresh=False)
     check(app.wait('render started ') == 'render started 300x200', 'the size typed was not used')
     saved = app.wait('saved ', timeout=90).split(' ', 1)[1]
     img = read_png(os.path.join(app.workdir, saved))
