@@ -1,10 +1,12 @@
 // commands.cpp — render, simulate, check, shader and bench: load, act, report in one line.
 #include "commands.h"
 
+#include "marchbox/atomic_file.h"
 #include "marchbox/gl/offscreen_context.h"
 #include "marchbox/gl/quality_preset.h"
 #include "marchbox/gl/renderer.h"
 #include "marchbox/physics.h"
+#include "marchbox/printable.h"
 #include "marchbox/scene_io.h"
 
 #include <algorithm>
@@ -110,6 +112,15 @@ static bool printRenderProgress(float done, void*) {
 }
 static void printSimulateProgress(double done) { showProgress("simulating", done); }
 
+// Where a long render or simulation will write is checked before it starts, in the words the
+// save at the end would use (`doing`: "write" or "save"); that save still reports a full disk.
+static bool outputWritable(const std::string& path, const char* doing) {
+    const std::string why = checkReplaceFile(path);
+    if (why.empty()) return true;
+    std::cerr << "cannot " << doing << " '" << printable(path) << "': " << why << '\n';
+    return false;
+}
+
 int runRender(const Args& a) {
     RenderOptions options;
     QualityPreset preset;
@@ -117,7 +128,7 @@ int runRender(const Args& a) {
         !needOutput(a, "render", "OUT.png") || !renderOptions(a, &options) || !qualityPreset(a, &preset))
         return kExitUsage;
     Scene scene;
-    if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
+    if (!loadOrReport(a.positional[0], &scene) || !outputWritable(a.output, "write")) return kExitBadInput;
     simulate(scene, a.seconds);
     applyQualityPreset(preset, &scene.render, &options);
     Image img;
@@ -136,7 +147,8 @@ int runRender(const Args& a) {
 int runSimulate(const Args& a) {
     if (!needOne(a, "marchbox simulate SCENE --seconds T [-o OUT.txt]")) return kExitUsage;
     Scene scene;
-    if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
+    if (!loadOrReport(a.positional[0], &scene) || (!a.output.empty() && !outputWritable(a.output, "save")))
+        return kExitBadInput;
     // Ctrl-C keeps its default: the process ends at once, before anything is written.
     simulate(scene, a.seconds, {}, isatty(STDERR_FILENO) ? printSimulateProgress : nullptr);
     if (a.output.empty()) {

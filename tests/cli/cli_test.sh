@@ -85,6 +85,9 @@ files_cases() {
   expect 1 "$mb" render "$scene" -o "$tmp/missing/x.png" --size 8x8
   expect 1 "$mb" render "$scene" -o "$tmp" --size 8x8
   expect 1 "$mb" simulate "$scene" -o "$tmp/missing/x.txt"
+  # Refused before the work: with no shaders a render that got as far as drawing would exit 3.
+  MB_ENV=MARCHBOX_SHADERS=/nonexistent expect_says "cannot write '$tmp/missing/x.png'" 1 "$mb" render "$scene" \
+    -o "$tmp/missing/x.png" --size 8x8
   expect 1 "$mb" simulate "$scene" -o "$tmp"
   expect_says "not a regular file" 1 "$mb" simulate "$scene" -o /dev/null
   [[ -c /dev/null ]] || { echo "FAIL: /dev/null was replaced" >&2; failures=$((failures + 1)); }

@@ -584,8 +584,9 @@ TEST(SceneComments, RoundTripKeepsEveryCommentAndSavingTwiceGivesTheSameBytes) {
         for (std::string line; std::getline(lines, line);) {
             line.erase(line.find_last_not_of(" \t\r") + 1);
             size_t first = line.find_first_not_of(" \t");
-            if (first != std::string::npos && line[first] == '#')
+            if (first != std::string::npos && line[first] == '#') {
                 EXPECT_NE(out.find(line + "\n"), std::string::npos) << entry.path() << ": " << line;
+            }
         }
     }
 }
