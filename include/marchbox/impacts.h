@@ -63,7 +63,8 @@ private:
     std::vector<std::uint32_t> stamp_;   // per contact
     std::vector<int> count_;             // per contact: impacts this step
     std::vector<Event> heap_;            // min-heap on (time, contact)
-    std::vector<int> first_, links_;     // per body: its contacts, links_[first_[i] .. first_[i + 1])
+    std::vector<int> open_;              // the contacts that bore no load last step
+    std::vector<int> first_, links_;     // per body: its open contacts, links_[first_[i] .. first_[i + 1])
     std::vector<int> next_;              // scratch for linkBodies
     bool linked_ = false;
     bool any_ = false;                   // an impact happened: offsets to apply

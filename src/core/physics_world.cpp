@@ -122,8 +122,8 @@ double contactHeight(const Found& f, const std::vector<PhysicsBody>& bodies) {
     return b.pos.y - b.radius * f.normal.y;  // the contact point, on b's surface
 }
 
-// The contact's arms, lever of rolling resistance and slop, from its bodies (a may be static); the
-// rest as a new Contact has them. Written in place, as sortBottomUp writes its Orders.
+// The contact's arms, lever of rolling resistance, slop and approach speed before the impacts
+// (Impacts::resolve), from its bodies (a may be static); the rest as a new Contact has them. Written in place, as sortBottomUp writes its Orders.
 void makeContact(Contact& c, const Found& f, const std::vector<PhysicsBody>& bodies, int staticBody,
                  const PhysicsSettings& settings) {
     c = Contact{};
@@ -137,6 +137,7 @@ void makeContact(Contact& c, const Found& f, const std::vector<PhysicsBody>& bod
     c.armA = f.a == staticBody ? 0.0 : bodies[size_t(f.a)].radius;
     c.rollRadius = f.a == staticBody ? c.armB : std::min(c.armA, c.armB);
     c.slop = slopFor(c.rollRadius, settings);
+    c.relativeVelocity = glm::dot(bodies[size_t(f.b)].vel - bodies[size_t(f.a)].vel, f.normal);
 }
 
 // The bits of a double as an unsigned integer in the double's order (negatives reversed below
