@@ -102,7 +102,6 @@ struct PhysicsWorld::Impl {
     std::vector<std::pair<int, int>> pairs;
     std::vector<StaticHit> hits;
     std::vector<int> islands, scratch;
-    std::vector<double> islandTime;
 };
 
 namespace {
@@ -230,7 +229,7 @@ void PhysicsWorld::step() {
     if (settings_.impacts) w.impacts.correctPositions(bodies_, w.contacts);
     keepImpulses();
     if (settings_.continuous) sweepFast();
-    updateSleep(bodies_, w.contacts, settings_, w.scratch, w.islandTime);
+    updateSleep(bodies_, w.contacts, settings_, w.scratch);
     updateStats();
     ++steps_;
 }
