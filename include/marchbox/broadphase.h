@@ -42,8 +42,12 @@ private:
     using Pairs = std::vector<std::pair<int, int>>;
     void buildCells(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents);
     void pairCells(Pairs& pairs) const;
-    // Entries [i0, i1) against [j0, j1); `self` when they are the same run (each pair once).
-    void pairRuns(int i0, int i1, int j0, int j1, bool self, Pairs& pairs) const;
+    struct Run {               // entries [begin, end): a cell, or a neighbour column's cells
+        int begin, end;
+    };
+    // Entry i against the runs of its cell and its neighbours, its own cell first (the entries
+    // after i there, so each pair once); `candidates` bounds what it may add at pairs[kept].
+    void pairSphere(int i, const Run* runs, int count, size_t candidates, Pairs& pairs, size_t& kept) const;
     int cellEnd(int begin) const;                           // one past the run of cells_[begin]
     // First entry at or after cell (x, y, z), searching [from, end).
     int lowerBound(int from, std::int64_t x, std::int64_t y, std::int64_t z) const;

@@ -143,21 +143,18 @@ int Broadphase::lowerBound(int from, std::int64_t x, std::int64_t y, std::int64_
 }
 
 // Branch-free, as in findPairs: every candidate is written, and kept where it overlaps. Room is
-// made one sphere at a time, so a crowded cell never asks for the square of its crowd.
-void Broadphase::pairRuns(int i0, int i1, int j0, int j1, bool self, Pairs& pairs) const {
-    for (int i = i0; i < i1; ++i) {
-        const Sphere& a = spheres_[i];
-        const int first = self ? i + 1 : j0;
-        if (a.large || first >= j1) continue;
-        size_t kept = pairs.size();
-        pairs.resize(kept + size_t(j1 - first));
-        for (int j = first; j < j1; ++j) {
+// made one sphere at a time, so a crowded cell never asks for the square of its crowd, and in
+// doublings, so that a rebuild seldom grows the list.
+void Broadphase::pairSphere(int i, const Run* runs, int count, size_t candidates, Pairs& pairs, size_t& kept) const {
+    const Sphere& a = spheres_[i];
+    if (a.large) return;
+    if (pairs.size() < kept + candidates) pairs.resize(std::max(kept + candidates, 2 * pairs.size()));
+    for (int r = 0; r < count; ++r)
+        for (int j = r == 0 ? i + 1 : runs[r].begin; j < runs[r].end; ++j) {  // run 0: its own cell
             const Sphere& b = spheres_[j];
             pairs[kept] = std::minmax(cells_[i].body, cells_[j].body);
             kept += !b.large && overlaps(a.centre, a.extent, b.centre, b.extent) ? 1 : 0;
         }
-        pairs.resize(kept);
-    }
 }
 
 // Cells are visited in increasing (x, y, z) order, and so, the order being translation
@@ -165,10 +162,14 @@ void Broadphase::pairRuns(int i0, int i1, int j0, int j1, bool self, Pairs& pair
 void Broadphase::pairCells(Pairs& pairs) const {
     const int n = int(cells_.size());
     int cursor[5] = {0, 0, 0, 0, 0};
+    Run runs[6];
+    size_t kept = pairs.size();
     for (int begin = 0, end; begin < n; begin = end) {
         end = cellEnd(begin);
         const Entry& c = cells_[begin];
-        pairRuns(begin, end, begin, end, true, pairs);
+        int count = 0;
+        runs[count++] = {begin, end};
+        size_t candidates = size_t(end - begin);
         for (int k = 0; k < 5; ++k) {
             const std::int64_t x = c.x + kColumns[k].dx, y = c.y + kColumns[k].dy;
             int& j = cursor[k];
@@ -176,9 +177,13 @@ void Broadphase::pairCells(Pairs& pairs) const {
             int last = j;
             while (last < n && cells_[last].x == x && cells_[last].y == y && cells_[last].z <= c.z + 1)
                 ++last;
-            pairRuns(begin, end, j, last, false, pairs);
+            if (last == j) continue;
+            runs[count++] = {j, last};
+            candidates += size_t(last - j);
         }
+        for (int i = begin; i < end; ++i) pairSphere(i, runs, count, candidates, pairs, kept);
     }
+    pairs.resize(kept);
 }
 
 // Large against large by sweep and prune along x (at most 5 % by the cell size's choice, but 500
