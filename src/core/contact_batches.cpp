@@ -290,14 +290,17 @@ template <class V>
     return true;
 }
 
+// Without branches on which lanes push (anyone's guess): body a's flag where it moves, else b's
+// again (the static body, shared by both threads' runs, is never written).
 template <class V>
 [[gnu::always_inline]] inline void markSupported(const Slice<V>& at) {
     const ContactBatch& c = at.c;
     for (int l = at.first; l < at.first + widthOf<V>; ++l) {
         if (l >= c.count) break;
-        if (c.normalImpulse[l] <= 0.0) continue;
-        c.b[l]->supported = true;
-        if (c.solve.massA[l] > 0.0) c.a[l]->supported = true;
+        const bool pushed = c.normalImpulse[l] > 0.0;
+        c.b[l]->supported |= pushed;
+        PhysicsBody* a = c.solve.massA[l] > 0.0 ? c.a[l] : c.b[l];
+        a->supported |= pushed;
     }
 }
 
