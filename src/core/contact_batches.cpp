@@ -10,6 +10,7 @@
 #include "marchbox/worker.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <glm/geometric.hpp>
 
@@ -163,14 +164,22 @@ struct BodyPairs {
     for (int k = 0; k < 3; ++k) storeRow(body, 2 * k, from.pairs[k][l]);
 }
 
-// Body a is written back only where it moves (the static body, shared by every level, never is).
+// x where `first`, else y, without a branch: the choices below are anyone's guess, lane by lane.
+template <class T>
+[[gnu::always_inline]] inline T* pick(bool first, T* x, T* y) {
+    const auto mask = -std::uintptr_t(first);
+    return reinterpret_cast<T*>((reinterpret_cast<std::uintptr_t>(x) & mask) | (reinterpret_cast<std::uintptr_t>(y) & ~mask));
+}
+
+// Body a is written back only where it moves (the static body, shared by every level and both
+// threads, never is): elsewhere its lane goes to `sink`, the caller's scratch.
 template <class V>
-[[gnu::always_inline]] inline void scatter(const Slice<V>& at, const LaneRows& w, const PairLanes<V>& s) {
+[[gnu::always_inline]] inline void scatter(const Slice<V>& at, const LaneRows& w, const PairLanes<V>& s, PhysicsBody& sink) {
     const auto a = rowsOf(s.a), b = rowsOf(s.b);
     for (int l = 0; l < widthOf<V>; ++l) {
         const int lane = at.first + l;
         if (lane >= at.c.count) break;
-        if (w.massA[lane] > 0.0) storeLane(*at.c.a[lane], a, l);
+        storeLane(*pick(w.massA[lane] > 0.0, at.c.a[lane], &sink), a, l);
         storeLane(*at.c.b[lane], b, l);
     }
 }
@@ -290,8 +299,8 @@ template <class V>
     return true;
 }
 
-// Without branches on which lanes push (anyone's guess): body a's flag where it moves, else b's
-// again (the static body, shared by both threads' runs, is never written).
+// Without branches on which lanes push: body a's flag where it moves, else b's again (the static
+// body, shared by both threads' runs, is never written).
 template <class V>
 [[gnu::always_inline]] inline void markSupported(const Slice<V>& at) {
     const ContactBatch& c = at.c;
@@ -299,8 +308,7 @@ template <class V>
         if (l >= c.count) break;
         const bool pushed = c.normalImpulse[l] > 0.0;
         c.b[l]->supported |= pushed;
-        PhysicsBody* a = c.solve.massA[l] > 0.0 ? c.a[l] : c.b[l];
-        a->supported |= pushed;
+        pick(c.solve.massA[l] > 0.0, c.a[l], c.b[l])->supported |= pushed;
     }
 }
 
@@ -362,6 +370,7 @@ template <class V>
 
 template <class V>
 [[gnu::always_inline]] inline void warmStartBatches(const Pass& pass, int begin, int end) {
+    PhysicsBody sink;
     for (int i = pass.levelBegin[begin]; i < pass.levelBegin[end]; ++i) {
         ContactBatch& c = pass.batches[i];
         for (int first = 0; first < lanesHeld<V>(c); first += widthOf<V>) {
@@ -371,13 +380,14 @@ template <class V>
             applyNormal(s, at, c.solve, at(c.normalImpulse) * at.normal());
             applyImpulse(s, at, c.solve, {at(c.tx), at(c.ty), at(c.tz)});
             applyAngular(s, at, c.solve, {at(c.rx), at(c.ry), at(c.rz)});
-            scatter(at, c.solve, s);
+            scatter(at, c.solve, s, sink);
         }
     }
 }
 
 template <class V, bool useBias>
 [[gnu::always_inline]] inline void solveBatches(const Pass& pass, int begin, int end) {
+    PhysicsBody sink;
     for (int i = pass.levelBegin[begin]; i < pass.levelBegin[end]; ++i) {
         ContactBatch& c = pass.batches[i];
         const LaneRows& w = useBias ? c.solve : c.relax;
@@ -385,7 +395,7 @@ template <class V, bool useBias>
             const Slice<V> at{c, first};
             PairLanes<V> s = gather(at);
             if (!solveRows(at, s, pass.ctx, w, useBias)) continue;
-            scatter(at, w, s);
+            scatter(at, w, s, sink);
             if (useBias) markSupported(at);
         }
     }
