@@ -64,6 +64,7 @@ private:
     std::vector<int> count_;             // per contact: impacts this step
     std::vector<Event> heap_;            // min-heap on (time, contact)
     std::vector<int> open_;              // the contacts that bore no load last step
+    std::vector<int> due_;               // scratch: those of them that may impact from the start
     std::vector<int> first_, links_;     // per body: its open contacts, links_[first_[i] .. first_[i + 1])
     std::vector<int> next_;              // scratch for linkBodies
     bool linked_ = false;

@@ -30,6 +30,12 @@ bool overlaps(const glm::dvec3& ci, double ei, const glm::dvec3& cj, double ej) 
     return glm::dot(d, d) < reach * reach;
 }
 
+// (min, max) by arithmetic: std::minmax branches, on what is here anyone's guess.
+std::pair<int, int> ordered(int i, int j) {
+    const int below = (j - i) & ((j - i) >> 31);  // j − i where j < i, else 0
+    return {i + below, j - below};
+}
+
 void addPair(std::vector<std::pair<int, int>>& pairs, int i, int j) {
     pairs.emplace_back(std::min(i, j), std::max(i, j));
 }
@@ -152,8 +158,8 @@ void Broadphase::pairSphere(int i, const Run* runs, int count, size_t candidates
     for (int r = 0; r < count; ++r)
         for (int j = r == 0 ? i + 1 : runs[r].begin; j < runs[r].end; ++j) {  // run 0: its own cell
             const Sphere& b = spheres_[j];
-            pairs[kept] = std::minmax(cells_[i].body, cells_[j].body);
-            kept += !b.large && overlaps(a.centre, a.extent, b.centre, b.extent) ? 1 : 0;
+            pairs[kept] = ordered(cells_[i].body, cells_[j].body);
+            kept += !b.large & overlaps(a.centre, a.extent, b.centre, b.extent) ? 1 : 0;
         }
 }
 

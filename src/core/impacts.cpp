@@ -38,13 +38,21 @@ int Impacts::resolve(SolverContext& ctx) {
     // rounding, cannot impact until an impact on its bodies finds it again. Most contacts of a
     // pile are such, and skipping them leaves their bodies unread.
     const double reach = -bounceThreshold(ctx) + 2.0 * std::abs(ctx.gravity) * ctx.settings.dt;
-    open_.clear();
+    // Which contacts are open, and which of those are due, is anyone's guess contact by contact:
+    // each list is written in full and counted on where the contact belongs, with no branch.
+    open_.resize(contacts);
+    due_.resize(contacts);
+    size_t open = 0, due = 0;
     for (size_t i = 0; i < contacts; ++i) {
-        const Contact& c = ctx.contacts[i];
-        if (c.normalImpulse > 0.0) continue;
-        open_.push_back(int(i));
-        if (c.relativeVelocity < reach) schedule(ctx, int(i), 0.0);
+        open_[open] = int(i);
+        open += ctx.contacts[i].normalImpulse > 0.0 ? 0 : 1;
     }
+    open_.resize(open);
+    for (int i : open_) {
+        due_[due] = i;
+        due += ctx.contacts[size_t(i)].relativeVelocity < reach ? 1 : 0;
+    }
+    for (size_t k = 0; k < due; ++k) schedule(ctx, due_[k], 0.0);
     const int staticBody = int(n) - 1;
     int impacts = 0;
     while (!heap_.empty()) {

@@ -117,9 +117,9 @@ TEST(ContactGraph, HalvesShareNoBody) {
     std::vector<PhysicsBody> bodies(size_t(kBodies) + 1);  // the static body last
     std::uint32_t state = 4242;
     for (int i = 0; i < kBodies; ++i) bodies[size_t(i)].pos.x = double((state = state * 1664525u + 1013904223u) >> 8);
-    std::vector<double> xs;
+    std::vector<BodyX> byX;
     std::vector<char> side;
-    sideByMedianX(bodies, xs, side);
+    sideByMedianX(bodies, byX, side);
     EXPECT_EQ(std::count(side.begin(), side.end(), 0), kBodies / 2) << "the cut is at the median";
     // The contacts in runs, each run keeping the solve order (as PhysicsWorld::splitInHalves does).
     const std::vector<Contact> contacts = randomContacts(300);
