@@ -30,6 +30,8 @@ int Impacts::resolve(SolverContext& ctx) {
     for (size_t i = 0; i + 1 < n; ++i)
         if (bodies[i].awake && !bodies[i].supported) accel_[i].y = -ctx.gravity;
     offset_.assign(n, dvec3(0.0));
+    hit_.assign(n, 0);
+    moved_.clear();
     stamp_.assign(contacts, 0);
     count_.assign(contacts, 0);
     heap_.clear();
@@ -85,8 +87,18 @@ int Impacts::resolve(SolverContext& ctx) {
 // flight, run backwards, lies inside what the body hit, so the solver sees the pair start
 // overlapped by (1 + e)·|u|·t* but part at e·|u|: its soft push, biasRate·overlap < 10/s · dt ·
 // (1 + e)·|u|, is slower than that for e above 0.1, and the relax pass takes back what it adds.
+// Only the contacts of bodies hit move (the others' shift is 0): they are listed, without a
+// branch, and correctPositions takes the shift back out of them alone.
 void Impacts::shiftSeparations(std::vector<Contact>& contacts) {
-    for (Contact& c : contacts) {
+    shifted_.resize(contacts.size());
+    size_t count = 0;
+    for (size_t i = 0; i < contacts.size(); ++i) {
+        shifted_[count] = int(i);
+        count += hit_[size_t(contacts[i].a)] | hit_[size_t(contacts[i].b)];
+    }
+    shifted_.resize(count);
+    for (int i : shifted_) {
+        Contact& c = contacts[size_t(i)];
         c.shift = glm::dot(c.normal, offset_[size_t(c.b)] - offset_[size_t(c.a)]);
         c.separation += c.shift;
     }
@@ -146,6 +158,11 @@ void Impacts::hit(SolverContext& ctx, const Contact& c, double t) {
     b.spin += b.invInertia * glm::cross(armB, p);
     offset_[size_t(c.a)] += a.invMass * p * t;  // −Δv·t
     offset_[size_t(c.b)] -= b.invMass * p * t;
+    for (int body : {c.a, c.b}) {
+        if (ctx.bodies[size_t(body)].invMass <= 0.0 || hit_[size_t(body)]) continue;  // the static body stays
+        hit_[size_t(body)] = 1;
+        moved_.push_back(body);
+    }
 }
 
 // Each dynamic body's contacts that may impact (open_: schedule() leaves those that bore load to
@@ -168,13 +185,14 @@ void Impacts::linkBodies(const SolverContext& ctx) {
 
 void Impacts::correctPositions(std::vector<PhysicsBody>& bodies, std::vector<Contact>& contacts) const {
     if (!any_) return;
-    for (Contact& c : contacts) {
+    for (int i : shifted_) {
+        Contact& c = contacts[size_t(i)];
         c.separation -= c.shift;
         c.shift = 0.0;
     }
-    for (size_t i = 0; i + 1 < bodies.size(); ++i) {
-        bodies[i].pos += offset_[i];
-        bodies[i].delta += offset_[i];
+    for (int i : moved_) {
+        bodies[size_t(i)].pos += offset_[size_t(i)];
+        bodies[size_t(i)].delta += offset_[size_t(i)];
     }
 }
 
