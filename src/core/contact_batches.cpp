@@ -333,12 +333,21 @@ void loadLane(ContactBatch& to, int l, Contact& c, const SolverContext& ctx) {
 }  // namespace
 
 void ContactBatches::load(const SolverContext& ctx) {
-    const int staticBody = int(ctx.bodies.size()) - 1;
-    buildContactGraph(ctx.contacts, ctx.split, staticBody, graph_, scratch_);
-    Contact padding;  // on the static body alone, no mass, no impulse: never written back
-    padding.a = padding.b = staticBody;
+    buildContactGraph(ctx.contacts, ctx.split, int(ctx.bodies.size()) - 1, graph_, scratch_);
     batches_.resize(size_t(graph_.batches()));
-    for (int k = 0; k < graph_.batches(); ++k) {
+    // A batch is loaded from its own contacts alone: with a worker, it takes the first half.
+    Worker* worker = ctx.worker;
+    const int half = worker ? graph_.batches() / 2 : 0;
+    auto first = [&] { loadBatches(ctx, 0, half); };
+    if (worker) worker->post(first);
+    loadBatches(ctx, half, graph_.batches());
+    if (worker) worker->wait();
+}
+
+void ContactBatches::loadBatches(const SolverContext& ctx, int begin, int end) {
+    Contact padding;  // on the static body alone, no mass, no impulse: never written back
+    padding.a = padding.b = int(ctx.bodies.size()) - 1;
+    for (int k = begin; k < end; ++k) {
         ContactBatch& c = batches_[size_t(k)];
         c.count = 0;
         for (int l = 0; l < kLanes; ++l) {
