@@ -1,7 +1,7 @@
 // marchbox/broadphase.h — candidate sphere pairs in near O(N): a uniform grid kept sorted.
 //
 // Each sphere, grown by its speculative margin, has an extent e (a radius). The cell size is twice
-// the 95th-percentile extent, so a typical sphere fits in one cell and two that overlap lie in the
+// the 99th-percentile extent, so a typical sphere fits in one cell and two that overlap lie in the
 // same or adjacent cells. The few larger ones (fast spheres, a boulder among pebbles) look up the
 // block of cells their reach covers, and each other by sweep and prune along x. The cell list
 // stays sorted between steps, so re-sorting is near linear, and neighbour cells are found by

@@ -91,10 +91,13 @@ void Broadphase::buildCells(const std::vector<glm::dvec3>& centres,
                             const std::vector<double>& extents) {
     const int n = int(centres.size());
     scratch_ = extents;
-    auto p95 = scratch_.begin() + (n - 1) * 95 / 100;
-    std::nth_element(scratch_.begin(), p95, scratch_.end());
+    // The 99th percentile: each sphere left large costs a block search (pairBlock) at every
+    // rebuild, more than the slightly larger cells cost the rest (a settling pile of 1000: 95th
+    // 18.4e6 cycles of list building in 180 steps, 99th 16.7e6).
+    auto p99 = scratch_.begin() + (n - 1) * 99 / 100;
+    std::nth_element(scratch_.begin(), p99, scratch_.end());
     // A sphere of extent <= cell/2 overlaps only spheres whose centres are within one cell.
-    cell_ = 2.0 * *p95;
+    cell_ = 2.0 * *p99;
     const bool fresh = int(cells_.size()) != n;
     if (fresh) {
         cells_.assign(n, Entry{0, 0, 0, 0});
@@ -192,7 +195,7 @@ void Broadphase::pairCells(Pairs& pairs) const {
     pairs.resize(kept);
 }
 
-// Large against large by sweep and prune along x (at most 5 % by the cell size's choice, but 500
+// Large against large by sweep and prune along x (at most 1 % by the cell size's choice, but 100
 // in a pile of 10,000: all pairs of them would grow as the square), large against small through
 // the grid.
 void Broadphase::pairLarge(Pairs& pairs) const {
