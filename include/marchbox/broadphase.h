@@ -38,6 +38,7 @@ private:
         glm::dvec3 centre;
         double extent;
         bool large;
+        int body;
     };
     using Pairs = std::vector<std::pair<int, int>>;
     void buildCells(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents);

@@ -128,7 +128,7 @@ void Broadphase::buildCells(const std::vector<glm::dvec3>& centres,
     large_.clear();
     for (int i = 0; i < n; ++i) {
         const int body = cells_[i].body;
-        spheres_[i] = {centres[body], extents[body], extents[body] > 0.5 * cell_};
+        spheres_[i] = {centres[body], extents[body], extents[body] > 0.5 * cell_, body};
         if (spheres_[i].large) large_.push_back(i);
     }
     // By the low end of their reach along x, for the sweep in pairLarge (ties by entry: a total order).
@@ -161,7 +161,7 @@ void Broadphase::pairSphere(int i, const Run* runs, int count, size_t candidates
     for (int r = 0; r < count; ++r)
         for (int j = r == 0 ? i + 1 : runs[r].begin; j < runs[r].end; ++j) {  // run 0: its own cell
             const Sphere& b = spheres_[j];
-            pairs[kept] = ordered(cells_[i].body, cells_[j].body);
+            pairs[kept] = ordered(a.body, b.body);
             kept += !b.large & overlaps(a.centre, a.extent, b.centre, b.extent) ? 1 : 0;
         }
 }
