@@ -347,8 +347,9 @@ void PhysicsWorld::splitInHalves() {
     sideByMedianX(bodies_, w.byX, w.side);
     int count[3] = {0, 0, 0};
     for (Impl::Order& o : w.order) {
-        const Found& f = w.found[size_t(o.index)];
-        o.run = runOf(f.a, f.b, w.side, bodyCount());
+        // The bodies from the key (contactKey), not from the contact, which would be a read
+        // out of order: the second, or the static body, as a (runOf gives the same either way).
+        o.run = runOf(int(o.key >> 16 & 0xffffff), int(o.key >> 40), w.side, bodyCount());
         ++count[o.run];
     }
     w.split[0] = count[0];
