@@ -26,7 +26,14 @@ struct Found {  // a contact as collide() finds it, before its place in the solv
     bool curved;
     dvec3 normal;
     double separation;
+    double height;  // of the contact point, on b's surface: the bottom-up order's
 };
+
+// Found with its height taken from b while collide() has b at hand, where the sort would read
+// the bodies out of order.
+Found found(int a, const PhysicsBody& b, int index, int feature, bool curved, const dvec3& normal, double separation) {
+    return {a, index, feature, curved, normal, separation, b.pos.y - b.radius * normal.y};
+}
 
 }  // namespace
 
@@ -114,11 +121,6 @@ std::uint64_t contactKey(int a, int b, int feature, int staticBody) {
     const bool onStatic = a == staticBody;
     const std::uint64_t first = std::uint64_t(onStatic ? b : a), second = std::uint64_t(onStatic ? a : b);
     return first << 40 | second << 16 | std::uint64_t(feature + 1);
-}
-
-double contactHeight(const Found& f, const std::vector<PhysicsBody>& bodies) {
-    const PhysicsBody& b = bodies[size_t(f.b)];
-    return b.pos.y - b.radius * f.normal.y;  // the contact point, on b's surface
 }
 
 // The contact's arms, lever of rolling resistance, slop and approach speed before the impacts
@@ -266,7 +268,7 @@ void PhysicsWorld::collide() {
         if (!A.awake && !B.awake) continue;
         const dvec3 d = B.pos - A.pos;
         const double len = glm::length(d);
-        w.found.push_back({a, b, -1, false, len > 0.0 ? d / len : dvec3(0, 1, 0), len - A.radius - B.radius});
+        w.found.push_back(found(a, B, b, -1, false, len > 0.0 ? d / len : dvec3(0, 1, 0), len - A.radius - B.radius));
     }
     for (int i = 0; i < n; ++i)
         if (bodies_[i].awake) collideStatic(i);
@@ -317,7 +319,7 @@ void PhysicsWorld::sortBottomUp() {
         // Field by field into its place: a whole Order built aside and copied would be read back
         // in halves that straddle the writes just made, and wait for them to reach the cache.
         Impl::Order& o = old ? w.byRank[size_t(old->rank)] : w.fresh.emplace_back();
-        o.height = orderedBits(contactHeight(f, bodies_));
+        o.height = orderedBits(f.height);
         o.key = key;
         o.index = int(i);
         o.run = 2;
@@ -419,7 +421,7 @@ void PhysicsWorld::collideStatic(int body) {
         const bool curved = settings_.followCurves && hit.feature > 0 &&
                             std::abs(w.statics.bend(hit.feature, b.pos, hit.normal, move)) >
                                 w.statics.bendNoise(hit.feature, glm::length(move));
-        w.found.push_back({bodyCount(), body, hit.feature, curved, hit.normal, hit.separation});
+        w.found.push_back(found(bodyCount(), b, body, hit.feature, curved, hit.normal, hit.separation));
     }
 }
 
