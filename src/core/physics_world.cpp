@@ -31,8 +31,8 @@ struct Found {  // a contact as collide() finds it, before its place in the solv
 
 // Found with its height taken from b while collide() has b at hand, where the sort would read
 // the bodies out of order.
-Found found(int a, const PhysicsBody& b, int index, int feature, bool curved, const dvec3& normal, double separation) {
-    return {a, index, feature, curved, normal, separation, b.pos.y - b.radius * normal.y};
+Found found(int a, int b, const PhysicsBody& onB, int feature, bool curved, const dvec3& normal, double separation) {
+    return {a, b, feature, curved, normal, separation, onB.pos.y - onB.radius * normal.y};
 }
 
 }  // namespace
@@ -124,7 +124,8 @@ std::uint64_t contactKey(int a, int b, int feature, int staticBody) {
 }
 
 // The contact's arms, lever of rolling resistance, slop and approach speed before the impacts
-// (Impacts::resolve), from its bodies (a may be static); the rest as a new Contact has them. Written in place, as sortBottomUp writes its Orders.
+// (Impacts::resolve), from its bodies (a may be static); the rest as a new Contact has them.
+// Written in place, as sortBottomUp writes its Orders.
 void makeContact(Contact& c, const Found& f, const std::vector<PhysicsBody>& bodies, int staticBody,
                  const PhysicsSettings& settings) {
     c = Contact{};
@@ -268,7 +269,7 @@ void PhysicsWorld::collide() {
         if (!A.awake && !B.awake) continue;
         const dvec3 d = B.pos - A.pos;
         const double len = glm::length(d);
-        w.found.push_back(found(a, B, b, -1, false, len > 0.0 ? d / len : dvec3(0, 1, 0), len - A.radius - B.radius));
+        w.found.push_back(found(a, b, B, -1, false, len > 0.0 ? d / len : dvec3(0, 1, 0), len - A.radius - B.radius));
     }
     for (int i = 0; i < n; ++i)
         if (bodies_[i].awake) collideStatic(i);
@@ -421,7 +422,7 @@ void PhysicsWorld::collideStatic(int body) {
         const bool curved = settings_.followCurves && hit.feature > 0 &&
                             std::abs(w.statics.bend(hit.feature, b.pos, hit.normal, move)) >
                                 w.statics.bendNoise(hit.feature, glm::length(move));
-        w.found.push_back(found(bodyCount(), b, body, hit.feature, curved, hit.normal, hit.separation));
+        w.found.push_back(found(bodyCount(), body, b, hit.feature, curved, hit.normal, hit.separation));
     }
 }
 
