@@ -162,7 +162,7 @@ void Broadphase::pairSphere(int i, const Run* runs, int count, size_t candidates
         for (int j = r == 0 ? i + 1 : runs[r].begin; j < runs[r].end; ++j) {  // run 0: its own cell
             const Sphere& b = spheres_[j];
             pairs[kept] = ordered(a.body, b.body);
-            kept += !b.large & overlaps(a.centre, a.extent, b.centre, b.extent) ? 1 : 0;
+            kept += size_t(!b.large) & size_t(overlaps(a.centre, a.extent, b.centre, b.extent));
         }
 }
 
