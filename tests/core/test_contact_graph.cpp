@@ -109,6 +109,26 @@ TEST(ContactGraph, LoadedContactsLeadEachLevel) {
     }
 }
 
+// sideByMedianX keeps the bodies in x order from one call to the next and re-sorts it: after the
+// bodies move (some across the median), the cut must be the one a fresh order gives.
+TEST(ContactGraph, TheKeptXOrderFollowsTheBodies) {
+    std::vector<PhysicsBody> bodies(size_t(kBodies) + 1);  // the static body last
+    std::uint32_t state = 99;
+    auto next = [&] { return double((state = state * 1664525u + 1013904223u) >> 8) / double(1u << 24); };
+    for (int i = 0; i < kBodies; ++i) bodies[size_t(i)].pos.x = next();
+    std::vector<BodyX> kept;
+    std::vector<char> side, fresh;
+    sideByMedianX(bodies, kept, side);
+    for (int round = 0; round < 3; ++round) {
+        for (int i = 0; i < kBodies; ++i) bodies[size_t(i)].pos.x += 0.3 * (next() - 0.5);
+        std::vector<BodyX> none;
+        sideByMedianX(bodies, kept, side);
+        sideByMedianX(bodies, none, fresh);
+        EXPECT_EQ(side, fresh) << "round " << round;
+        EXPECT_EQ(std::count(side.begin(), side.end(), 0), kBodies / 2) << "round " << round;
+    }
+}
+
 // What two threads solve at once shares no body: the levels of the first run (the worker's) and
 // of the second (this thread's) never hold the same dynamic body, whatever the contacts, and a
 // contact across the cut waits for both, in the joining run. (A race on a shared body would show
