@@ -1,7 +1,7 @@
 // marchbox/broadphase.h — candidate sphere pairs in near O(N): a uniform grid kept sorted.
 //
 // Each sphere, grown by its speculative margin, has an extent e (a radius). The cell size is twice
-// the 95th-percentile extent, so a typical sphere fits in one cell and two that overlap lie in the
+// the 99th-percentile extent, so a typical sphere fits in one cell and two that overlap lie in the
 // same or adjacent cells. The few larger ones (fast spheres, a boulder among pebbles) look up the
 // block of cells their reach covers, and each other by sweep and prune along x. The cell list
 // stays sorted between steps, so re-sorting is near linear, and neighbour cells are found by
@@ -38,12 +38,17 @@ private:
         glm::dvec3 centre;
         double extent;
         bool large;
+        int body;
     };
     using Pairs = std::vector<std::pair<int, int>>;
     void buildCells(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents);
     void pairCells(Pairs& pairs) const;
-    // Entries [i0, i1) against [j0, j1); `self` when they are the same run (each pair once).
-    void pairRuns(int i0, int i1, int j0, int j1, bool self, Pairs& pairs) const;
+    struct Run {               // entries [begin, end): a cell, or a neighbour column's cells
+        int begin, end;
+    };
+    // Entry i against the runs of its cell and its neighbours, its own cell first (the entries
+    // after i there, so each pair once); `candidates` bounds what it may add at pairs[kept].
+    void pairSphere(int i, const Run* runs, int count, size_t candidates, Pairs& pairs, size_t& kept) const;
     int cellEnd(int begin) const;                           // one past the run of cells_[begin]
     // First entry at or after cell (x, y, z), searching [from, end).
     int lowerBound(int from, std::int64_t x, std::int64_t y, std::int64_t z) const;

@@ -45,7 +45,7 @@ class Worker;
 class ContactBatches {
 public:
     // Levels and batches for ctx.contacts, in their solve order, each contact prepared for this
-    // step on the way (prepareContact).
+    // step on the way (prepareContact); half the batches on ctx.worker where there is one.
     void load(const SolverContext& ctx);
     void warmStart(SolverContext& ctx);
     // The solve pass (useBias) also sets PhysicsBody::supported: pushed by a contact after it.
@@ -59,6 +59,7 @@ public:
     int levels() const { return graph_.levels(); }
 
 private:
+    void loadBatches(const SolverContext& ctx, int begin, int end);
     ContactBatch& batchOf(int contact, int& lane);
 
     ContactGraph graph_;

@@ -33,10 +33,14 @@ struct ContactGraph {
     int levels() const { return int(levelBegin.size()) - 1; }
 };
 
+struct BodyX {  // a body and its x, for sideByMedianX
+    double x;
+    int body;
+};
 // The halves two threads may solve at once (SolverContext::split): the dynamic bodies left of
 // the median x are side 0, the rest side 1. The cut depends on the bodies alone, never on the
-// thread count. `xs` is scratch.
-void sideByMedianX(const std::vector<PhysicsBody>& bodies, std::vector<double>& xs, std::vector<char>& side);
+// thread count. `byX`: the bodies in x order, kept by the caller from the last call.
+void sideByMedianX(const std::vector<PhysicsBody>& bodies, std::vector<BodyX>& byX, std::vector<char>& side);
 // A contact of bodies a and b within one side (or between one side and the static body) goes to
 // that side's run; one across the cut to the joining run, 2, solved after both: no body is in
 // both halves.

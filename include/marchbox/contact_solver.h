@@ -34,7 +34,8 @@ struct Contact {
     RowMasses mass;
     double rollRadius = 0.0;             // lever of rolling resistance
     double shift = 0.0;                  // added to separation for the impacts (impacts.h), m
-    double relativeVelocity = 0.0;       // normal velocity at the start of the step, for bounce
+    double relativeVelocity = 0.0;       // normal velocity at the start of the step (after the
+                                         // impacts, from prepareContact), for bounce
     double normalImpulse = 0.0;          // accumulated per substep, warm started across steps
     double maxNormalImpulse = 0.0;       // largest this step: did it touch?
     glm::dvec3 tangentImpulse{0.0};

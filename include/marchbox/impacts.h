@@ -60,10 +60,15 @@ private:
 
     std::vector<glm::dvec3> offset_;     // per body: position correction, −Σ Δv·t*
     std::vector<glm::dvec3> accel_;      // per body: free-flight acceleration this step
+    std::vector<char> hit_;              // per body: an impact moved it this step
+    std::vector<int> moved_;             // the bodies hit, the only ones with an offset
+    std::vector<int> shifted_;           // the contacts of those, the only ones with a shift
     std::vector<std::uint32_t> stamp_;   // per contact
     std::vector<int> count_;             // per contact: impacts this step
     std::vector<Event> heap_;            // min-heap on (time, contact)
-    std::vector<int> first_, links_;     // per body: its contacts, links_[first_[i] .. first_[i + 1])
+    std::vector<int> open_;              // the contacts that bore no load last step
+    std::vector<int> due_;               // scratch: those of them that may impact from the start
+    std::vector<int> first_, links_;     // per body: its open contacts, links_[first_[i] .. first_[i + 1])
     std::vector<int> next_;              // scratch for linkBodies
     bool linked_ = false;
     bool any_ = false;                   // an impact happened: offsets to apply

@@ -12,11 +12,10 @@
 
 namespace mb {
 
-// Advances each awake body's sleep timer by dt and puts settled islands to sleep. `parent` and
-// `islandTime` are scratch, kept by the caller so that a step allocates nothing.
+// Advances each awake body's sleep timer by dt and puts settled islands to sleep. `parent` is
+// scratch, kept by the caller so that a step allocates nothing.
 void updateSleep(std::vector<PhysicsBody>& bodies, const std::vector<Contact>& contacts,
-                 const PhysicsSettings& settings, std::vector<int>& parent,
-                 std::vector<double>& islandTime);
+                 const PhysicsSettings& settings, std::vector<int>& parent);
 
 // Wakes every body of the given sleeping islands (ids may repeat).
 void wakeIslands(std::vector<PhysicsBody>& bodies, std::vector<int>& islands);

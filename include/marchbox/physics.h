@@ -57,8 +57,8 @@ struct PhysicsSettings {
     double sleepSpeed = 0.05;           // m/s (and rad/s · radius) below which a body may sleep
     double timeToSleep = 0.5;           // s an island must stay slow before it sleeps
     double maxSpeed = 1e4;              // m/s, a guard against runaway input
-    int threads = 1;                    // 1 or 2: the solver's second thread, where the contacts
-                                        // are many; the result is the same either way
+    int threads = 1;                    // 1 or 2: a second thread loads and solves half the
+                                        // contacts where they are many; the same result either way
     bool twoLanes = false;              // the solver's baseline x86-64 code (a batch in halves)
                                         // whatever the CPU has: tests compare the two, which
                                         // give the same bytes

@@ -10,6 +10,7 @@
 #include "marchbox/worker.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <glm/geometric.hpp>
 
@@ -163,14 +164,22 @@ struct BodyPairs {
     for (int k = 0; k < 3; ++k) storeRow(body, 2 * k, from.pairs[k][l]);
 }
 
-// Body a is written back only where it moves (the static body, shared by every level, never is).
+// x where `first`, else y, without a branch: the choices below are anyone's guess, lane by lane.
+template <class T>
+[[gnu::always_inline]] inline T* pick(bool first, T* x, T* y) {
+    const auto mask = -std::uintptr_t(first);
+    return reinterpret_cast<T*>((reinterpret_cast<std::uintptr_t>(x) & mask) | (reinterpret_cast<std::uintptr_t>(y) & ~mask));
+}
+
+// Body a is written back only where it moves (the static body, shared by every level and both
+// threads, never is): elsewhere its lane goes to `sink`, the caller's scratch.
 template <class V>
-[[gnu::always_inline]] inline void scatter(const Slice<V>& at, const LaneRows& w, const PairLanes<V>& s) {
+[[gnu::always_inline]] inline void scatter(const Slice<V>& at, const LaneRows& w, const PairLanes<V>& s, PhysicsBody& sink) {
     const auto a = rowsOf(s.a), b = rowsOf(s.b);
     for (int l = 0; l < widthOf<V>; ++l) {
         const int lane = at.first + l;
         if (lane >= at.c.count) break;
-        if (w.massA[lane] > 0.0) storeLane(*at.c.a[lane], a, l);
+        storeLane(*pick(w.massA[lane] > 0.0, at.c.a[lane], &sink), a, l);
         storeLane(*at.c.b[lane], b, l);
     }
 }
@@ -290,14 +299,16 @@ template <class V>
     return true;
 }
 
+// Without branches on which lanes push: body a's flag where it moves, else b's again (the static
+// body, shared by both threads' runs, is never written).
 template <class V>
 [[gnu::always_inline]] inline void markSupported(const Slice<V>& at) {
     const ContactBatch& c = at.c;
     for (int l = at.first; l < at.first + widthOf<V>; ++l) {
         if (l >= c.count) break;
-        if (c.normalImpulse[l] <= 0.0) continue;
-        c.b[l]->supported = true;
-        if (c.solve.massA[l] > 0.0) c.a[l]->supported = true;
+        const bool pushed = c.normalImpulse[l] > 0.0;
+        c.b[l]->supported |= pushed;
+        pick(c.solve.massA[l] > 0.0, c.a[l], c.b[l])->supported |= pushed;
     }
 }
 
@@ -322,12 +333,21 @@ void loadLane(ContactBatch& to, int l, Contact& c, const SolverContext& ctx) {
 }  // namespace
 
 void ContactBatches::load(const SolverContext& ctx) {
-    const int staticBody = int(ctx.bodies.size()) - 1;
-    buildContactGraph(ctx.contacts, ctx.split, staticBody, graph_, scratch_);
-    Contact padding;  // on the static body alone, no mass, no impulse: never written back
-    padding.a = padding.b = staticBody;
+    buildContactGraph(ctx.contacts, ctx.split, int(ctx.bodies.size()) - 1, graph_, scratch_);
     batches_.resize(size_t(graph_.batches()));
-    for (int k = 0; k < graph_.batches(); ++k) {
+    // A batch is loaded from its own contacts alone: with a worker, it takes the first half.
+    Worker* worker = ctx.worker;
+    const int half = worker ? graph_.batches() / 2 : 0;
+    auto first = [&] { loadBatches(ctx, 0, half); };
+    if (worker) worker->post(first);
+    loadBatches(ctx, half, graph_.batches());
+    if (worker) worker->wait();
+}
+
+void ContactBatches::loadBatches(const SolverContext& ctx, int begin, int end) {
+    Contact padding;  // on the static body alone, no mass, no impulse: never written back
+    padding.a = padding.b = int(ctx.bodies.size()) - 1;
+    for (int k = begin; k < end; ++k) {
         ContactBatch& c = batches_[size_t(k)];
         c.count = 0;
         for (int l = 0; l < kLanes; ++l) {
@@ -359,6 +379,7 @@ template <class V>
 
 template <class V>
 [[gnu::always_inline]] inline void warmStartBatches(const Pass& pass, int begin, int end) {
+    PhysicsBody sink;
     for (int i = pass.levelBegin[begin]; i < pass.levelBegin[end]; ++i) {
         ContactBatch& c = pass.batches[i];
         for (int first = 0; first < lanesHeld<V>(c); first += widthOf<V>) {
@@ -368,13 +389,14 @@ template <class V>
             applyNormal(s, at, c.solve, at(c.normalImpulse) * at.normal());
             applyImpulse(s, at, c.solve, {at(c.tx), at(c.ty), at(c.tz)});
             applyAngular(s, at, c.solve, {at(c.rx), at(c.ry), at(c.rz)});
-            scatter(at, c.solve, s);
+            scatter(at, c.solve, s, sink);
         }
     }
 }
 
 template <class V, bool useBias>
 [[gnu::always_inline]] inline void solveBatches(const Pass& pass, int begin, int end) {
+    PhysicsBody sink;
     for (int i = pass.levelBegin[begin]; i < pass.levelBegin[end]; ++i) {
         ContactBatch& c = pass.batches[i];
         const LaneRows& w = useBias ? c.solve : c.relax;
@@ -382,7 +404,7 @@ template <class V, bool useBias>
             const Slice<V> at{c, first};
             PairLanes<V> s = gather(at);
             if (!solveRows(at, s, pass.ctx, w, useBias)) continue;
-            scatter(at, w, s);
+            scatter(at, w, s, sink);
             if (useBias) markSupported(at);
         }
     }

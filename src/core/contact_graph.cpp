@@ -5,14 +5,27 @@
 
 namespace mb {
 
-void sideByMedianX(const std::vector<PhysicsBody>& bodies, std::vector<double>& xs, std::vector<char>& side) {
+void sideByMedianX(const std::vector<PhysicsBody>& bodies, std::vector<BodyX>& byX, std::vector<char>& side) {
     const size_t n = bodies.size() - 1;  // the static body, last, joins no side
-    xs.resize(n);
-    for (size_t i = 0; i < n; ++i) xs[i] = bodies[i].pos.x;
-    const auto middle = xs.begin() + ptrdiff_t(n / 2);
-    std::nth_element(xs.begin(), middle, xs.end());
+    const bool fresh = byX.size() != n;
+    if (fresh) {
+        byX.resize(n);
+        for (size_t i = 0; i < n; ++i) byX[i].body = int(i);
+    }
+    for (BodyX& e : byX) e.x = bodies[size_t(e.body)].pos.x;
+    // Bodies move little between steps: the last order, re-sorted by insertion, is near linear,
+    // where a selection (nth_element) guessed wrong at most of its comparisons.
+    auto less = [](const BodyX& a, const BodyX& b) { return a.x < b.x; };
+    if (fresh) std::sort(byX.begin(), byX.end(), less);
+    for (size_t i = 1; i < n; ++i) {
+        const BodyX e = byX[i];
+        size_t j = i;
+        for (; j > 0 && less(e, byX[j - 1]); --j) byX[j] = byX[j - 1];
+        byX[j] = e;
+    }
+    const double middle = n > 0 ? byX[n / 2].x : 0.0;  // as nth_element would find it
     side.resize(n);
-    for (size_t i = 0; i < n; ++i) side[i] = bodies[i].pos.x < *middle ? 0 : 1;
+    for (size_t i = 0; i < n; ++i) side[i] = bodies[i].pos.x < middle ? 0 : 1;
 }
 
 void buildContactGraph(const std::vector<Contact>& contacts, const int split[2], int staticBody,

@@ -27,8 +27,10 @@ RowMasses rowMasses(const Contact& c, const InverseMasses& w) {
 // between two spheres one above the other, the lower one is treated as fixed, which stops the
 // upper one in a single pass. Only resting contacts under gravity: impacts keep exact momentum.
 bool shockPropagates(const Contact& c, const SolverContext& ctx) {
-    return ctx.gravity > 0.0 && c.a != int(ctx.bodies.size()) - 1 &&
-           std::abs(c.relativeVelocity) < ctx.settings.restitutionThreshold && std::abs(c.normal.y) > 0.5;
+    const bool falling = ctx.gravity > 0.0, onSphere = c.a != int(ctx.bodies.size()) - 1;
+    const bool resting = std::abs(c.relativeVelocity) < ctx.settings.restitutionThreshold;
+    const bool stacked = std::abs(c.normal.y) > 0.5;
+    return falling & onSphere & resting & stacked;  // & where && would branch on each, the later ones anyone's guess
 }
 
 InverseMasses fixingLower(const Contact& c, const PhysicsBody& a, const PhysicsBody& b) {
@@ -71,11 +73,14 @@ PreparedRows prepareContact(Contact& c, const SolverContext& ctx) {
 // there is no torque; body a is left alone where it does not move (the static body).
 void applyRestitution(SolverContext& ctx, int iterations, std::vector<int>& bouncing) {
     if (ctx.restitution <= 0.0) return;
-    bouncing.clear();
-    for (size_t i = 0; i < ctx.contacts.size(); ++i) {
+    bouncing.resize(ctx.contacts.size());
+    size_t count = 0;
+    for (size_t i = 0; i < ctx.contacts.size(); ++i) {  // written in full, counted where it bounces
         const Contact& c = ctx.contacts[i];
-        if (c.relativeVelocity < -bounceThreshold(ctx) && c.maxNormalImpulse > 0.0) bouncing.push_back(int(i));
+        bouncing[count] = int(i);
+        count += size_t(c.relativeVelocity < -bounceThreshold(ctx)) & size_t(c.maxNormalImpulse > 0.0);
     }
+    bouncing.resize(count);
     for (int k = 0; k < iterations; ++k)
         for (int i : bouncing) {
             Contact& c = ctx.contacts[size_t(i)];

@@ -30,11 +30,31 @@ int Impacts::resolve(SolverContext& ctx) {
     for (size_t i = 0; i + 1 < n; ++i)
         if (bodies[i].awake && !bodies[i].supported) accel_[i].y = -ctx.gravity;
     offset_.assign(n, dvec3(0.0));
+    hit_.assign(n, 0);
+    moved_.clear();
     stamp_.assign(contacts, 0);
     count_.assign(contacts, 0);
     heap_.clear();
-    for (size_t i = 0; i < contacts; ++i)
-        if (!(ctx.contacts[i].normalImpulse > 0.0)) schedule(ctx, int(i), 0.0);  // else it returns at once
+    // Free flight changes a contact's approach speed by at most |g|·dt in the step: one that
+    // starts (Contact::relativeVelocity, before any impact) 2|g|·dt above the threshold, room for
+    // rounding, cannot impact until an impact on its bodies finds it again. Most contacts of a
+    // pile are such, and skipping them leaves their bodies unread.
+    const double reach = -bounceThreshold(ctx) + 2.0 * std::abs(ctx.gravity) * ctx.settings.dt;
+    // Which contacts are open, and which of those are due, is anyone's guess contact by contact:
+    // each list is written in full and counted on where the contact belongs, with no branch.
+    open_.resize(contacts);
+    due_.resize(contacts);
+    size_t open = 0, due = 0;
+    for (size_t i = 0; i < contacts; ++i) {
+        open_[open] = int(i);
+        open += ctx.contacts[i].normalImpulse > 0.0 ? 0 : 1;
+    }
+    open_.resize(open);
+    for (int i : open_) {
+        due_[due] = i;
+        due += ctx.contacts[size_t(i)].relativeVelocity < reach ? 1 : 0;
+    }
+    for (size_t k = 0; k < due; ++k) schedule(ctx, due_[k], 0.0);
     const int staticBody = int(n) - 1;
     int impacts = 0;
     while (!heap_.empty()) {
@@ -67,8 +87,18 @@ int Impacts::resolve(SolverContext& ctx) {
 // flight, run backwards, lies inside what the body hit, so the solver sees the pair start
 // overlapped by (1 + e)·|u|·t* but part at e·|u|: its soft push, biasRate·overlap < 10/s · dt ·
 // (1 + e)·|u|, is slower than that for e above 0.1, and the relax pass takes back what it adds.
+// Only the contacts of bodies hit move (the others' shift is 0): they are listed, without a
+// branch, and correctPositions takes the shift back out of them alone.
 void Impacts::shiftSeparations(std::vector<Contact>& contacts) {
-    for (Contact& c : contacts) {
+    shifted_.resize(contacts.size());
+    size_t count = 0;
+    for (size_t i = 0; i < contacts.size(); ++i) {
+        shifted_[count] = int(i);
+        count += hit_[size_t(contacts[i].a)] | hit_[size_t(contacts[i].b)];
+    }
+    shifted_.resize(count);
+    for (int i : shifted_) {
+        Contact& c = contacts[size_t(i)];
         c.shift = glm::dot(c.normal, offset_[size_t(c.b)] - offset_[size_t(c.a)]);
         c.separation += c.shift;
     }
@@ -128,35 +158,41 @@ void Impacts::hit(SolverContext& ctx, const Contact& c, double t) {
     b.spin += b.invInertia * glm::cross(armB, p);
     offset_[size_t(c.a)] += a.invMass * p * t;  // −Δv·t
     offset_[size_t(c.b)] -= b.invMass * p * t;
+    for (int body : {c.a, c.b}) {
+        if (ctx.bodies[size_t(body)].invMass <= 0.0 || hit_[size_t(body)]) continue;  // the static body stays
+        hit_[size_t(body)] = 1;
+        moved_.push_back(body);
+    }
 }
 
-// Each dynamic body's contacts, for finding its impacts again after it is hit. Built on the
-// first impact of a step: most steps have none.
+// Each dynamic body's contacts that may impact (open_: schedule() leaves those that bore load to
+// the solver), for finding their impacts again after it is hit. Built on the first impact of a step.
 void Impacts::linkBodies(const SolverContext& ctx) {
     const int staticBody = int(ctx.bodies.size()) - 1;
     first_.assign(ctx.bodies.size() + 1, 0);
-    for (const Contact& c : ctx.contacts)
-        for (int body : {c.a, c.b})
+    for (int j : open_)
+        for (int body : {ctx.contacts[size_t(j)].a, ctx.contacts[size_t(j)].b})
             if (body != staticBody) ++first_[size_t(body) + 1];
     for (size_t i = 1; i < first_.size(); ++i) first_[i] += first_[i - 1];
     links_.resize(size_t(first_.back()));
     std::vector<int>& next = next_;
     next.assign(first_.begin(), first_.end() - 1);
-    for (size_t j = 0; j < ctx.contacts.size(); ++j)
-        for (int body : {ctx.contacts[j].a, ctx.contacts[j].b})
-            if (body != staticBody) links_[size_t(next[size_t(body)]++)] = int(j);
+    for (int j : open_)
+        for (int body : {ctx.contacts[size_t(j)].a, ctx.contacts[size_t(j)].b})
+            if (body != staticBody) links_[size_t(next[size_t(body)]++)] = j;
     linked_ = true;
 }
 
 void Impacts::correctPositions(std::vector<PhysicsBody>& bodies, std::vector<Contact>& contacts) const {
     if (!any_) return;
-    for (Contact& c : contacts) {
+    for (int i : shifted_) {
+        Contact& c = contacts[size_t(i)];
         c.separation -= c.shift;
         c.shift = 0.0;
     }
-    for (size_t i = 0; i + 1 < bodies.size(); ++i) {
-        bodies[i].pos += offset_[i];
-        bodies[i].delta += offset_[i];
+    for (int i : moved_) {
+        bodies[size_t(i)].pos += offset_[size_t(i)];
+        bodies[size_t(i)].delta += offset_[size_t(i)];
     }
 }
 

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <glm/geometric.hpp>
-#include <limits>
 
 namespace mb {
 
@@ -21,8 +20,7 @@ bool slow(const PhysicsBody& b, double speed) {
 }  // namespace
 
 void updateSleep(std::vector<PhysicsBody>& bodies, const std::vector<Contact>& contacts,
-                 const PhysicsSettings& settings, std::vector<int>& parent,
-                 std::vector<double>& islandTime) {
+                 const PhysicsSettings& settings, std::vector<int>& parent) {
     const int n = int(bodies.size()) - 1;  // the static body joins no island
     for (int i = 0; i < n; ++i)
         if (bodies[i].awake)
@@ -32,23 +30,24 @@ void updateSleep(std::vector<PhysicsBody>& bodies, const std::vector<Contact>& c
     // An island sleeps once its least settled body is ready: with no body ready, none sleeps.
     auto ready = [&](const PhysicsBody& b) { return b.awake && b.sleepTime >= settings.timeToSleep; };
     if (std::none_of(bodies.begin(), bodies.begin() + n, ready)) return;
-    parent.resize(n);
-    for (int i = 0; i < n; ++i) parent[i] = i;
+    // Node n stands for every body not ready (asleep already, or not settled): they start in its
+    // set, and an island joined to it stays awake. Unions point to the larger root, so n stays
+    // its set's root and a contact between two of its bodies is passed over without a search.
+    parent.resize(size_t(n) + 1);
+    for (int i = 0; i < n; ++i) parent[i] = ready(bodies[i]) ? i : n;
+    parent[n] = n;
     // Every contact between two spheres links them, touching or only within speculative reach:
     // the same reach at which an awake sphere wakes a sleeping one, so neighbours that would
     // wake each other sleep together.
-    for (const Contact& c : contacts)
-        if (c.a < n) parent[findRoot(parent, c.a)] = findRoot(parent, c.b);
-    // The island's readiness is its least settled body: the minimum timer, kept at the root.
-    islandTime.assign(size_t(n), std::numeric_limits<double>::infinity());
-    for (int i = 0; i < n; ++i) {
-        double& t = islandTime[findRoot(parent, i)];
-        t = std::min(t, bodies[i].awake ? bodies[i].sleepTime : 0.0);
+    for (const Contact& c : contacts) {
+        if (c.a >= n || (parent[c.a] == n && parent[c.b] == n)) continue;
+        const int ra = findRoot(parent, c.a), rb = findRoot(parent, c.b);
+        parent[std::min(ra, rb)] = std::max(ra, rb);
     }
     for (int i = 0; i < n; ++i) {
         PhysicsBody& b = bodies[i];
         const int root = findRoot(parent, i);
-        if (!b.awake || islandTime[root] < settings.timeToSleep) continue;
+        if (root == n) continue;
         b.awake = false;
         b.vel = b.spin = glm::dvec3(0.0);
         b.island = root;

@@ -26,7 +26,14 @@ struct Found {  // a contact as collide() finds it, before its place in the solv
     bool curved;
     dvec3 normal;
     double separation;
+    double height;  // of the contact point, on b's surface: the bottom-up order's
 };
+
+// Found with its height taken from b while collide() has b at hand, where the sort would read
+// the bodies out of order.
+Found found(int a, int b, const PhysicsBody& onB, int feature, bool curved, const dvec3& normal, double separation) {
+    return {a, b, feature, curved, normal, separation, onB.pos.y - onB.radius * normal.y};
+}
 
 }  // namespace
 
@@ -71,7 +78,7 @@ struct PhysicsWorld::Impl {
     std::vector<Order> order, fresh, merged;
     std::vector<Order> byRank;  // persisting contacts at last step's rank; index -1 where none is
     std::vector<int> rank;      // per contact, in solve order: its rank in the bottom-up order
-    std::vector<double> xs;
+    std::vector<BodyX> byX;  // bodies in x order, for sideByMedianX
     std::vector<char> side;  // per body: the half it is in, by x
     int split[2] = {0, 0};
     std::unique_ptr<Worker> worker;  // started with the first step that splits
@@ -102,7 +109,6 @@ struct PhysicsWorld::Impl {
     std::vector<std::pair<int, int>> pairs;
     std::vector<StaticHit> hits;
     std::vector<int> islands, scratch;
-    std::vector<double> islandTime;
 };
 
 namespace {
@@ -117,13 +123,9 @@ std::uint64_t contactKey(int a, int b, int feature, int staticBody) {
     return first << 40 | second << 16 | std::uint64_t(feature + 1);
 }
 
-double contactHeight(const Found& f, const std::vector<PhysicsBody>& bodies) {
-    const PhysicsBody& b = bodies[size_t(f.b)];
-    return b.pos.y - b.radius * f.normal.y;  // the contact point, on b's surface
-}
-
-// The contact's arms, lever of rolling resistance and slop, from its bodies (a may be static); the
-// rest as a new Contact has them. Written in place, as sortBottomUp writes its Orders.
+// The contact's arms, lever of rolling resistance, slop and approach speed before the impacts
+// (Impacts::resolve), from its bodies (a may be static); the rest as a new Contact has them.
+// Written in place, as sortBottomUp writes its Orders.
 void makeContact(Contact& c, const Found& f, const std::vector<PhysicsBody>& bodies, int staticBody,
                  const PhysicsSettings& settings) {
     c = Contact{};
@@ -137,6 +139,13 @@ void makeContact(Contact& c, const Found& f, const std::vector<PhysicsBody>& bod
     c.armA = f.a == staticBody ? 0.0 : bodies[size_t(f.a)].radius;
     c.rollRadius = f.a == staticBody ? c.armB : std::min(c.armA, c.armB);
     c.slop = slopFor(c.rollRadius, settings);
+    c.relativeVelocity = glm::dot(bodies[size_t(f.b)].vel - bodies[size_t(f.a)].vel, f.normal);
+}
+
+// a where `first`, else b, by a mask: a branch on what varies body by body is often guessed wrong.
+double pick(bool first, double a, double b) {
+    const auto mask = -std::uint64_t(first);
+    return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) | (std::bit_cast<std::uint64_t>(b) & ~mask));
 }
 
 // The bits of a double as an unsigned integer in the double's order (negatives reversed below
@@ -229,7 +238,7 @@ void PhysicsWorld::step() {
     if (settings_.impacts) w.impacts.correctPositions(bodies_, w.contacts);
     keepImpulses();
     if (settings_.continuous) sweepFast();
-    updateSleep(bodies_, w.contacts, settings_, w.scratch, w.islandTime);
+    updateSleep(bodies_, w.contacts, settings_, w.scratch);
     updateStats();
     ++steps_;
 }
@@ -260,7 +269,7 @@ void PhysicsWorld::collide() {
         if (!A.awake && !B.awake) continue;
         const dvec3 d = B.pos - A.pos;
         const double len = glm::length(d);
-        w.found.push_back({a, b, -1, false, len > 0.0 ? d / len : dvec3(0, 1, 0), len - A.radius - B.radius});
+        w.found.push_back(found(a, b, B, -1, false, len > 0.0 ? d / len : dvec3(0, 1, 0), len - A.radius - B.radius));
     }
     for (int i = 0; i < n; ++i)
         if (bodies_[i].awake) collideStatic(i);
@@ -311,7 +320,7 @@ void PhysicsWorld::sortBottomUp() {
         // Field by field into its place: a whole Order built aside and copied would be read back
         // in halves that straddle the writes just made, and wait for them to reach the cache.
         Impl::Order& o = old ? w.byRank[size_t(old->rank)] : w.fresh.emplace_back();
-        o.height = orderedBits(contactHeight(f, bodies_));
+        o.height = orderedBits(f.height);
         o.key = key;
         o.index = int(i);
         o.run = 2;
@@ -338,11 +347,12 @@ void PhysicsWorld::splitInHalves() {
     Impl& w = *impl_;
     w.split[0] = w.split[1] = 0;
     if (w.order.size() < kMinContacts) return;
-    sideByMedianX(bodies_, w.xs, w.side);
+    sideByMedianX(bodies_, w.byX, w.side);
     int count[3] = {0, 0, 0};
     for (Impl::Order& o : w.order) {
-        const Found& f = w.found[size_t(o.index)];
-        o.run = runOf(f.a, f.b, w.side, bodyCount());
+        // The bodies from the key (contactKey), not from the contact, which would be a read
+        // out of order: the second, or the static body, as a (runOf gives the same either way).
+        o.run = runOf(int(o.key >> 16 & 0xffffff), int(o.key >> 40), w.side, bodyCount());
         ++count[o.run];
     }
     w.split[0] = count[0];
@@ -412,7 +422,7 @@ void PhysicsWorld::collideStatic(int body) {
         const bool curved = settings_.followCurves && hit.feature > 0 &&
                             std::abs(w.statics.bend(hit.feature, b.pos, hit.normal, move)) >
                                 w.statics.bendNoise(hit.feature, glm::length(move));
-        w.found.push_back({bodyCount(), body, hit.feature, curved, hit.normal, hit.separation});
+        w.found.push_back(found(bodyCount(), body, b, hit.feature, curved, hit.normal, hit.separation));
     }
 }
 
@@ -432,11 +442,12 @@ void PhysicsWorld::integrateVelocities(double h) {
 // marked the bodies a contact pushes (PhysicsBody::supported).
 void PhysicsWorld::integratePositions(double h) {
     const bool exact = settings_.integrator == Integrator::ExactGravity;
+    const double fall = 0.5 * impl_->gravity * h * h;
     for (int i = 0; i < bodyCount(); ++i) {
         PhysicsBody& b = bodies_[i];
         if (!b.awake) continue;
         dvec3 dx = b.vel * h;
-        if (exact && !b.supported) dx.y += 0.5 * impl_->gravity * h * h;
+        dx.y = pick(exact & !b.supported, dx.y + fall, dx.y);  // which are pushed varies
         b.pos += dx;
         b.delta += dx;
     }

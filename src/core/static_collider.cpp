@@ -53,7 +53,10 @@ double StaticCollider::lowerBound(const Group& g, const glm::dvec3& p) const {
         if (statics_[size_t(i)].op != CsgOp::Union) continue;
         const glm::dvec3 d = p - b.centre;
         const glm::dvec3 local = b.rotated ? b.toLocal * d : d;  // the same |components| either way
-        const double distance = b.box ? glm::length(glm::max(glm::abs(local) - b.half, 0.0)) : glm::length(d);
+        // glm::abs and glm::max branch per axis; std::abs and std::max are an instruction each.
+        const glm::dvec3 outside{std::max(std::abs(local.x) - b.half.x, 0.0), std::max(std::abs(local.y) - b.half.y, 0.0),
+                                 std::max(std::abs(local.z) - b.half.z, 0.0)};
+        const double distance = b.box ? glm::length(outside) : glm::length(d);
         bound = std::min(bound, distance - b.less - b.grow);
     }
     return bound;

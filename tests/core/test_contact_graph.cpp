@@ -109,6 +109,26 @@ TEST(ContactGraph, LoadedContactsLeadEachLevel) {
     }
 }
 
+// sideByMedianX keeps the bodies in x order from one call to the next and re-sorts it: after the
+// bodies move (some across the median), the cut must be the one a fresh order gives.
+TEST(ContactGraph, TheKeptXOrderFollowsTheBodies) {
+    std::vector<PhysicsBody> bodies(size_t(kBodies) + 1);  // the static body last
+    std::uint32_t state = 99;
+    auto next = [&] { return double((state = state * 1664525u + 1013904223u) >> 8) / double(1u << 24); };
+    for (int i = 0; i < kBodies; ++i) bodies[size_t(i)].pos.x = next();
+    std::vector<BodyX> kept;
+    std::vector<char> side, fresh;
+    sideByMedianX(bodies, kept, side);
+    for (int round = 0; round < 3; ++round) {
+        for (int i = 0; i < kBodies; ++i) bodies[size_t(i)].pos.x += 0.3 * (next() - 0.5);
+        std::vector<BodyX> none;
+        sideByMedianX(bodies, kept, side);
+        sideByMedianX(bodies, none, fresh);
+        EXPECT_EQ(side, fresh) << "round " << round;
+        EXPECT_EQ(std::count(side.begin(), side.end(), 0), kBodies / 2) << "round " << round;
+    }
+}
+
 // What two threads solve at once shares no body: the levels of the first run (the worker's) and
 // of the second (this thread's) never hold the same dynamic body, whatever the contacts, and a
 // contact across the cut waits for both, in the joining run. (A race on a shared body would show
@@ -117,9 +137,9 @@ TEST(ContactGraph, HalvesShareNoBody) {
     std::vector<PhysicsBody> bodies(size_t(kBodies) + 1);  // the static body last
     std::uint32_t state = 4242;
     for (int i = 0; i < kBodies; ++i) bodies[size_t(i)].pos.x = double((state = state * 1664525u + 1013904223u) >> 8);
-    std::vector<double> xs;
+    std::vector<BodyX> byX;
     std::vector<char> side;
-    sideByMedianX(bodies, xs, side);
+    sideByMedianX(bodies, byX, side);
     EXPECT_EQ(std::count(side.begin(), side.end(), 0), kBodies / 2) << "the cut is at the median";
     // The contacts in runs, each run keeping the solve order (as PhysicsWorld::splitInHalves does).
     const std::vector<Contact> contacts = randomContacts(300);
