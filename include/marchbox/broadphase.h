@@ -9,8 +9,9 @@
 //
 // The grid runs with each extent grown by a skin, and its pairs are kept (a Verlet list): while no
 // sphere has moved (beside the spheres' mean move) and grown by more than its skin since, every
-// pair that overlaps now is among them, and a step only tests those. Any sphere past its skin
-// rebuilds the list.
+// pair that overlaps now is among them, and a step only tests those. A sphere past its skin is
+// refreshed, with those near theirs: it takes its place now (in the grid's frame) and a new skin,
+// its pairs are found again and the rest are kept; many at once rebuild the whole list.
 #pragma once
 
 #include <cstdint>
@@ -27,8 +28,13 @@ public:
                    std::vector<std::pair<int, int>>& pairs);
 
 private:
-    bool listCovers(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents) const;
+    // Lists in moved_ the spheres to refresh (none: the list covers this step); false where it
+    // must be built anew.
+    bool findMoved(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents);
     void buildList(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents);
+    void refresh();                        // the spheres in moved_, from their refs_ and listExtents_
+    // Entry `entry`'s pairs, its neighbour columns found from cursor[] on (pairCells' way).
+    void pairMoved(int entry, int (&cursor)[9], std::vector<std::pair<int, int>>& pairs) const;
 
     struct Entry {
         std::int64_t x, y, z;  // cell
@@ -41,7 +47,7 @@ private:
         int body;
     };
     using Pairs = std::vector<std::pair<int, int>>;
-    void buildCells(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents);
+    void buildCells();
     void pairCells(Pairs& pairs) const;
     struct Run {               // entries [begin, end): a cell, or a neighbour column's cells
         int begin, end;
@@ -60,9 +66,11 @@ private:
     std::vector<int> large_;    // entries of bodies too big for the grid, by the low end of their reach in x
     std::vector<double> scratch_;
     double cell_ = 1.0;         // edge of a grid cell, this step
-    std::vector<std::pair<int, int>> list_;  // pairs of the grown spheres, when the list was built
-    std::vector<glm::dvec3> listCentres_;    // centres then
+    std::vector<std::pair<int, int>> list_;  // pairs of the grown spheres
+    std::vector<glm::dvec3> refs_;           // each centre when last placed, less the mean move since the build
     std::vector<double> listExtents_;        // grown extents then
+    std::vector<int> moved_, entryOf_;       // bodies (then entries) to refresh; each body's entry in cells_
+    std::vector<char> isMoved_;
 };
 
 }  // namespace mb

@@ -44,12 +44,18 @@ void addPair(std::vector<std::pair<int, int>>& pairs, int i, int j) {
 
 // The skin, as a fraction of the extent: larger keeps the list longer, smaller tests fewer pairs.
 constexpr double kSkin = 0.5;
+// A refresh takes the spheres past this share of their grown extent too, so that those close to
+// their skin do not each call for another the next steps. More than kRebuild of them at once
+// (a pile on its way down) are cheaper found all anew.
+constexpr double kRefreshAt = 1.0 - 0.5 * kSkin / (1.0 + kSkin);
+constexpr double kRebuild = 0.25;
 
 void Broadphase::findPairs(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents,
                            std::vector<std::pair<int, int>>& pairs) {
     pairs.clear();
     if (centres.empty()) return;
-    if (!listCovers(centres, extents)) buildList(centres, extents);
+    if (!findMoved(centres, extents)) buildList(centres, extents);
+    else if (!moved_.empty()) refresh();
     // Every listed pair is written and the count moves on where it overlaps: which do is
     // anyone's guess, so a branch on it would be guessed wrong often.
     pairs.resize(list_.size());
@@ -61,50 +67,108 @@ void Broadphase::findPairs(const std::vector<glm::dvec3>& centres, const std::ve
     pairs.resize(kept);
 }
 
-// A pair left out of the list was at least E_i + E_j apart (grown extents); it overlaps now only if
-// e_i + e_j + how far the two moved apart since exceeds that. Moved apart: |d_i − d_j|, at most
-// |d_i − o| + |d_j − o| for any common move o, here the mean (a pile falling together keeps its
-// pairs). So the list holds every overlapping pair while each sphere's extent plus its move
-// beside the mean stays within its grown extent; the factor keeps that true through the
-// rounding of the distance tests.
-bool Broadphase::listCovers(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents) const {
-    if (listCentres_.size() != centres.size()) return false;
+// A pair left out of the list was at least E_i + E_j apart (grown extents, at the places refs_
+// holds); it overlaps now only if e_i + e_j + how far the two moved apart since exceeds that.
+// Moved apart: |d_i − d_j|, at most |d_i − o| + |d_j − o| for any common move o, here the mean
+// (a pile falling together keeps its pairs): refs_ are kept in one frame, each moved by the
+// mean move up to its last refresh, so one o serves all. So the list holds every overlapping
+// pair while each sphere's extent plus its move beside the mean stays within its grown extent;
+// the factor keeps that true through the rounding of the distance tests.
+bool Broadphase::findMoved(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents) {
+    const size_t n = centres.size();
+    if (refs_.size() != n) return false;
     glm::dvec3 shift(0.0);
-    for (size_t i = 0; i < centres.size(); ++i) shift += centres[i] - listCentres_[i];
-    shift /= double(centres.size());
-    for (size_t i = 0; i < centres.size(); ++i)
-        if (extents[i] + glm::length(centres[i] - listCentres_[i] - shift) > (1.0 - 1e-9) * listExtents_[i]) return false;
+    for (size_t i = 0; i < n; ++i) shift += centres[i] - refs_[i];
+    shift /= double(n);
+    moved_.clear();
+    bool covers = true;
+    for (size_t i = 0; i < n; ++i) {
+        const double used = extents[i] + glm::length(centres[i] - refs_[i] - shift);
+        covers = covers && used <= (1.0 - 1e-9) * listExtents_[i];
+        if (used > kRefreshAt * listExtents_[i]) moved_.push_back(int(i));
+    }
+    if (covers) {
+        moved_.clear();
+        return true;
+    }
+    if (double(moved_.size()) > kRebuild * double(n)) return false;
+    for (int i : moved_) {
+        refs_[size_t(i)] = centres[size_t(i)] - shift;
+        listExtents_[size_t(i)] = (1.0 + kSkin) * extents[size_t(i)];
+    }
     return true;
 }
 
 void Broadphase::buildList(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents) {
-    listCentres_ = centres;
+    const int n = int(centres.size());
+    refs_ = centres;
     listExtents_.resize(extents.size());
     for (size_t i = 0; i < extents.size(); ++i) listExtents_[i] = (1.0 + kSkin) * extents[i];
-    list_.clear();
-    buildCells(centres, listExtents_);
-    pairCells(list_);
-    pairLarge(list_);
-}
-
-void Broadphase::buildCells(const std::vector<glm::dvec3>& centres,
-                            const std::vector<double>& extents) {
-    const int n = int(centres.size());
-    scratch_ = extents;
     // The 99th percentile: each sphere left large costs a block search (pairBlock) at every
     // rebuild, more than the slightly larger cells cost the rest (a settling pile of 1000: 95th
     // 18.4e6 cycles of list building in 180 steps, 99th 16.7e6).
+    scratch_ = listExtents_;
     auto p99 = scratch_.begin() + (n - 1) * 99 / 100;
     std::nth_element(scratch_.begin(), p99, scratch_.end());
     // A sphere of extent <= cell/2 overlaps only spheres whose centres are within one cell.
     cell_ = 2.0 * *p99;
+    list_.clear();
+    buildCells();
+    pairCells(list_);
+    pairLarge(list_);
+}
+
+// The moved spheres' pairs go, and each finds its pairs anew, against the others where refs_
+// holds them (one pair of two moved ones is found from its first body). The grid keeps its cell
+// size: a sphere grown past it is large, and tested against all. Taken in cell order, as
+// pairCells takes the cells, so that the neighbour columns' cursors only move forward.
+void Broadphase::refresh() {
+    buildCells();
+    isMoved_.assign(refs_.size(), 0);
+    for (int& i : moved_) {
+        isMoved_[size_t(i)] = 1;
+        i = entryOf_[size_t(i)];
+    }
+    std::erase_if(list_, [&](std::pair<int, int> p) { return isMoved_[size_t(p.first)] | isMoved_[size_t(p.second)]; });
+    std::sort(moved_.begin(), moved_.end());
+    int cursor[9] = {};
+    for (int entry : moved_) pairMoved(entry, cursor, list_);
+}
+
+// The 3 × 3 columns around a small sphere's cell, z − 1 to z + 1, and the large spheres.
+void Broadphase::pairMoved(int entry, int (&cursor)[9], Pairs& pairs) const {
+    const Sphere& a = spheres_[entry];
+    const int n = int(cells_.size());
+    auto test = [&](int j) {
+        const Sphere& b = spheres_[j];
+        if (j == entry || (isMoved_[size_t(b.body)] && b.body < a.body)) return;
+        if (overlaps(a.centre, a.extent, b.centre, b.extent)) pairs.push_back(ordered(a.body, b.body));
+    };
+    if (a.large) {
+        for (int j = 0; j < n; ++j) test(j);
+        return;
+    }
+    for (int j : large_) test(j);
+    const Entry& c = cells_[entry];
+    for (int k = 0; k < 9; ++k) {
+        const std::int64_t x = c.x + k / 3 - 1, y = c.y + k % 3 - 1;
+        int& from = cursor[k];
+        while (from < n && cellLess(cells_[from], x, y, c.z - 1)) ++from;
+        for (int j = from; j < n && cells_[j].x == x && cells_[j].y == y && cells_[j].z <= c.z + 1; ++j)
+            if (!spheres_[j].large) test(j);
+    }
+}
+
+// The cells of refs_, sorted, and the spheres in their order.
+void Broadphase::buildCells() {
+    const int n = int(refs_.size());
     const bool fresh = int(cells_.size()) != n;
     if (fresh) {
         cells_.assign(n, Entry{0, 0, 0, 0});
         for (int i = 0; i < n; ++i) cells_[i].body = i;
     }
     for (Entry& e : cells_) {
-        const glm::dvec3& c = centres[e.body];
+        const glm::dvec3& c = refs_[e.body];
         e.x = std::int64_t(std::floor(c.x / cell_));
         e.y = std::int64_t(std::floor(c.y / cell_));
         e.z = std::int64_t(std::floor(c.z / cell_));
@@ -125,10 +189,13 @@ void Broadphase::buildCells(const std::vector<glm::dvec3>& centres,
         }
     }
     spheres_.resize(n);
+    entryOf_.resize(size_t(n));
     large_.clear();
     for (int i = 0; i < n; ++i) {
         const int body = cells_[i].body;
-        spheres_[i] = {centres[body], extents[body], extents[body] > 0.5 * cell_, body};
+        const double extent = listExtents_[size_t(body)];
+        spheres_[i] = {refs_[size_t(body)], extent, extent > 0.5 * cell_, body};
+        entryOf_[size_t(body)] = i;
         if (spheres_[i].large) large_.push_back(i);
     }
     // By the low end of their reach along x, for the sweep in pairLarge (ties by entry: a total order).
