@@ -33,8 +33,9 @@ private:
     bool findMoved(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents);
     void buildList(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents);
     void refresh();                        // the spheres in moved_, from their refs_ and listExtents_
-    // Entry `entry`'s pairs, its neighbour columns found from cursor[] on (pairCells' way).
-    void pairMoved(int entry, int (&cursor)[9], std::vector<std::pair<int, int>>& pairs) const;
+    // Entry `entry`'s pairs, at pairs[kept] on; its neighbour columns found from cursor[] on
+    // (pairCells' way).
+    void pairMoved(int entry, int (&cursor)[9], std::vector<std::pair<int, int>>& pairs, size_t& kept) const;
 
     struct Entry {
         std::int64_t x, y, z;  // cell

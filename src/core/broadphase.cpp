@@ -129,34 +129,53 @@ void Broadphase::refresh() {
         isMoved_[size_t(i)] = 1;
         i = entryOf_[size_t(i)];
     }
-    std::erase_if(list_, [&](std::pair<int, int> p) { return isMoved_[size_t(p.first)] | isMoved_[size_t(p.second)]; });
+    size_t kept = 0;
+    for (auto [i, j] : list_) {  // each written, kept where neither moved (without a branch, as findPairs)
+        list_[kept] = {i, j};
+        kept += size_t(!(isMoved_[size_t(i)] | isMoved_[size_t(j)]));
+    }
     std::sort(moved_.begin(), moved_.end());
     int cursor[9] = {};
-    for (int entry : moved_) pairMoved(entry, cursor, list_);
+    for (int entry : moved_) pairMoved(entry, cursor, list_, kept);
+    list_.resize(kept);
 }
 
-// The 3 × 3 columns around a small sphere's cell, z − 1 to z + 1, and the large spheres.
-void Broadphase::pairMoved(int entry, int (&cursor)[9], Pairs& pairs) const {
+// The 3 × 3 columns around a small sphere's cell, z − 1 to z + 1, and the large spheres; a
+// large one against all. Branch-free, as pairSphere: each candidate is written, and kept where
+// it is another sphere, not a moved one that finds the pair itself, and overlaps.
+void Broadphase::pairMoved(int entry, int (&cursor)[9], Pairs& pairs, size_t& kept) const {
     const Sphere& a = spheres_[entry];
     const int n = int(cells_.size());
-    auto test = [&](int j) {
+    auto test = [&](int j, bool wanted) {
         const Sphere& b = spheres_[j];
-        if (j == entry || (isMoved_[size_t(b.body)] && b.body < a.body)) return;
-        if (overlaps(a.centre, a.extent, b.centre, b.extent)) pairs.push_back(ordered(a.body, b.body));
+        pairs[kept] = ordered(a.body, b.body);
+        const bool mine = !(isMoved_[size_t(b.body)] && b.body < a.body);
+        kept += size_t(wanted & (j != entry) & mine) & size_t(overlaps(a.centre, a.extent, b.centre, b.extent));
+    };
+    auto room = [&](size_t candidates) {
+        if (pairs.size() < kept + candidates) pairs.resize(std::max(kept + candidates, 2 * pairs.size()));
     };
     if (a.large) {
-        for (int j = 0; j < n; ++j) test(j);
+        room(size_t(n));
+        for (int j = 0; j < n; ++j) test(j, true);
         return;
     }
-    for (int j : large_) test(j);
+    Run runs[9];
+    size_t candidates = large_.size();
     const Entry& c = cells_[entry];
     for (int k = 0; k < 9; ++k) {
         const std::int64_t x = c.x + k / 3 - 1, y = c.y + k % 3 - 1;
         int& from = cursor[k];
         while (from < n && cellLess(cells_[from], x, y, c.z - 1)) ++from;
-        for (int j = from; j < n && cells_[j].x == x && cells_[j].y == y && cells_[j].z <= c.z + 1; ++j)
-            if (!spheres_[j].large) test(j);
+        int last = from;
+        while (last < n && cells_[last].x == x && cells_[last].y == y && cells_[last].z <= c.z + 1) ++last;
+        runs[k] = {from, last};
+        candidates += size_t(last - from);
     }
+    room(candidates);
+    for (int j : large_) test(j, true);
+    for (const Run& r : runs)
+        for (int j = r.begin; j < r.end; ++j) test(j, !spheres_[j].large);
 }
 
 // The cells of refs_, sorted, and the spheres in their order.
