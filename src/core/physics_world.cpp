@@ -426,11 +426,15 @@ void PhysicsWorld::collideStatic(int body) {
     }
 }
 
+// The guard seldom acts: |v|² against a bound just below maxSpeed² leaves the root to the few
+// near it (a speed whose rounded root exceeds maxSpeed has a square above the bound).
 void PhysicsWorld::integrateVelocities(double h) {
+    const double near = (1.0 - 1e-12) * settings_.maxSpeed * settings_.maxSpeed;
     for (int i = 0; i < bodyCount(); ++i) {
         PhysicsBody& b = bodies_[i];
         if (!b.awake) continue;
         b.vel.y -= impl_->gravity * h;
+        if (glm::dot(b.vel, b.vel) <= near) continue;
         const double speed = glm::length(b.vel);
         if (speed > settings_.maxSpeed) b.vel *= settings_.maxSpeed / speed;
     }
