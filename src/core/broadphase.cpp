@@ -81,20 +81,16 @@ bool Broadphase::findMoved(const std::vector<glm::dvec3>& centres, const std::ve
     for (size_t i = 0; i < n; ++i) shift += centres[i] - refs_[i];
     shift /= double(n);
     moved_.clear();
-    bool covers = true;
-    for (size_t i = 0; i < n; ++i) {
-        const double used = extents[i] + glm::length(centres[i] - refs_[i] - shift);
-        covers = covers && used <= (1.0 - 1e-9) * listExtents_[i];
-        if (used > kRefreshAt * listExtents_[i]) moved_.push_back(int(i));
-    }
-    if (covers) {
-        moved_.clear();
-        return true;
-    }
+    auto used = [&](size_t i) { return extents[i] + glm::length(centres[i] - refs_[i] - shift); };
+    size_t i = 0;
+    while (i < n && used(i) <= (1.0 - 1e-9) * listExtents_[i]) ++i;  // most steps: all within
+    if (i == n) return true;
+    for (i = 0; i < n; ++i)
+        if (used(i) > kRefreshAt * listExtents_[i]) moved_.push_back(int(i));
     if (double(moved_.size()) > kRebuild * double(n)) return false;
-    for (int i : moved_) {
-        refs_[size_t(i)] = centres[size_t(i)] - shift;
-        listExtents_[size_t(i)] = (1.0 + kSkin) * extents[size_t(i)];
+    for (int m : moved_) {
+        refs_[size_t(m)] = centres[size_t(m)] - shift;
+        listExtents_[size_t(m)] = (1.0 + kSkin) * extents[size_t(m)];
     }
     return true;
 }
