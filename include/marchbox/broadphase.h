@@ -33,9 +33,6 @@ private:
     bool findMoved(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents);
     void buildList(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents);
     void refresh();                        // the spheres in moved_, from their refs_ and listExtents_
-    // Entry `entry`'s pairs, at pairs[kept] on; its neighbour columns found from cursor[] on
-    // (pairCells' way).
-    void pairMoved(int entry, int (&cursor)[9], std::vector<std::pair<int, int>>& pairs, size_t& kept) const;
 
     struct Entry {
         std::int64_t x, y, z;  // cell
@@ -61,14 +58,17 @@ private:
     int lowerBound(int from, std::int64_t x, std::int64_t y, std::int64_t z) const;
     void pairLarge(Pairs& pairs) const;
     void pairBlock(int entry, Pairs& pairs) const;         // a large sphere against the small
+    // A refreshed entry's pairs, at pairs[kept] on; its neighbour columns found from cursor[] on
+    // (pairCells' way).
+    void pairMoved(int entry, int (&cursor)[9], Pairs& pairs, size_t& kept) const;
 
     std::vector<Entry> cells_;  // sorted by (x, y, z, body)
     std::vector<Sphere> spheres_;  // spheres_[i] is body cells_[i].body
     std::vector<int> large_;    // entries of bodies too big for the grid, by the low end of their reach in x
     std::vector<double> scratch_;
-    double cell_ = 1.0;         // edge of a grid cell, this step
+    double cell_ = 1.0;         // edge of a grid cell, since the list was last built
     std::vector<std::pair<int, int>> list_;  // pairs of the grown spheres
-    std::vector<glm::dvec3> refs_;           // each centre when last placed, less the mean move since the build
+    std::vector<glm::dvec3> refs_;           // each centre when last placed, less the mean move from the build to then
     std::vector<double> listExtents_;        // grown extents then
     std::vector<int> moved_, entryOf_;       // bodies (then entries) to refresh; each body's entry in cells_
     std::vector<char> isMoved_;
