@@ -51,6 +51,7 @@ static bool applyValue(const std::string& opt, const std::string& v, Args* a, st
     else if (opt == "--size") ok = parseSize(v, &a->width, &a->height);
     else if (opt == "--seconds") ok = parseSeconds(v, &a->seconds);
     else if (opt == "--frames") ok = parseInt(v, 1, 100000, &a->frames);
+    else if (opt == "--threads") ok = parseInt(v, 1, 2, &a->threads);
     else if (opt == "--mode") a->mode = v;
     else if (opt == "--post") a->post = v;
     else if (opt == "--backend") a->backend = v;
@@ -60,7 +61,8 @@ static bool applyValue(const std::string& opt, const std::string& v, Args* a, st
             {"-o", "a file path"},
             {"--size", "WxH, each side 1 to 16384, at most 4096x4096 pixels in all"},
             {"--seconds", "a number of seconds from 0 to 3600"},
-            {"--frames", "a whole number from 1 to 100000"}};
+            {"--frames", "a whole number from 1 to 100000"},
+            {"--threads", "1 or 2"}};
         for (auto& e : expected)
             if (opt == e[0]) *error = "bad value " + quoteArg(v) + " for " + opt + ": expected " + e[1];
     }
@@ -72,8 +74,8 @@ bool parseArgs(int argc, char** argv, int first, Args* out, std::string* error) 
         std::string arg = argv[i];
         if (arg == "--uber") {
             out->uber = true;
-        } else if (arg == "-o" || arg == "--size" || arg == "--seconds" || arg == "--frames" || arg == "--mode" ||
-                   arg == "--post" || arg == "--backend" || arg == "--quality") {
+        } else if (arg == "-o" || arg == "--size" || arg == "--seconds" || arg == "--frames" || arg == "--threads" ||
+                   arg == "--mode" || arg == "--post" || arg == "--backend" || arg == "--quality") {
             if (i + 1 >= argc) {
                 *error = "missing value after " + arg;
                 return false;

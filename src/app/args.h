@@ -14,6 +14,7 @@ struct Args {
     int width = 640, height = 360;    // --size WxH
     double seconds = 0;               // --seconds
     int frames = 20;                  // --frames
+    int threads = 1;                  // --threads 1|2: the simulator's (same bytes either way)
     bool uber = false;                // --uber
     std::string mode = "shaded";      // --mode
     std::string post = "none";        // --post none|fxaa|fxaa-edges|fxaa-direction

@@ -121,15 +121,22 @@ static bool outputWritable(const std::string& path, const char* doing) {
     return false;
 }
 
+// One thread by default: a second waits for a core wherever other work holds them.
+static PhysicsSettings physicsSettings(const Args& a) {
+    PhysicsSettings settings;
+    settings.threads = a.threads;
+    return settings;
+}
+
 int runRender(const Args& a) {
     RenderOptions options;
     QualityPreset preset;
-    if (!needOne(a, "marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M] [--post P] [--quality Q] [--backend B]") ||
+    if (!needOne(a, "marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M] [--post P] [--quality Q] [--backend B] [--threads N]") ||
         !needOutput(a, "render", "OUT.png") || !renderOptions(a, &options) || !qualityPreset(a, &preset))
         return kExitUsage;
     Scene scene;
     if (!loadOrReport(a.positional[0], &scene) || !outputWritable(a.output, "write")) return kExitBadInput;
-    simulate(scene, a.seconds);
+    simulate(scene, a.seconds, physicsSettings(a));
     applyQualityPreset(preset, &scene.render, &options);
     Image img;
     std::string error;
@@ -145,12 +152,12 @@ int runRender(const Args& a) {
 }
 
 int runSimulate(const Args& a) {
-    if (!needOne(a, "marchbox simulate SCENE --seconds T [-o OUT.txt]")) return kExitUsage;
+    if (!needOne(a, "marchbox simulate SCENE --seconds T [-o OUT.txt] [--threads N]")) return kExitUsage;
     Scene scene;
     if (!loadOrReport(a.positional[0], &scene) || (!a.output.empty() && !outputWritable(a.output, "save")))
         return kExitBadInput;
     // Ctrl-C keeps its default: the process ends at once, before anything is written.
-    simulate(scene, a.seconds, {}, isatty(STDERR_FILENO) ? printSimulateProgress : nullptr);
+    simulate(scene, a.seconds, physicsSettings(a), isatty(STDERR_FILENO) ? printSimulateProgress : nullptr);
     if (a.output.empty()) {
         std::cout << formatScene(scene);
         return flushStdout();

@@ -10,15 +10,16 @@
 static const char* kUsage =
     "usage: marchbox [SCENE]                      open the editor (default scenes/default.txt)\n"
     "       marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M] [--post P]\n"
-    "                [--quality Q]\n"
-    "       marchbox simulate SCENE --seconds T [-o OUT.txt]\n"
+    "                [--quality Q] [--threads N]\n"
+    "       marchbox simulate SCENE --seconds T [-o OUT.txt] [--threads N]\n"
     "       marchbox check SCENE...\n"
     "       marchbox shader SCENE [--uber]\n"
     "       marchbox bench SCENE [--uber] [--size WxH] [--frames N] [--quality Q]\n"
     "       marchbox report physics|render\n"
     "       marchbox --help | --version\n"
     "modes: shaded normals depth steps ao shadow id; post passes: none fxaa fxaa-edges fxaa-direction\n"
-    "quality presets: draft normal (the scene as written) final\n";
+    "quality presets: draft normal (the scene as written) final\n"
+    "threads: the simulator's, 1 (default) or 2; the same result either way\n";
 
 // `marchbox rendr x.txt` is a typo of a command, not a scene to open: a first word that is no
 // file and has no .txt ending. A missing scene.txt still reaches the editor, which says so.

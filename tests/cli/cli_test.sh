@@ -42,6 +42,7 @@ args_cases() {
     expect 2 "${r[@]}" --seconds "$t"
     expect 2 "$mb" simulate "$scene" --seconds "$t"
   done
+  for threads in 0 3 x ''; do expect 2 "$mb" simulate "$scene" --seconds 1 --threads "$threads"; done
   expect 2 "$mb" bench "$scene" --frames 0
   expect 2 "$mb" bench "$scene" --frames -5
   expect 2 "$mb" render "$scene" --mode bogus -o "$tmp/x.png"
@@ -75,6 +76,12 @@ files_cases() {
   # A file name with a newline in it: each error still one line.
   printf 'world gravity:-1\n' >"$tmp/$(printf 'two\nlines').txt"
   expect_says "two?lines.txt:1: 'gravity' must be >= 0" 1 "$mb" check "$tmp/$(printf 'two\nlines').txt"
+  # Two simulator threads give the same bytes as one (the pile settling: many contacts to split).
+  local pile=$src/scenes/pile.txt
+  "$mb" simulate "$pile" --seconds 1.5 --threads 2 >"$tmp/two.txt" &&
+    "$mb" simulate "$pile" --seconds 1.5 --threads 1 >"$tmp/one.txt" && cmp -s "$tmp/one.txt" "$tmp/two.txt" &&
+    ! cmp -s "$tmp/one.txt" "$pile" ||
+    { echo "FAIL: simulate --threads 2 differs from --threads 1, or did not run" >&2; failures=$((failures + 1)); }
   # 8 MB scenes: one line of 8 MB, and 8 MB of objects past the limit. Each is one error.
   head -c 8388608 /dev/zero | tr '\0' x >"$tmp/line.txt"
   expect_says "line longer than 4096 bytes" 1 "$mb" check "$tmp/line.txt"
