@@ -6,6 +6,7 @@
 // Whole batches still skip what none of their lanes needs.
 #include "marchbox/contact_batches.h"
 
+#include "marchbox/branchless.h"
 #include "marchbox/lane_math.h"
 #include "marchbox/worker.h"
 
@@ -162,13 +163,6 @@ struct BodyPairs {
 
 [[gnu::always_inline]] inline void storeLane(PhysicsBody& body, const BodyPairs& from, int l) {
     for (int k = 0; k < 3; ++k) storeRow(body, 2 * k, from.pairs[k][l]);
-}
-
-// x where `first`, else y, without a branch: the choices below are anyone's guess, lane by lane.
-template <class T>
-[[gnu::always_inline]] inline T* pick(bool first, T* x, T* y) {
-    const auto mask = -std::uintptr_t(first);
-    return reinterpret_cast<T*>((reinterpret_cast<std::uintptr_t>(x) & mask) | (reinterpret_cast<std::uintptr_t>(y) & ~mask));
 }
 
 // Body a is written back only where it moves (the static body, shared by every level and both

@@ -1,6 +1,7 @@
 // physics_world.cpp — the fixed step: collide, soft substeps, restitution, sweep, sleep.
 #include "marchbox/physics.h"
 
+#include "marchbox/branchless.h"
 #include "marchbox/broadphase.h"
 #include "marchbox/contact_batches.h"
 #include "marchbox/contact_solver.h"
@@ -140,12 +141,6 @@ void makeContact(Contact& c, const Found& f, const std::vector<PhysicsBody>& bod
     c.rollRadius = f.a == staticBody ? c.armB : std::min(c.armA, c.armB);
     c.slop = slopFor(c.rollRadius, settings);
     c.relativeVelocity = glm::dot(bodies[size_t(f.b)].vel - bodies[size_t(f.a)].vel, f.normal);
-}
-
-// a where `first`, else b, by a mask: a branch on what varies body by body is often guessed wrong.
-double pick(bool first, double a, double b) {
-    const auto mask = -std::uint64_t(first);
-    return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) | (std::bit_cast<std::uint64_t>(b) & ~mask));
 }
 
 // The bits of a double as an unsigned integer in the double's order (negatives reversed below
