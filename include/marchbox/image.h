@@ -17,6 +17,8 @@ struct Image {
 
 Image makeImage(int width, int height);
 bool savePng(const std::string& path, const Image& img, std::string* error);
+// Whether savePng could write `path` (checkReplaceFile), *error in its words: before a long render.
+bool checkSavePng(const std::string& path, std::string* error);
 bool loadPng(const std::string& path, Image* out, std::string* error);
 
 struct ImageDiff {

@@ -35,6 +35,8 @@ std::string formatScene(const Scene& scene);
 // Writes formatScene() to a temporary file beside `path`, flushes it and renames it over `path`.
 // On failure the old file is whole, the temporary is removed and *error says why in one line.
 bool saveScene(const std::string& path, const Scene& scene, std::string* error);
+// Whether saveScene could write `path` (checkReplaceFile), *error in its words: before a long run.
+bool checkSaveScene(const std::string& path, std::string* error);
 
 // Shortest decimal text that reads back to the same float ("0.1", "1e-05", "-2").
 std::string formatFloat(float v);

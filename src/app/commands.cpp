@@ -1,12 +1,10 @@
 // commands.cpp — render, simulate, check, shader and bench: load, act, report in one line.
 #include "commands.h"
 
-#include "marchbox/atomic_file.h"
 #include "marchbox/gl/offscreen_context.h"
 #include "marchbox/gl/quality_preset.h"
 #include "marchbox/gl/renderer.h"
 #include "marchbox/physics.h"
-#include "marchbox/printable.h"
 #include "marchbox/scene_io.h"
 
 #include <algorithm>
@@ -112,13 +110,12 @@ static bool printRenderProgress(float done, void*) {
 }
 static void printSimulateProgress(double done) { showProgress("simulating", done); }
 
-// Where a long render or simulation will write is checked before it starts, in the words the
-// save at the end would use (`doing`: "write" or "save"); that save still reports a full disk.
-static bool outputWritable(const std::string& path, const char* doing) {
-    const std::string why = checkReplaceFile(path);
-    if (why.empty()) return true;
-    std::cerr << "cannot " << doing << " '" << printable(path) << "': " << why << '\n';
-    return false;
+// `ok`, with `error` on standard error where it is false. render and simulate check where they
+// will write before the work (checkSavePng, checkSaveScene), then the save reports what only the
+// write meets (a full disk).
+static bool reported(bool ok, const std::string& error) {
+    if (!ok) std::cerr << error << '\n';
+    return ok;
 }
 
 // One thread by default: a second waits for a core wherever other work holds them.
@@ -135,26 +132,23 @@ int runRender(const Args& a) {
         !needOutput(a, "render", "OUT.png") || !renderOptions(a, &options) || !qualityPreset(a, &preset))
         return kExitUsage;
     Scene scene;
-    if (!loadOrReport(a.positional[0], &scene) || !outputWritable(a.output, "write")) return kExitBadInput;
+    std::string error;
+    if (!loadOrReport(a.positional[0], &scene) || !reported(checkSavePng(a.output, &error), error)) return kExitBadInput;
     simulate(scene, a.seconds, physicsSettings(a));
     applyQualityPreset(preset, &scene.render, &options);
     Image img;
-    std::string error;
     OffscreenRun run;
     if (!offscreenBackend(a, &run.backend)) return kExitUsage;
     if (a.width * a.height > 1024 * 1024 && isatty(STDERR_FILENO)) run.progress = printRenderProgress;
     if (!renderOffscreen(scene, options, a.width, a.height, &img, &error, run)) return glFailure("render", error);
-    if (!savePng(a.output, img, &error)) {
-        std::cerr << error << '\n';
-        return kExitBadInput;
-    }
-    return kExitOk;
+    return reported(savePng(a.output, img, &error), error) ? kExitOk : kExitBadInput;
 }
 
 int runSimulate(const Args& a) {
     if (!needOne(a, "marchbox simulate SCENE --seconds T [-o OUT.txt] [--threads N]")) return kExitUsage;
     Scene scene;
-    if (!loadOrReport(a.positional[0], &scene) || (!a.output.empty() && !outputWritable(a.output, "save")))
+    std::string error;
+    if (!loadOrReport(a.positional[0], &scene) || (!a.output.empty() && !reported(checkSaveScene(a.output, &error), error)))
         return kExitBadInput;
     // Ctrl-C keeps its default: the process ends at once, before anything is written.
     simulate(scene, a.seconds, physicsSettings(a), isatty(STDERR_FILENO) ? printSimulateProgress : nullptr);
@@ -162,10 +156,7 @@ int runSimulate(const Args& a) {
         std::cout << formatScene(scene);
         return flushStdout();
     }
-    std::string error;
-    if (saveScene(a.output, scene, &error)) return kExitOk;
-    std::cerr << error << '\n';
-    return kExitBadInput;
+    return reported(saveScene(a.output, scene, &error), error) ? kExitOk : kExitBadInput;
 }
 
 int runCheck(const Args& a) {

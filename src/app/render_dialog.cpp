@@ -1,9 +1,7 @@
 // render_dialog.cpp — large renders from the editor.
 #include "render_dialog.h"
 
-#include "marchbox/atomic_file.h"
 #include "marchbox/editor/events.h"
-#include "marchbox/printable.h"
 #include "widgets.h"
 
 #include <GLFW/glfw3.h>
@@ -18,9 +16,9 @@ namespace mb {
 void RenderDialog::start(UiContext& c) {
     width_ = std::clamp(width_, 1, 16384);
     height_ = std::clamp(height_, 1, 16384);
-    std::string error = checkReplaceFile(path_);
-    if (!error.empty()) {
-        status_ = "cannot write '" + printable(path_) + "': " + error;
+    std::string error;
+    if (!checkSavePng(path_, &error)) {
+        status_ = error;
         emitEvent(status_);
         return;
     }

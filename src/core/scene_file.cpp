@@ -72,10 +72,15 @@ bool loadScene(const std::string& path, Scene* out, std::vector<std::string>* er
     return ok;
 }
 
-bool saveScene(const std::string& path, const Scene& scene, std::string* error) {
-    std::string why = replaceFile(path, formatScene(scene));
+static bool saveResult(const std::string& path, const std::string& why, std::string* error) {
     if (!why.empty() && error) *error = "cannot save '" + printable(path) + "': " + why;
     return why.empty();
 }
+
+bool saveScene(const std::string& path, const Scene& scene, std::string* error) {
+    return saveResult(path, replaceFile(path, formatScene(scene)), error);
+}
+
+bool checkSaveScene(const std::string& path, std::string* error) { return saveResult(path, checkReplaceFile(path), error); }
 
 }  // namespace mb

@@ -23,6 +23,11 @@ Image makeImage(int width, int height) {
     return img;
 }
 
+static bool writeResult(const std::string& path, const std::string& why, std::string* error) {
+    if (!why.empty()) *error = "cannot write '" + printable(path) + "': " + why;
+    return why.empty();
+}
+
 // Encoded in memory, then written like a scene: a full disk never leaves half a PNG.
 bool savePng(const std::string& path, const Image& img, std::string* error) {
     int size = 0;
@@ -30,9 +35,10 @@ bool savePng(const std::string& path, const Image& img, std::string* error) {
     std::string why = png ? replaceFile(path, std::string_view(reinterpret_cast<char*>(png), size_t(size)))
                           : "cannot encode PNG";
     std::free(png);  // stb allocates with malloc
-    if (!why.empty()) *error = "cannot write '" + printable(path) + "': " + why;
-    return why.empty();
+    return writeResult(path, why, error);
 }
+
+bool checkSavePng(const std::string& path, std::string* error) { return writeResult(path, checkReplaceFile(path), error); }
 
 bool loadPng(const std::string& path, Image* out, std::string* error) {
     int w = 0, h = 0, n = 0;
