@@ -5,7 +5,7 @@
 # Seeds: scenes/*.txt, tests/fuzz/seeds/ and tests/fuzz/regressions/; the growing corpus stays
 # in build-fuzz/corpus/TARGET between runs. A crash, hang or leak is written to
 # build-fuzz/findings/ and the script fails: copy the file into tests/fuzz/regressions/ so
-# core_tests replays it (tests/core/test_fuzz_regressions.cpp), then fix the parser.
+# scene_tests replays it (tests/scene/test_fuzz_regressions.cpp), then fix the parser.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 

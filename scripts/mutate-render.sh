@@ -8,7 +8,7 @@
 # $MARCHBOX_SHADERS: no build. They run every gl_tests suite but AsyncCompile (an exclude list,
 # so new render suites count as they are added; AsyncCompile sets and clears MARCHBOX_SHADERS
 # itself and renders nothing to compare).
-# Mirror mutations (src/core/sdf.cpp, the C++ twin of the SDFs) edit a copy of the tracked
+# Mirror mutations (src/scene/sdf.cpp, the C++ twin of the SDFs) edit a copy of the tracked
 # source tree in BUILD_DIR/mutate-mirror/src, build gl_tests there in BUILD_DIR/mutate-mirror/
 # build (incrementally, through ccache when it is installed) and run the agreement tests.
 #
@@ -21,7 +21,7 @@
 # Measured on the 2-core machine (llvmpipe): 36 of 36 caught in 6 minutes; a caught
 # mutation costs 1-50 s, a survivor a whole run (about 40 s), the mirror's first build about
 # 1.5 minutes more with a warm ccache. Too slow for every CI run: run it after changing shaders/,
-# src/core/sdf.cpp or the render tests. JOBS=N sets the mirror build's parallelism (default 2).
+# src/scene/sdf.cpp or the render tests. JOBS=N sets the mirror build's parallelism (default 2).
 set -uo pipefail
 
 #-----------------------------------------------------------------------------
@@ -63,11 +63,11 @@ shaders/post.frag     | lB < lMin || lB > lMax ? a : b                    | lB <
 shaders/checkerboard.frag | across < along ? h : along < across ? v    | across > along ? h : along > across ? v         | draft's fill blurs across edges
 shaders/checkerboard.frag | uSize.x == 1 ? kNone                       | uSize.x == 0 ? kNone                            | draft's fill takes a pixel past the border into a one-pixel-wide picture
 shaders/checkerboard.frag | 1) == 0 ? here : filled                    | 1) == 0 ? filled : here                         | draft's fill swaps shaded and filled-in pixels
-src/core/sdf.cpp      | vec2(r, 0.5f * height)                            | vec2(r, 0.25f * height)                           | mirror: cylinder of half its height
-src/core/sdf.cpp      | vec2(p.x, p.z)) - major                           | vec2(p.x, p.z)) - 0.9f * major                    | mirror: torus major radius 0.9x
-src/core/sdf.cpp      | glm::abs(p) - b;                                  | glm::abs(p) - 0.9f * b;                           | mirror: box 0.9x its size
-src/core/sdf.cpp      | float h = 0.5f * height;                          | float h = 0.4f * height;                          | mirror: capsule segment 0.8x
-src/core/sdf.cpp      | return sdObjectLocal(o, o.toLocal * (p - o.pos)); | return sdObjectLocal(o, (p - o.pos) * o.toLocal); | mirror: objects turned the other way
+src/scene/sdf.cpp      | vec2(r, 0.5f * height)                            | vec2(r, 0.25f * height)                           | mirror: cylinder of half its height
+src/scene/sdf.cpp      | vec2(p.x, p.z)) - major                           | vec2(p.x, p.z)) - 0.9f * major                    | mirror: torus major radius 0.9x
+src/scene/sdf.cpp      | glm::abs(p) - b;                                  | glm::abs(p) - 0.9f * b;                           | mirror: box 0.9x its size
+src/scene/sdf.cpp      | float h = 0.5f * height;                          | float h = 0.4f * height;                          | mirror: capsule segment 0.8x
+src/scene/sdf.cpp      | return sdObjectLocal(o, o.toLocal * (p - o.pos)); | return sdObjectLocal(o, (p - o.pos) * o.toLocal); | mirror: objects turned the other way
 TABLE
 )
 

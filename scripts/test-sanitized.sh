@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 cmake -S . -B build-asan -DMARCHBOX_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug >/dev/null
 # Only the GL-free test binaries: the GL layer runs in llvmpipe, whose own code ASan would
 # slow to a crawl and whose leaks are not ours (valgrind checks those; scripts/valgrind.sh).
-targets=(core_tests)
+targets=(scene_tests physics_tests reference_tests)
 # grep without -q reads to the end: an early exit would kill cmake with SIGPIPE under pipefail.
 if cmake --build build-asan --target help | grep -w editor_tests >/dev/null; then
   targets+=(editor_tests)

@@ -39,7 +39,7 @@ vec2 mapObjects(vec3 p) {
 #endif
 
 #if USE_GRID
-// The uniform object grid of src/core/object_grid.cpp: each cell lists, in file order, the
+// The uniform object grid of src/scene/object_grid.cpp: each cell lists, in file order, the
 // objects that can change the chain inside it; every other object lies beyond its boundary.
 vec3 gridLo() { return uGridOrigin; }
 vec3 gridHi() { return uGridOrigin + vec3(uGridDims) * uGridCell; }

@@ -1,4 +1,4 @@
-// sdf.glsl — signed distances at the origin and the CSG operators. Twin of src/core/sdf.cpp.
+// sdf.glsl — signed distances at the origin and the CSG operators. Twin of src/scene/sdf.cpp.
 
 #if HAS_SPHERE
 float sdSphere(vec3 p, float r) { return length(p) - r; }  // exact

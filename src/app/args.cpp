@@ -1,7 +1,7 @@
 // args.cpp — strict parsing of the options in ../shared/CLI.md.
 #include "args.h"
 
-#include "marchbox/printable.h"
+#include "marchbox/scene/printable.h"
 
 #include <charconv>
 #include <cmath>

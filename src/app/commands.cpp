@@ -4,8 +4,8 @@
 #include "marchbox/gl/offscreen_context.h"
 #include "marchbox/gl/quality_preset.h"
 #include "marchbox/gl/renderer.h"
-#include "marchbox/physics.h"
-#include "marchbox/scene_io.h"
+#include "marchbox/physics/physics.h"
+#include "marchbox/scene/scene_io.h"
 
 #include <algorithm>
 #include <chrono>

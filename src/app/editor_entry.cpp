@@ -3,8 +3,8 @@
 #include "editor_window.h"
 
 #include "marchbox/gl/renderer.h"
-#include "marchbox/physics.h"
-#include "marchbox/scene_io.h"
+#include "marchbox/physics/physics.h"
+#include "marchbox/scene/scene_io.h"
 
 #include <cstdlib>
 #include <filesystem>

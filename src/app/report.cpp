@@ -1,7 +1,7 @@
 // report.cpp — `marchbox report physics|render`: benchmarks that write docs/*.md.
 #include "commands.h"
-#include "physics_report.h"
-#include "render_report.h"
+#include "marchbox/report/physics_report.h"
+#include "marchbox/report/render_report.h"
 
 #include <iostream>
 

@@ -3,7 +3,7 @@
 
 #include "marchbox/editor/events.h"
 #include "marchbox/gl/shader.h"
-#include "marchbox/image.h"
+#include "marchbox/gl/image.h"
 
 #include <cstdio>
 #include <filesystem>

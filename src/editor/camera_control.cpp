@@ -1,7 +1,7 @@
 // camera_control.cpp — the camera as a point on a sphere about its target.
 #include "marchbox/editor/camera_control.h"
 
-#include "marchbox/camera.h"
+#include "marchbox/scene/camera.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // document.cpp — edits, live changes and undo over one scene.
 #include "marchbox/editor/document.h"
 
-#include "marchbox/scene_io.h"
+#include "marchbox/scene/scene_io.h"
 
 #include <filesystem>
 

@@ -3,7 +3,7 @@
 
 #include "marchbox/editor/events.h"
 #include "marchbox/editor/picking.h"
-#include "marchbox/scene_io.h"
+#include "marchbox/scene/scene_io.h"
 
 namespace mb {
 

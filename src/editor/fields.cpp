@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "marchbox/scene_io.h"
+#include "marchbox/scene/scene_io.h"
 
 namespace mb {
 

@@ -1,7 +1,7 @@
 // history.cpp — the snapshot undo stack.
 #include "marchbox/editor/history.h"
 
-#include "marchbox/scene_io.h"
+#include "marchbox/scene/scene_io.h"
 
 namespace mb {
 

@@ -2,8 +2,8 @@
 // new ones.
 #include "marchbox/editor/picking.h"
 
-#include "marchbox/camera.h"
-#include "marchbox/sdf.h"
+#include "marchbox/scene/camera.h"
+#include "marchbox/scene/sdf.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // recent.cpp — the recent-files list and the small file it lives in.
 #include "marchbox/editor/recent.h"
 
-#include "marchbox/atomic_file.h"
+#include "marchbox/scene/atomic_file.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -1,7 +1,7 @@
 // gpu_scene.cpp — packing the scene model into the shader's std140 structs.
 #include "marchbox/gl/gpu_scene.h"
 
-#include "marchbox/sdf.h"
+#include "marchbox/scene/sdf.h"
 
 #include <algorithm>
 #include <glm/geometric.hpp>

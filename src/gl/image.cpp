@@ -1,8 +1,8 @@
 // image.cpp — PNG I/O through Debian's stb (libstb), and image differences.
-#include "marchbox/image.h"
+#include "marchbox/gl/image.h"
 
-#include "marchbox/atomic_file.h"
-#include "marchbox/printable.h"
+#include "marchbox/scene/atomic_file.h"
+#include "marchbox/scene/printable.h"
 
 #include <algorithm>
 #include <cstdlib>

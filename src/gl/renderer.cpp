@@ -1,11 +1,11 @@
 // renderer.cpp — the full-screen quad, the program cache and the scene's uniforms.
 #include "marchbox/gl/renderer.h"
 
-#include "marchbox/camera.h"
+#include "marchbox/scene/camera.h"
 #include "marchbox/gl/gpu_scene.h"
 #include "marchbox/gl/offscreen_context.h"
-#include "marchbox/object_grid.h"
-#include "marchbox/sdf.h"
+#include "marchbox/scene/object_grid.h"
+#include "marchbox/scene/sdf.h"
 
 #include <algorithm>
 #include <glm/geometric.hpp>

@@ -194,7 +194,7 @@ def scene_values(path, kind, key):
 
 
 def project(scene, point):
-    """Window pixel (top-left origin) where `point` shows, as src/core/camera.cpp builds rays."""
+    """Window pixel (top-left origin) where `point` shows, as src/scene/camera.cpp builds rays."""
     pos, target = scene_values(scene, 'camera', 'pos')[0], scene_values(scene, 'camera', 'target')[0]
     fov = scene_values(scene, 'camera', 'fov')[0][0]
     sub = lambda a, b: [a[i] - b[i] for i in range(3)]

@@ -1,6 +1,6 @@
 // test_editor.cpp — the editor's rules: open failures, unsaved work, edits while simulating.
 #include "marchbox/editor/editor.h"
-#include "marchbox/scene_io.h"
+#include "marchbox/scene/scene_io.h"
 
 #include <cmath>
 #include <filesystem>

@@ -1,6 +1,6 @@
 // test_fields.cpp — typed values are checked against SCENE_FORMAT.md's ranges.
 #include "marchbox/editor/fields.h"
-#include "marchbox/scene_io.h"
+#include "marchbox/scene/scene_io.h"
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // test_scene_edit.cpp — Edit menu commands keep the scene loadable.
 #include "marchbox/editor/scene_edit.h"
 #include "marchbox/editor/selection.h"
-#include "marchbox/scene_io.h"
+#include "marchbox/scene/scene_io.h"
 
 #include <gtest/gtest.h>
 

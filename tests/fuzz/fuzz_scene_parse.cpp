@@ -2,7 +2,7 @@
 //
 // The parser must return, without a sanitizer report, and either succeed with no errors or
 // fail with at least one error, in line order, each within the text's line count.
-#include "marchbox/scene_io.h"
+#include "marchbox/scene/scene_io.h"
 
 #include <algorithm>
 #include <cstdint>

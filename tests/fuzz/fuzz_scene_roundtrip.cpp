@@ -3,7 +3,7 @@
 // SCENE_FORMAT.md promises load → save → load gives the identical scene and saving twice gives
 // identical bytes. formatScene's text is checked against both promises for every input that
 // parses; a difference aborts, which libFuzzer records like a crash.
-#include "marchbox/scene_io.h"
+#include "marchbox/scene/scene_io.h"
 
 #include <cstdint>
 #include <cstdlib>

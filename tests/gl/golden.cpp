@@ -1,7 +1,7 @@
 // golden.cpp — golden-image helpers shared by the GL tests.
 #include "golden.h"
 
-#include "marchbox/scene_io.h"
+#include "marchbox/scene/scene_io.h"
 
 #include <gtest/gtest.h>
 #include <algorithm>

@@ -2,8 +2,8 @@
 #pragma once
 
 #include "marchbox/gl/renderer.h"
-#include "marchbox/image.h"
-#include "marchbox/scene.h"
+#include "marchbox/gl/image.h"
+#include "marchbox/scene/scene.h"
 
 #include <string>
 #include <vector>

@@ -4,14 +4,14 @@
 // pixel, counted over object pixels only (where the GPU or the CPU sees an object) and bounded
 // per object type: floor and sky agree whatever the shapes are, and would hide a wrong one.
 //
-// Bug it catches: a mirror SDF that differs from the shader's. Planted in src/core/sdf.cpp,
+// Bug it catches: a mirror SDF that differs from the shader's. Planted in src/scene/sdf.cpp,
 // each fails it (agreement of that type on the close scenes): a cylinder of half its height
 // 35-60%, a torus of 0.9 its major radius 76-89%, a box of 0.9 its size 71-82%.
 #include "golden.h"
 
-#include "marchbox/camera.h"
+#include "marchbox/scene/camera.h"
 #include "marchbox/gl/gpu_scene.h"
-#include "marchbox/sdf.h"
+#include "marchbox/scene/sdf.h"
 
 #include <gtest/gtest.h>
 #include <algorithm>

@@ -1,9 +1,9 @@
 // test_features.cpp — each picture feature on against off, measured in the pixels.
 #include "golden.h"
 
-#include "marchbox/camera.h"
+#include "marchbox/scene/camera.h"
 #include "marchbox/gl/gpu_scene.h"
-#include "marchbox/sdf.h"
+#include "marchbox/scene/sdf.h"
 
 #include <gtest/gtest.h>
 #include <cmath>

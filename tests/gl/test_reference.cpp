@@ -1,5 +1,5 @@
 // test_reference.cpp — every scene in scenes/, shaded by the GPU and by the CPU reference
-// (include/marchbox/reference_render.h, docs/shading-model.md), agrees within stated bounds.
+// (include/marchbox/reference/reference_render.h, docs/shading-model.md), agrees within stated bounds.
 //
 // The reference is written from the shading model, not from the GLSL, so this is the one check
 // that a bug both shaders share (say a wrong specular exponent in lighting.glsl) cannot pass.
@@ -7,7 +7,7 @@
 // disc, the soft shadow without its smoothstep; each in the shaders and, apart, in the reference.
 #include "golden.h"
 
-#include "marchbox/reference_render.h"
+#include "marchbox/reference/reference_render.h"
 
 #include <gtest/gtest.h>
 #include <algorithm>

@@ -4,7 +4,7 @@
 // (as the mouse reports it). The camera orbits its target; panning and flying move both.
 #pragma once
 
-#include "marchbox/scene.h"
+#include "marchbox/scene/scene.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "marchbox/editor/history.h"
-#include "marchbox/scene.h"
+#include "marchbox/scene/scene.h"
 
 #include <cstdint>
 #include <functional>

@@ -5,7 +5,7 @@
 // scene of 4096 objects is only about 400 KiB, so the stack is simply bounded by its length.
 #pragma once
 
-#include "marchbox/scene.h"
+#include "marchbox/scene/scene.h"
 
 #include <cstdint>
 #include <deque>

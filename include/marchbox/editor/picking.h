@@ -5,7 +5,7 @@
 // the mouse's y.
 #pragma once
 
-#include "marchbox/scene.h"
+#include "marchbox/scene/scene.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

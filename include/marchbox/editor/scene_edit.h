@@ -5,7 +5,7 @@
 // and leaves the scene as it was.
 #pragma once
 
-#include "marchbox/scene.h"
+#include "marchbox/scene/scene.h"
 
 #include <cstdint>
 #include <string>

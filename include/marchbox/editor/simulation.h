@@ -6,7 +6,7 @@
 #pragma once
 
 #include "marchbox/editor/document.h"
-#include "marchbox/physics.h"
+#include "marchbox/physics/physics.h"
 
 #include <memory>
 

@@ -5,7 +5,7 @@
 // tests/gl/test_std140.cpp checks every offset against what the driver reports.
 #pragma once
 
-#include "marchbox/scene.h"
+#include "marchbox/scene/scene.h"
 
 #include <cstdint>
 #include <vector>

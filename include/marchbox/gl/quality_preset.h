@@ -4,7 +4,7 @@
 #pragma once
 
 #include "marchbox/gl/renderer.h"
-#include "marchbox/scene.h"
+#include "marchbox/scene/scene.h"
 
 #include <string>
 

@@ -9,9 +9,9 @@
 #include "marchbox/gl/screen_quad.h"
 #include "marchbox/gl/shader.h"
 #include "marchbox/gl/shader_source.h"
-#include "marchbox/image.h"
-#include "marchbox/scene.h"
-#include "marchbox/sdf.h"
+#include "marchbox/gl/image.h"
+#include "marchbox/scene/scene.h"
+#include "marchbox/scene/sdf.h"
 
 #include <memory>
 #include <optional>

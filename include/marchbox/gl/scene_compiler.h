@@ -9,7 +9,7 @@
 // editor's selection outline (shaders/outline.glsl) measures one object by its index.
 #pragma once
 
-#include "marchbox/scene.h"
+#include "marchbox/scene/scene.h"
 
 #include <string>
 #include <vector>

@@ -8,7 +8,7 @@
 
 #include "marchbox/gl/scene_compiler.h"
 #include "marchbox/gl/shader_lines.h"
-#include "marchbox/scene.h"
+#include "marchbox/scene/scene.h"
 
 #include <string>
 #include <vector>

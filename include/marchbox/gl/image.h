@@ -1,0 +1,34 @@
+// marchbox/gl/image.h — RGBA8 images, PNG files and the comparisons golden tests use.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace mb {
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<uint8_t> rgba;  // row 0 is the top of the picture
+
+    uint8_t* pixel(int x, int y) { return &rgba[(size_t(y) * width + x) * 4]; }
+    const uint8_t* pixel(int x, int y) const { return &rgba[(size_t(y) * width + x) * 4]; }
+};
+
+Image makeImage(int width, int height);
+bool savePng(const std::string& path, const Image& img, std::string* error);
+// Whether savePng could write `path` (checkReplaceFile), *error in its words: before a long render.
+bool checkSavePng(const std::string& path, std::string* error);
+bool loadPng(const std::string& path, Image* out, std::string* error);
+
+struct ImageDiff {
+    double meanAbs = 0;      // mean |a-b| over all RGB channels, in 0..255 units
+    double p99 = 0;          // 99th percentile of the per-pixel max channel difference
+    double maxAbs = 0;
+    Image visual;            // per-pixel max channel difference, amplified ×8, as grey
+};
+
+// Requires equal sizes; the caller checks.
+ImageDiff diffImages(const Image& a, const Image& b);
+
+}  // namespace mb

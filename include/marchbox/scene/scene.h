@@ -1,0 +1,122 @@
+// marchbox/scene/scene.h — the scene model: plain data, defaults from ../shared/SCENE_FORMAT.md.
+//
+// [SECTION] Limits
+// [SECTION] Records (Camera, World, RenderSettings, Material, Light, Object)
+// [SECTION] Scene (and the file's comments)
+//
+// Units are metres, seconds, kilograms; +y is up. Angles in `rot` are degrees, as in the file.
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+namespace mb {
+
+//-----------------------------------------------------------------------------
+// [SECTION] Limits
+//-----------------------------------------------------------------------------
+constexpr int kMaxObjects = 4096;    // more objects in a file is a load error
+constexpr int kMaxMaterials = 256;
+constexpr int kMaxLights = 16;
+constexpr int kMaxLineBytes = 4096;  // longer lines are an error, checked before any regex runs
+
+//-----------------------------------------------------------------------------
+// [SECTION] Records
+//-----------------------------------------------------------------------------
+enum class ShapeType : int { Sphere = 0, Box = 1, Torus = 2, Capsule = 3, Cylinder = 4 };
+constexpr int kShapeTypeCount = 5;
+enum class CsgOp : int { Union = 0, Subtract = 1, Intersect = 2 };
+constexpr int kCsgOpCount = 3;
+
+struct Camera {
+    glm::vec3 pos{0.0f, 2.0f, -6.0f};
+    glm::vec3 target{0.0f, 1.0f, 0.0f};
+    float fov = 50.0f;  // vertical, degrees, 1..179
+};
+
+struct World {
+    float gravity = 9.81f;      // m/s² along -y, >= 0
+    float restitution = 0.8f;   // 0..1
+    float friction = 0.3f;      // Coulomb coefficient, >= 0
+    float rolling = 0.02f;      // rolling resistance: torque = rolling · radius · normal force, >= 0
+    float floor = 0.0f;         // height of the ground plane
+    bool ground = true;         // false removes the ground plane
+};
+
+struct RenderSettings {
+    int steps = 256;            // max march steps, 1..4096
+    float epsilon = 0.001f;     // hit distance, > 0
+    int shadows = 1;            // 0 none, 1 hard, 2 soft
+    int reflections = 3;        // max mirror bounces, 0..8
+    float fog = 0.0f;           // exp² density, >= 0
+    bool ao = false;
+    int aa = 1;                 // samples per pixel per axis, 1..4
+};
+
+struct Material {
+    std::string name;           // [A-Za-z0-9_.-]+; the loader names unnamed materials "materialN"
+    glm::vec3 color{1.0f};      // r g b, each >= 0
+    float Ka = 0.1f, Kd = 0.8f, Ks = 0.5f;
+    float C = 32.0f;            // shininess, > 0
+    float Kr = 0.0f;            // mirror reflectivity, 0..1
+    std::string comment{};      // the file's lines just above this record (see SceneComments)
+};
+
+struct Light {
+    bool directional = false;   // true: `dir` record, `vec` is the direction light travels
+    glm::vec3 vec{0.0f};        // point light position, or direction
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;
+    std::string comment{};
+};
+
+struct Object {
+    ShapeType type = ShapeType::Sphere;
+    glm::vec3 pos{0.0f};
+    int material = 0;
+    float radius = 0.5f;
+    glm::vec3 size{0.5f};       // box half-extents
+    float minor = 0.1f;         // torus tube radius
+    float height = 1.0f;        // capsule segment / cylinder length along local y
+    glm::vec3 rot{0.0f};        // Euler degrees, R = Rz(z)·Ry(y)·Rx(x)
+    float mass = 1.0f;
+    glm::vec3 vel{0.0f};        // m/s
+    glm::vec3 spin{0.0f};       // angular velocity, rad/s
+    bool isStatic = false;
+    CsgOp op = CsgOp::Union;
+    float blend = 0.0f;         // smooth-blend radius, 0 = sharp
+    std::string comment{};      // `{}`: aggregates built without it stay warning-free
+
+    // A dynamic object is moved by the simulator; everything else is a static collider.
+    bool dynamic() const { return type == ShapeType::Sphere && !isStatic && mass > 0.0f; }
+};
+
+//-----------------------------------------------------------------------------
+// [SECTION] Scene
+//-----------------------------------------------------------------------------
+// A file's comment and blank lines, each run kept with the record that follows it, so a save
+// writes a person's notes back where they were. Every string is whole lines, each blank or
+// starting with '#' after blanks, each ending in '\n'. Materials, lights and objects carry
+// their own `comment` and take it along when they are deleted; these are the others'.
+struct SceneComments {
+    std::string camera, world, render;  // above the `camera`, `world`, `render` records; what
+                                        // was above `scene version:1` goes to the next record
+    std::string end;                            // below the last record: stays at the end
+    bool operator==(const SceneComments&) const = default;
+};
+
+struct Scene {
+    Camera camera;
+    World world;
+    RenderSettings render;
+    std::vector<Material> materials;
+    std::vector<Light> lights;
+    std::vector<Object> objects;  // in file order: the CSG chain is evaluated in this order
+    SceneComments comments;
+};
+
+const char* shapeTypeName(ShapeType t);  // "sphere", "box", ...
+const char* csgOpName(CsgOp op);         // "union", "subtract", "intersect"
+
+}  // namespace mb

@@ -1,0 +1,103 @@
+// marchbox/scene/sdf.h — the C++ twin of shaders/sdf.glsl and shaders/scene_map.glsl.
+//
+// [SECTION] Primitives: signed distance at the origin; the caller moves and turns the point
+// [SECTION] Operators
+// [SECTION] Scene map: the CSG chain of a whole scene, with per-object bounding spheres
+//
+// Every function here has a same-named GLSL function; tests check that both agree.
+#pragma once
+
+#include "marchbox/scene/scene.h"
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <vector>
+
+namespace mb {
+
+//-----------------------------------------------------------------------------
+// [SECTION] Primitives
+//-----------------------------------------------------------------------------
+float sdSphere(glm::vec3 p, float r);                 // exact
+float sdBox(glm::vec3 p, glm::vec3 halfExtents);      // exact
+float sdTorus(glm::vec3 p, float major, float minor); // exact; ring in the x-z plane
+float sdCapsule(glm::vec3 p, float height, float r);  // exact; segment [-h/2, h/2] on y
+float sdCylinder(glm::vec3 p, float height, float r); // exact; capped, axis y, length h
+
+//-----------------------------------------------------------------------------
+// [SECTION] Operators
+//-----------------------------------------------------------------------------
+// Each returns the combined distance in x and, in y, the blend weight of b (0: a wins, 1: b
+// wins), which picks the surface's object. k is the smooth-blend radius; k = 0 is sharp.
+glm::vec2 opUnion(float a, float b, float k);
+glm::vec2 opSubtract(float a, float b, float k);   // carve b out of a
+glm::vec2 opIntersect(float a, float b, float k);
+
+//-----------------------------------------------------------------------------
+// [SECTION] Scene map
+//-----------------------------------------------------------------------------
+// R = Rz(z)·Ry(y)·Rx(x), angles in degrees.
+glm::mat3 rotationFromEuler(glm::vec3 degrees);
+
+// One object, resolved for evaluation: the same numbers the shader receives.
+struct SdfObject {
+    ShapeType type;
+    CsgOp op;
+    glm::vec3 pos;
+    glm::mat3 toLocal;   // transpose of the object's rotation
+    glm::vec3 size;
+    float radius, minor, height, blend;
+    float bound;         // radius of a sphere about pos that holds the shape
+    int material;
+};
+
+SdfObject makeSdfObject(const Object& o);
+float sdObjectLocal(const SdfObject& o, glm::vec3 local);  // the shape at the origin
+float sdObject(const SdfObject& o, glm::vec3 p);           // the shape in world space
+
+constexpr int kHitGround = -1;  // SceneSample::object for the ground plane
+constexpr int kHitNone = -2;    // nothing in reach
+
+struct SceneSample {
+    float d;      // signed distance to the scene
+    int object;   // index of the surface's object, kHitGround or kHitNone
+};
+
+// The scene's objects and ground, ready to evaluate many times.
+struct SceneSdf {
+    std::vector<SdfObject> objects;
+    bool ground = true;
+    float floor = 0.0f;
+};
+
+SceneSdf makeSceneSdf(const Scene& scene);
+
+// The sphere about pos within which the object can change the chain: its bound grown by its
+// blend, since a smooth blend reaches k beyond the sharp surface.
+float objectReach(const SdfObject& o);
+
+struct Box {
+    glm::vec3 lo{1e30f}, hi{-1e30f};  // empty until something is added
+    bool empty() const { return lo.x > hi.x; }
+};
+
+// Every object's reach: outside it the scene is the ground alone, so rays need no marching.
+Box objectBounds(const SceneSdf& sdf);
+SceneSample mapScene(const SceneSdf& sdf, glm::vec3 p);
+SceneSample mapObjects(const SceneSdf& sdf, glm::vec3 p);  // without the ground plane
+glm::vec3 sceneNormal(const SceneSdf& sdf, glm::vec3 p);   // central differences, unit length
+
+struct RayHit {
+    bool hit = false;
+    float t = 0.0f;      // distance along the unit direction
+    int object = kHitNone;
+    int steps = 0;
+};
+
+// Sphere tracing, as castRay in the shader: a hit where the distance drops below epsilon
+// (at once when the origin is inside a surface), a miss past maxDistance or maxSteps.
+RayHit castRay(const SceneSdf& sdf, glm::vec3 origin, glm::vec3 dir, int maxSteps, float epsilon,
+               float maxDistance);
+
+}  // namespace mb

@@ -1,0 +1,120 @@
+// physics_report.cpp — writes docs/physics-report.md with work-precision plots.
+#include "marchbox/report/physics_report.h"
+
+#include "physics_report_cases.h"
+#include "report_plot.h"
+
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <thread>
+#include <unistd.h>
+
+namespace mb {
+
+namespace {
+
+std::string fmt(const char* format, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
+
+std::string slug(const std::string& name) {
+    std::string s;
+    for (char c : name) s += std::isalnum(static_cast<unsigned char>(c)) ? char(std::tolower(c)) : '-';
+    return s;
+}
+
+// One analytic case: a table row per variant and a plot with one line per sweep.
+std::string workPrecision(const AnalyticCase& c, const std::string& docs) {
+    std::ostringstream md;
+    md << "### " << c.name << "\n\nError: " << c.error << ".\n\n![" << c.name << "](physics-" << slug(c.name)
+       << ".svg)\n\n| sweep | setting | run time per simulated s | error |\n| --- | --- | ---: | ---: |\n";
+    std::map<std::string, PlotSeries> series;
+    std::vector<std::string> order;
+    for (const Variant& v : reportVariants()) {
+        const WorkPoint p = measureWork(c, v.settings);
+        md << "| " << v.series << " | " << v.label << " | " << fmt("%.3g µs", 1e6 * p.secondsPerSimSecond)
+           << " | " << fmt("%.3g", p.error) << " |\n";
+        if (!series.count(v.series)) order.push_back(v.series);
+        series[v.series].name = v.series;
+        series[v.series].points.emplace_back(p.secondsPerSimSecond, std::max(p.error, 1e-16));
+    }
+    std::vector<PlotSeries> plot;
+    for (const std::string& name : order) plot.push_back(series[name]);
+    writeTextFile(docs + "/physics-" + slug(c.name) + ".svg",
+              logLogPlotSvg(c.name, "run time per simulated second (s)", "error", plot));
+    return md.str() + "\n";
+}
+
+std::string extremeTable() {
+    std::ostringstream md;
+    md << "| case | result | max penetration | energy drift | time per step | criterion |\n"
+          "| --- | --- | ---: | ---: | ---: | --- |\n";
+    for (const ExtremeResult& r : runExtremeSuite())
+        md << "| " << r.name << " | " << (r.pass ? "pass" : "**FAIL**") << " | "
+           << fmt("%.3g m", r.maxPenetration) << " | " << fmt("%+.2e", r.energyDrift) << " | "
+           << fmt("%.3g ms", r.msPerStep) << " | " << r.note << " |\n";
+    return md.str();
+}
+
+// src/report/bench/ builds bullet_bench beside this executable when Bullet was found; it prints its own
+// markdown, Marchbox and Bullet side by side.
+std::string bulletSection() {
+    char self[4096];
+    const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (n <= 0) return "Bullet comparison not run: cannot locate the executable.\n";
+    std::string exe(self, size_t(n));
+    exe = exe.substr(0, exe.rfind('/')) + "/bullet_bench";
+    if (access(exe.c_str(), X_OK) != 0)
+        return "Bullet comparison not built (needs libbullet-dev, found through pkg-config `bullet`).\n";
+    std::string out;
+    if (FILE* pipe = popen(exe.c_str(), "r")) {
+        char buf[4096];
+        for (size_t got; (got = fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, got);
+        if (pclose(pipe) != 0) out += "\n(bullet_bench exited with an error)\n";
+    }
+    return out;
+}
+
+}  // namespace
+
+int runPhysicsReport(const std::string& repoRoot) {
+    const std::string docs = repoRoot + "/docs";
+    std::error_code ec;
+    std::filesystem::create_directories(docs, ec);
+    std::ostringstream md;
+    md << "# Physics report\n\nReproduce: `build/marchbox report physics` (RelWithDebInfo build). "
+          "Every number below was measured in one run, on one core unless a row says 2 threads.\n\n"
+       << "Machine: " << machineDescription() << "; "
+       << "compiler " << __VERSION__ << ".\n\n"
+       << "## Work precision\n\nEach analytic case runs under every step size (4 substeps, 1 iteration), "
+          "every substep count and iteration count (at dt = 1/120), and both integrators: "
+          "*exact gravity* (the default, x += v·h − ½·g·h² in free flight) and *symplectic Euler* "
+          "(Box2D's). Defaults: dt = 1/120 s, 4 substeps, 1 iteration. Errors of 0 are drawn at 1e-16. "
+          "The *old* series is the method before impacts were resolved at their time of impact "
+          "(src/physics/impacts.cpp) and curved static surfaces followed every substep: Box2D's "
+          "end-of-step restitution and each contact's normal fixed for the step.\n\n";
+    std::cerr << "physics report: work precision\n";
+    for (const AnalyticCase& c : analyticCases()) md << workPrecision(c, docs);
+    std::cerr << "physics report: stiff and extreme suite\n";
+    md << "## Stiff and extreme suite\n\nDefault settings unless the case says otherwise. Max penetration "
+          "is the deepest contact overlap seen at the end of any step (the slop, 5 mm or r/20, is "
+          "allowed); energy drift is (E_end − E_0)/|E_0| of kinetic plus potential energy.\n\n"
+       << extremeTable() << "\n## Bullet\n\n";
+    std::cerr << "physics report: Bullet\n";
+    md << bulletSection();
+    if (!writeTextFile(docs + "/physics-report.md", md.str())) {
+        std::cerr << "cannot write " << docs << "/physics-report.md\n";
+        return 1;
+    }
+    std::cerr << "wrote " << docs << "/physics-report.md\n";
+    return 0;
+}
+
+}  // namespace mb

@@ -1,0 +1,216 @@
+// physics_scenes.cpp — builders of the physics test and benchmark scenes.
+#include "marchbox/report/physics_scenes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace mb {
+
+namespace {
+
+// Numerical Recipes LCG: the same numbers everywhere, unlike <random>'s distributions.
+struct Lcg {
+    std::uint32_t state;
+    float next() {  // [0, 1)
+        state = state * 1664525u + 1013904223u;
+        return float(state >> 8) / float(1u << 24);
+    }
+    float range(float lo, float hi) { return lo + (hi - lo) * next(); }
+};
+
+constexpr float kDensity = 1000.0f;  // kg/m³, water
+
+float sphereMass(float radius) { return kDensity * 4.0f / 3.0f * float(M_PI) * radius * radius * radius; }
+
+}  // namespace
+
+Scene physicsWorld(float gravity, float restitution, float friction, bool ground) {
+    Scene s;
+    s.world.gravity = gravity;
+    s.world.restitution = restitution;
+    s.world.friction = friction;
+    s.world.ground = ground;
+    s.materials.push_back(Material{});
+    return s;
+}
+
+Object dynamicSphere(glm::vec3 pos, float radius, float mass, glm::vec3 vel) {
+    Object o;
+    o.type = ShapeType::Sphere;
+    o.pos = pos;
+    o.radius = radius;
+    o.mass = mass;
+    o.vel = vel;
+    return o;
+}
+
+Object staticBox(glm::vec3 pos, glm::vec3 halfExtents) {
+    Object o;
+    o.type = ShapeType::Box;
+    o.pos = pos;
+    o.size = halfExtents;
+    o.isStatic = true;
+    return o;
+}
+
+void addWalls(Scene& scene, float inner, float height, float thickness) {
+    const float h = 0.5f * height, t = 0.5f * thickness, off = inner + t, len = inner + thickness;
+    scene.objects.push_back(staticBox({off, h, 0}, {t, h, len}));
+    scene.objects.push_back(staticBox({-off, h, 0}, {t, h, len}));
+    scene.objects.push_back(staticBox({0, h, off}, {len, h, t}));
+    scene.objects.push_back(staticBox({0, h, -off}, {len, h, t}));
+}
+
+Scene freeFallScene(float height) {
+    Scene s = physicsWorld(9.81f, 0.0f, 0.0f, false);
+    s.objects.push_back(dynamicSphere({0, height, 0}, 0.5f, 1.0f));
+    return s;
+}
+
+Scene projectileScene(glm::vec3 vel) {
+    Scene s = physicsWorld(9.81f, 0.0f, 0.0f, false);
+    s.objects.push_back(dynamicSphere({0, 0, 0}, 0.5f, 1.0f, vel));
+    return s;
+}
+
+Scene bounceScene(float height, float restitution) {
+    Scene s = physicsWorld(9.81f, restitution, 0.0f, true);
+    const float r = 0.1f;
+    s.objects.push_back(dynamicSphere({0, height + r, 0}, r, 1.0f));
+    return s;
+}
+
+Scene headOnScene(float restitution, float m1, float m2, float v1, float v2) {
+    Scene s = physicsWorld(0.0f, restitution, 0.0f, false);
+    s.objects.push_back(dynamicSphere({-1, 0, 0}, 0.5f, m1, {v1, 0, 0}));
+    s.objects.push_back(dynamicSphere({1, 0, 0}, 0.5f, m2, {v2, 0, 0}));
+    return s;
+}
+
+Scene slideScene(float speed, float friction) {
+    Scene s = physicsWorld(9.81f, 0.0f, friction, true);
+    s.objects.push_back(dynamicSphere({0, 0.5f, 0}, 0.5f, 1.0f, {speed, 0, 0}));
+    return s;
+}
+
+Scene rollScene(float speed, float rolling) {
+    Scene s = physicsWorld(9.81f, 0.0f, 0.5f, true);
+    s.world.rolling = rolling;
+    const float r = 0.5f;
+    Object o = dynamicSphere({0, r, 0}, r, 1.0f, {speed, 0, 0});
+    o.spin = {0, 0, -speed / r};  // ω × (−r·y) = v: no slip at the contact
+    s.objects.push_back(o);
+    return s;
+}
+
+Scene spinScene(float spin, float friction) {
+    Scene s = physicsWorld(9.81f, 0.0f, friction, true);
+    Object o = dynamicSphere({0, 0.5f, 0}, 0.5f, 1.0f);
+    o.spin = {0, 0, -spin};  // rolls towards +x once friction has its way
+    s.objects.push_back(o);
+    return s;
+}
+
+glm::vec3 bowlCentre(float bowlRadius) { return {0, 1.0f + 0.7f * bowlRadius, 0}; }
+
+Scene bowlScene(float bowlRadius, float ballRadius, float degrees, float friction) {
+    Scene s = physicsWorld(9.81f, 0.0f, friction, true);
+    s.objects.push_back(staticBox({0, 0.5f, 0}, {2, 0.5f, 2}));
+    Object hole;
+    hole.type = ShapeType::Sphere;
+    hole.pos = bowlCentre(bowlRadius);
+    hole.radius = bowlRadius;
+    hole.isStatic = true;
+    hole.op = CsgOp::Subtract;
+    s.objects.push_back(hole);
+    const float a = degrees * float(M_PI) / 180.0f, swing = bowlRadius - ballRadius;
+    s.objects.push_back(dynamicSphere(hole.pos + swing * glm::vec3(std::sin(a), -std::cos(a), 0), ballRadius, 1.0f));
+    return s;
+}
+
+Scene rampScene(float degrees, float friction, float rolling) {
+    Scene s = physicsWorld(9.81f, 0.0f, friction, false);
+    s.world.rolling = rolling;
+    Object plank = staticBox({0, 0, 0}, {20, 0.5f, 2});
+    plank.rot = {0, 0, degrees};
+    s.objects.push_back(plank);
+    const float a = degrees * float(M_PI) / 180.0f, r = 0.2f;
+    const glm::vec3 up(std::cos(a), std::sin(a), 0), normal(-std::sin(a), std::cos(a), 0);
+    s.objects.push_back(dynamicSphere(3.0f * up + (0.5f + r) * normal, r, 1.0f));
+    return s;
+}
+
+Scene cradleScene(int count, float speed) {
+    Scene s = physicsWorld(0.0f, 1.0f, 0.0f, false);
+    const float r = 0.5f, gap = 0.05f;  // the striker starts 5 cm from the touching row
+    s.objects.push_back(dynamicSphere({-2.0f * r - gap, 0, 0}, r, 1.0f, {speed, 0, 0}));
+    for (int i = 0; i < count; ++i) s.objects.push_back(dynamicSphere({2.0f * r * float(i), 0, 0}, r, 1.0f));
+    return s;
+}
+
+Scene stackScene(float massRatio) {
+    Scene s = physicsWorld(9.81f, 0.0f, 0.3f, true);
+    const float r = 0.5f;
+    addWalls(s, 1.02f * r, 6.0f * r, 0.2f);
+    s.objects.push_back(dynamicSphere({0, r, 0}, r, 1.0f));
+    s.objects.push_back(dynamicSphere({0, 3.0f * r, 0}, r, massRatio));
+    return s;
+}
+
+Scene tunnelScene(float speed, float angleDegrees) {
+    Scene s = physicsWorld(0.0f, 0.5f, 0.3f, false);
+    s.objects.push_back(staticBox({0, 0, 0}, {2.0f, 2.0f, 0.01f}));  // 2 cm thick
+    const float a = angleDegrees * float(M_PI) / 180.0f;
+    const glm::vec3 dir(std::sin(a), 0, std::cos(a));
+    s.objects.push_back(dynamicSphere(-3.0f * dir, 0.05f, 0.1f, speed * dir));
+    return s;
+}
+
+Scene restingScene(float radius, float x) {
+    Scene s = physicsWorld(9.81f, 0.5f, 0.3f, true);
+    s.objects.push_back(dynamicSphere({x, radius, 0}, radius, sphereMass(radius)));
+    return s;
+}
+
+Scene pileScene(int count, std::uint32_t seed, float r) {
+    Scene s = physicsWorld(9.81f, 0.3f, 0.5f, true);
+    Lcg rng{seed};
+    const float spacing = 2.4f * r;
+    const int side = std::max(2, int(std::ceil(std::sqrt(count / 8.0f))));  // about 8 layers
+    const float inner = 0.5f * spacing * float(side) + 0.3f * r;
+    addWalls(s, inner, 0.5f * spacing * float(count / (side * side) + 2), 0.1f);
+    for (int i = 0; i < count; ++i) {
+        const int layer = i / (side * side), row = (i / side) % side, col = i % side;
+        const glm::vec3 pos(spacing * (float(col) - 0.5f * float(side - 1)) + rng.range(-0.1f, 0.1f) * r,
+                            r + 0.5f * r + spacing * float(layer),
+                            spacing * (float(row) - 0.5f * float(side - 1)) + rng.range(-0.1f, 0.1f) * r);
+        const float radius = r * rng.range(0.8f, 1.0f);
+        s.objects.push_back(dynamicSphere(pos, radius, sphereMass(radius)));
+    }
+    return s;
+}
+
+Scene gasScene(int count, std::uint32_t seed) {
+    Scene s = physicsWorld(0.0f, 1.0f, 0.0f, false);
+    Lcg rng{seed};
+    const float r = 0.1f, inner = 1.0f, t = 0.2f, len = inner + 2.0f * t;
+    for (int axis = 0; axis < 3; ++axis)
+        for (float sign : {-1.0f, 1.0f}) {
+            glm::vec3 pos(0.0f), half(len);
+            pos[axis] = sign * (inner + t);
+            half[axis] = t;
+            s.objects.push_back(staticBox(pos, half));
+        }
+    const int side = int(std::ceil(std::cbrt(float(count))));
+    const float spacing = 2.0f * inner / float(side);
+    for (int i = 0; i < count; ++i) {
+        const glm::vec3 cell(float(i % side), float(i / side % side), float(i / (side * side)));
+        const glm::vec3 pos = -glm::vec3(inner) + spacing * (cell + 0.5f);
+        const glm::vec3 vel(rng.range(-5, 5), rng.range(-5, 5), rng.range(-5, 5));
+        s.objects.push_back(dynamicSphere(pos, r, 1.0f, vel));
+    }
+    return s;
+}
+
+}  // namespace mb

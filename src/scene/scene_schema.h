@@ -1,0 +1,190 @@
+// scene_schema.h — the keys of each scene-file record, one row per key (private to core).
+//
+// One table drives the reader, the writer and operator==, so a key added here is read, written
+// and compared without touching any of them. Rows are in the order the saver writes them.
+//
+//     key(name, field, rule = {}, need = {});
+//
+// `field` is a member pointer or a generic lambda returning a reference (std::invoke takes
+// both); the C++ type of the field decides the value syntax (float: Number, glm::vec3: Vector,
+// int: whole Number, bool: Flag, std::string: Name, ShapeType / CsgOp: their names).
+#pragma once
+
+#include "marchbox/scene/scene.h"
+
+#include <limits>
+#include <string>
+#include <string_view>
+
+namespace mb {
+
+// Range of a number, or of each component of a vector.
+struct Rule {
+    double lo = -std::numeric_limits<double>::infinity();
+    double hi = std::numeric_limits<double>::infinity();
+    bool above = false;    // lo is exclusive: the value must be > lo
+    bool nonZero = false;  // a vector must not be 0,0,0 (it is a direction)
+};
+constexpr Rule atLeast(double lo) { return {lo, std::numeric_limits<double>::infinity()}; }
+constexpr Rule above(double lo) { return {lo, std::numeric_limits<double>::infinity(), true}; }
+constexpr Rule between(double lo, double hi) { return {lo, hi}; }
+constexpr Rule kNonZero{-std::numeric_limits<double>::infinity(),
+                        std::numeric_limits<double>::infinity(), false, true};
+
+// Whether a key must be present. `pick` marks alternative spellings of one field: exactly one
+// of a record's picking keys must be present, reading it sets rec.*pick = when, and the writer
+// writes the one whose `when` matches.
+template <class R>
+struct Need {
+    bool required = false;
+    bool R::*pick = nullptr;
+    bool when = false;
+};
+
+// The `scene` record: it has no counterpart in Scene, only a version to check.
+struct SceneHeader {
+    int version = 1;
+};
+
+template <class R>
+struct Schema;
+
+template <>
+struct Schema<SceneHeader> {
+    static constexpr const char* kind = "scene";
+    template <class K>
+    static void keys(K& key) {
+        key("version", &SceneHeader::version, between(1, 1));
+    }
+};
+
+template <>
+struct Schema<Camera> {
+    static constexpr const char* kind = "camera";
+    template <class K>
+    static void keys(K& key) {
+        key("pos", &Camera::pos);
+        key("target", &Camera::target);
+        key("fov", &Camera::fov, between(1, 179));
+    }
+};
+
+template <>
+struct Schema<World> {
+    static constexpr const char* kind = "world";
+    template <class K>
+    static void keys(K& key) {
+        key("gravity", &World::gravity, atLeast(0));
+        key("restitution", &World::restitution, between(0, 1));
+        key("friction", &World::friction, atLeast(0));
+        key("rolling", &World::rolling, atLeast(0));
+        key("floor", &World::floor);
+        key("ground", &World::ground);
+    }
+};
+
+template <>
+struct Schema<RenderSettings> {
+    static constexpr const char* kind = "render";
+    template <class K>
+    static void keys(K& key) {
+        key("steps", &RenderSettings::steps, between(1, 4096));
+        key("epsilon", &RenderSettings::epsilon, above(0));
+        key("shadows", &RenderSettings::shadows, between(0, 2));
+        key("reflections", &RenderSettings::reflections, between(0, 8));
+        key("fog", &RenderSettings::fog, atLeast(0));
+        key("ao", &RenderSettings::ao);
+        key("aa", &RenderSettings::aa, between(1, 4));
+    }
+};
+
+template <>
+struct Schema<Material> {
+    static constexpr const char* kind = "material";
+    template <class K>
+    static void keys(K& key) {
+        const Need<Material> required{true};
+        key("name", &Material::name);
+        key("r", [](auto& m) -> auto& { return m.color.r; }, atLeast(0), required);
+        key("g", [](auto& m) -> auto& { return m.color.g; }, atLeast(0), required);
+        key("b", [](auto& m) -> auto& { return m.color.b; }, atLeast(0), required);
+        key("Ka", &Material::Ka, atLeast(0));
+        key("Kd", &Material::Kd, atLeast(0));
+        key("Ks", &Material::Ks, atLeast(0));
+        key("C", &Material::C, above(0));
+        key("Kr", &Material::Kr, between(0, 1));
+    }
+};
+
+template <>
+struct Schema<Light> {
+    static constexpr const char* kind = "light";
+    template <class K>
+    static void keys(K& key) {
+        key("pos", &Light::vec, Rule{}, Need<Light>{false, &Light::directional, false});
+        key("dir", &Light::vec, kNonZero, Need<Light>{false, &Light::directional, true});
+        key("color", &Light::color, atLeast(0));
+        key("intensity", &Light::intensity, atLeast(0));
+    }
+};
+
+template <>
+struct Schema<Object> {
+    static constexpr const char* kind = "object";
+    template <class K>
+    static void keys(K& key) {
+        const Need<Object> required{true};
+        key("type", &Object::type, Rule{}, required);
+        key("material", &Object::material, atLeast(0));  // existence is checked at end of file
+        key("pos", &Object::pos, Rule{}, required);
+        key("radius", &Object::radius, above(0));
+        key("size", &Object::size, above(0));
+        key("minor", &Object::minor, above(0));
+        key("height", &Object::height, above(0));
+        key("rot", &Object::rot);
+        key("mass", &Object::mass, atLeast(0));
+        key("vel", &Object::vel);
+        key("spin", &Object::spin);
+        key("static", &Object::isStatic);
+        key("op", &Object::op);
+        key("blend", &Object::blend, atLeast(0));
+    }
+};
+
+// The name the loader gives an unnamed material, and the saver writes for one.
+inline std::string defaultMaterialName(size_t index) { return "material" + std::to_string(index); }
+
+// One line of SceneComments as the file holds it, with its '\n': trailing blanks and CRs go,
+// a line that is neither blank nor a comment becomes a comment ("# " before it), and a line is
+// cut to kMaxLineBytes. The reader keeps what this gives; the writer passes whatever a program
+// put in a comment through it, so a saved comment always reads back as the same line.
+inline std::string commentLine(std::string_view line) {
+    auto trimmed = [](std::string_view s) {
+        size_t end = s.find_last_not_of(" \t\r");
+        return end == std::string_view::npos ? std::string_view() : s.substr(0, end + 1);
+    };
+    std::string out(trimmed(line));
+    size_t first = out.find_first_not_of(" \t");
+    if (first != std::string::npos && out[first] != '#') out.insert(0, "# ");
+    if (out.size() > size_t(kMaxLineBytes)) out = std::string(trimmed(out.substr(0, kMaxLineBytes)));
+    return out + '\n';
+}
+
+// Fills in the optional columns of a row, then calls fn(name, field, rule, need).
+template <class R, class Fn>
+struct KeyRow {
+    Fn& fn;
+    template <class Field>
+    void operator()(const char* name, Field field, Rule rule = {}, Need<R> need = {}) {
+        fn(name, field, rule, need);
+    }
+};
+
+// Calls fn(name, field, rule, need) for every key of record R, in the order files are written.
+template <class R, class Fn>
+void forEachKey(Fn&& fn) {
+    KeyRow<R, Fn> row{fn};
+    Schema<R>::keys(row);
+}
+
+}  // namespace mb
