@@ -1,4 +1,5 @@
-// broadphase.cpp — a sorted uniform grid for sphere pairs.
+// broadphase.cpp — sphere pairs from a kept list over a sorted uniform grid: rebuilt whole, or
+// refreshed for the spheres that moved past their skin.
 #include "broadphase.h"
 
 #include <algorithm>
@@ -54,7 +55,7 @@ void Broadphase::findPairs(const std::vector<glm::dvec3>& centres, const std::ve
                            std::vector<std::pair<int, int>>& pairs) {
     pairs.clear();
     if (centres.empty()) return;
-    if (!findMoved(centres, extents)) buildList(centres, extents);
+    if (!listStillCovers(centres, extents)) buildList(centres, extents);
     else if (!moved_.empty()) refresh();
     // Every listed pair is written and the count moves on where it overlaps: which do is
     // anyone's guess, so a branch on it would be guessed wrong often.
@@ -74,7 +75,7 @@ void Broadphase::findPairs(const std::vector<glm::dvec3>& centres, const std::ve
 // mean move up to its last refresh, so one o serves all. So the list holds every overlapping
 // pair while each sphere's extent plus its move beside the mean stays within its grown extent;
 // the factor keeps that true through the rounding of the distance tests.
-bool Broadphase::findMoved(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents) {
+bool Broadphase::listStillCovers(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents) {
     const size_t n = centres.size();
     if (refs_.size() != n) return false;
     glm::dvec3 shift(0.0);
@@ -141,7 +142,7 @@ void Broadphase::refresh() {
 // it is another sphere, not a moved one that finds the pair itself, and overlaps.
 void Broadphase::pairMoved(int entry, int (&cursor)[9], Pairs& pairs, size_t& kept) const {
     const Sphere& a = spheres_[entry];
-    const int n = int(cells_.size());
+    const int n = int(entries_.size());
     auto test = [&](int j, bool wanted) {
         const Sphere& b = spheres_[j];
         pairs[kept] = ordered(a.body, b.body);
@@ -158,13 +159,13 @@ void Broadphase::pairMoved(int entry, int (&cursor)[9], Pairs& pairs, size_t& ke
     }
     Run runs[9];
     size_t candidates = large_.size();
-    const Entry& c = cells_[entry];
+    const Entry& c = entries_[entry];
     for (int k = 0; k < 9; ++k) {
         const std::int64_t x = c.x + k / 3 - 1, y = c.y + k % 3 - 1;
         int& from = cursor[k];
-        while (from < n && cellLess(cells_[from], x, y, c.z - 1)) ++from;
+        while (from < n && cellLess(entries_[from], x, y, c.z - 1)) ++from;
         int last = from;
-        while (last < n && cells_[last].x == x && cells_[last].y == y && cells_[last].z <= c.z + 1) ++last;
+        while (last < n && entries_[last].x == x && entries_[last].y == y && entries_[last].z <= c.z + 1) ++last;
         runs[k] = {from, last};
         candidates += size_t(last - from);
     }
@@ -177,12 +178,12 @@ void Broadphase::pairMoved(int entry, int (&cursor)[9], Pairs& pairs, size_t& ke
 // The cells of refs_, sorted, and the spheres in their order.
 void Broadphase::buildCells() {
     const int n = int(refs_.size());
-    const bool fresh = int(cells_.size()) != n;
+    const bool fresh = int(entries_.size()) != n;
     if (fresh) {
-        cells_.assign(n, Entry{0, 0, 0, 0});
-        for (int i = 0; i < n; ++i) cells_[i].body = i;
+        entries_.assign(n, Entry{0, 0, 0, 0});
+        for (int i = 0; i < n; ++i) entries_[i].body = i;
     }
-    for (Entry& e : cells_) {
+    for (Entry& e : entries_) {
         const glm::dvec3& c = refs_[e.body];
         e.x = std::int64_t(std::floor(c.x / cell_));
         e.y = std::int64_t(std::floor(c.y / cell_));
@@ -194,20 +195,20 @@ void Broadphase::buildCells() {
         return std::tie(a.x, a.y, a.z, a.body) < std::tie(b.x, b.y, b.z, b.body);
     };
     if (fresh) {
-        std::sort(cells_.begin(), cells_.end(), less);
+        std::sort(entries_.begin(), entries_.end(), less);
     } else {
         for (int i = 1; i < n; ++i) {
-            Entry e = cells_[i];
+            Entry e = entries_[i];
             int j = i;
-            for (; j > 0 && less(e, cells_[j - 1]); --j) cells_[j] = cells_[j - 1];
-            cells_[j] = e;
+            for (; j > 0 && less(e, entries_[j - 1]); --j) entries_[j] = entries_[j - 1];
+            entries_[j] = e;
         }
     }
     spheres_.resize(n);
     entryOf_.resize(size_t(n));
     large_.clear();
     for (int i = 0; i < n; ++i) {
-        const int body = cells_[i].body;
+        const int body = entries_[i].body;
         const double extent = listExtents_[size_t(body)];
         spheres_[i] = {refs_[size_t(body)], extent, extent > 0.5 * cell_, body};
         entryOf_[size_t(body)] = i;
@@ -219,18 +220,18 @@ void Broadphase::buildCells() {
 }
 
 int Broadphase::cellEnd(int begin) const {
-    const Entry& c = cells_[begin];
+    const Entry& c = entries_[begin];
     int end = begin + 1;
-    while (end < int(cells_.size()) && cells_[end].x == c.x && cells_[end].y == c.y &&
-           cells_[end].z == c.z)
+    while (end < int(entries_.size()) && entries_[end].x == c.x && entries_[end].y == c.y &&
+           entries_[end].z == c.z)
         ++end;
     return end;
 }
 
 int Broadphase::lowerBound(int from, std::int64_t x, std::int64_t y, std::int64_t z) const {
-    auto it = std::lower_bound(cells_.begin() + from, cells_.end(), 0,
+    auto it = std::lower_bound(entries_.begin() + from, entries_.end(), 0,
                                [&](const Entry& e, int) { return cellLess(e, x, y, z); });
-    return int(it - cells_.begin());
+    return int(it - entries_.begin());
 }
 
 // Branch-free, as in findPairs: every candidate is written, and kept where it overlaps. Room is
@@ -251,22 +252,22 @@ void Broadphase::pairSphere(int i, const Run* runs, int count, size_t candidates
 // Cells are visited in increasing (x, y, z) order, and so, the order being translation
 // invariant, is the start of each neighbour column: one cursor per column only moves forward.
 void Broadphase::pairCells(Pairs& pairs) const {
-    const int n = int(cells_.size());
+    const int n = int(entries_.size());
     int cursor[5] = {0, 0, 0, 0, 0};
     Run runs[6];
     size_t kept = pairs.size();
     for (int begin = 0, end; begin < n; begin = end) {
         end = cellEnd(begin);
-        const Entry& c = cells_[begin];
+        const Entry& c = entries_[begin];
         int count = 0;
         runs[count++] = {begin, end};
         size_t candidates = size_t(end - begin);
         for (int k = 0; k < 5; ++k) {
             const std::int64_t x = c.x + kColumns[k].dx, y = c.y + kColumns[k].dy;
             int& j = cursor[k];
-            while (j < n && cellLess(cells_[j], x, y, c.z + kColumns[k].dz)) ++j;
+            while (j < n && cellLess(entries_[j], x, y, c.z + kColumns[k].dz)) ++j;
             int last = j;
-            while (last < n && cells_[last].x == x && cells_[last].y == y && cells_[last].z <= c.z + 1)
+            while (last < n && entries_[last].x == x && entries_[last].y == y && entries_[last].z <= c.z + 1)
                 ++last;
             if (last == j) continue;
             runs[count++] = {j, last};
@@ -288,7 +289,7 @@ void Broadphase::pairLarge(Pairs& pairs) const {
             const Sphere& other = spheres_[large_[b]];
             if (other.centre.x - other.extent >= high) break;  // it and every later one are clear in x
             if (overlaps(big.centre, big.extent, other.centre, other.extent))
-                addPair(pairs, cells_[large_[a]].body, cells_[large_[b]].body);
+                addPair(pairs, entries_[large_[a]].body, entries_[large_[b]].body);
         }
         pairBlock(large_[a], pairs);
     }
@@ -300,14 +301,14 @@ void Broadphase::pairLarge(Pairs& pairs) const {
 // tested sphere by sphere.
 void Broadphase::pairBlock(int entry, Pairs& pairs) const {
     const Sphere& big = spheres_[entry];
-    const int n = int(cells_.size());
+    const int n = int(entries_.size());
     const double reach = big.extent + 0.5 * cell_;
     const glm::dvec3 lo = glm::floor((big.centre - reach) / cell_);
     const glm::dvec3 hi = glm::floor((big.centre + reach) / cell_);
     auto test = [&](int j) {
         const Sphere& s = spheres_[j];
         if (!s.large && overlaps(big.centre, big.extent, s.centre, s.extent))
-            addPair(pairs, cells_[entry].body, cells_[j].body);
+            addPair(pairs, entries_[entry].body, entries_[j].body);
     };
     if ((hi.x - lo.x + 1) * (hi.y - lo.y + 1) > double(n)) {
         for (int j = 0; j < n; ++j) test(j);
@@ -318,7 +319,7 @@ void Broadphase::pairBlock(int entry, Pairs& pairs) const {
     for (auto x = std::int64_t(lo.x); x <= std::int64_t(hi.x); ++x)
         for (auto y = std::int64_t(lo.y); y <= std::int64_t(hi.y); ++y) {
             int j = from = lowerBound(from, x, y, z0);
-            for (; j < n && cells_[j].x == x && cells_[j].y == y && cells_[j].z <= z1; ++j) test(j);
+            for (; j < n && entries_[j].x == x && entries_[j].y == y && entries_[j].z <= z1; ++j) test(j);
         }
 }
 

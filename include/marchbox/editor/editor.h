@@ -33,7 +33,6 @@ public:
     // when that read failed; *errors then has FILE:LINE lines and the open scene is untouched.
     bool request(Leave what, const std::string& path, std::vector<std::string>* errors);
     Leave pendingLeave() const { return pending_; }
-    const std::string& pendingPath() const { return pendingPath_; }
     void confirmLeave();  // carries out the pending leave; an Open's file was read already
     void cancelLeave();
     bool quitRequested() const { return quit_; }
