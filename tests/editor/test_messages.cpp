@@ -77,6 +77,7 @@ TEST(Messages, ASettingsPanelKeepsItsMessageAcrossSelections) {
 }
 
 TEST(Messages, TheStatusLineClearsAfterItsTime) {
+    ASSERT_EQ(Messages::kStatusSeconds, 8.0) << "the status line stays 8 s";
     Messages m;
     *m.at(Place::Status) = "cannot write the screenshot";
     frame(m, {}, Selection{}, 10.0);

@@ -69,6 +69,7 @@ TEST(AsyncCompile, ABrokenShaderKeepsTheLastGoodProgramAndSaysWhy) {
     fs::remove_all(dir);
     fs::copy(test::sourcePath("shaders"), dir);
     test::ScopedEnv shaders("MARCHBOX_SHADERS", dir.c_str());
+    test::ScopedCwd cwd(dir.parent_path());  // the error then names broken-shaders/raymarch.glsl
     Drawing d;
     ASSERT_NO_FATAL_FAILURE(d.start("scenes/shadows_hard.txt"));
     Renderer& r = d.r;
@@ -87,7 +88,7 @@ TEST(AsyncCompile, ABrokenShaderKeepsTheLastGoodProgramAndSaysWhy) {
     for (int i = 0; started && i < 6000 && r.compiling(); ++i) failed = !r.poll(&error);
     EXPECT_TRUE(failed || !started) << "the broken shader must be reported";
     EXPECT_NE(error.find("error"), std::string::npos) << error;
-    std::string where = (dir / "raymarch.glsl").string() + ':' + std::to_string(line) + '(';
+    std::string where = "broken-shaders/raymarch.glsl:" + std::to_string(line) + '(';
     EXPECT_NE(error.find(where), std::string::npos) << "names " << where << ": " << error;
     EXPECT_EQ(r.program(), good) << "the last good program keeps drawing";
     std::string again;

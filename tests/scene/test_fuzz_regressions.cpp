@@ -61,6 +61,7 @@ void expectSaneParse(const fs::path& file) {
 
 TEST(FuzzRegressions, EveryRegressionInputParsesSanely) {
     std::vector<fs::path> files = filesIn(kFuzzDir / "regressions");
+    ASSERT_FALSE(files.empty()) << "tests/fuzz/regressions/ is missing";
     for (const fs::path& f : files) expectSaneParse(f);
     std::cout << "[          ] " << files.size() << " regression inputs\n";
 }
