@@ -76,8 +76,9 @@ files_cases() {
   # A file name with a newline in it: each error still one line.
   printf 'world gravity:-1\n' >"$tmp/$(printf 'two\nlines').txt"
   expect_says "two?lines.txt:1: 'gravity' must be >= 0" 1 "$mb" check "$tmp/$(printf 'two\nlines').txt"
-  # Two simulator threads give the same bytes as one (the pile settling: many contacts to split).
-  local pile=$src/scenes/pile.txt
+  # Two simulator threads give the same bytes as one, on a pile whose contacts are split
+  # between them (PhysicsWorld.TheCliThreadsSceneSplitsItsContacts).
+  local pile=$src/tests/scenes/split_pile.txt
   "$mb" simulate "$pile" --seconds 1.5 --threads 2 >"$tmp/two.txt" &&
     "$mb" simulate "$pile" --seconds 1.5 --threads 1 >"$tmp/one.txt" && cmp -s "$tmp/one.txt" "$tmp/two.txt" &&
     ! cmp -s "$tmp/one.txt" "$pile" ||

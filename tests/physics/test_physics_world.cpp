@@ -1,6 +1,7 @@
 // test_physics_world.cpp — driving the simulator: step counts, determinism, frame rates.
 #include "marchbox/physics/physics.h"
 #include "marchbox/report/physics_scenes.h"
+#include "marchbox/scene/scene_io.h"
 #include "physics_test_util.h"
 
 #include <gtest/gtest.h>
@@ -135,4 +136,22 @@ TEST(PhysicsWorld, TwoLanesGiveTheSameBytesAsThisCpusLanes) {
         b.step();
     }
     EXPECT_EQ(stateHash(a), stateHash(b));
+}
+
+// tests/scenes/split_pile.txt is the scene cli.files simulates on one thread and on two to
+// compare their bytes: that says something only if its contacts are many enough to be split.
+TEST(PhysicsWorld, TheCliThreadsSceneSplitsItsContacts) {
+    Scene scene;
+    std::vector<std::string> errors;
+    ASSERT_TRUE(loadScene(std::string(MARCHBOX_SOURCE_DIR) + "/tests/scenes/split_pile.txt", &scene, &errors))
+        << (errors.empty() ? "" : errors[0]);
+    PhysicsSettings two;
+    two.threads = 2;
+    PhysicsWorld w(scene, two);
+    int split = 0;
+    for (int i = 0; i < stepsFor(1.5, two); ++i) {
+        w.step();
+        split += w.stats().halves > 0 ? 1 : 0;
+    }
+    EXPECT_GT(split, stepsFor(1.0, two)) << "the contacts were split on only " << split << " steps";
 }
