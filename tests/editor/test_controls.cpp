@@ -1,4 +1,4 @@
-// test_controls.cpp — README's editor section lists the keys Help > Controls shows, row for row.
+// test_controls.cpp — docs/editor.md lists the keys Help > Controls shows, row for row.
 #include "marchbox/editor/controls.h"
 
 #include <gtest/gtest.h>
@@ -18,15 +18,15 @@ std::string trim(const std::string& s) {
     return a == std::string::npos ? "" : s.substr(a, b - a + 1);
 }
 
-// The rows "| keys | action |" of the table in README's "## The editor" section, header and
-// rule left out.
-std::vector<std::pair<std::string, std::string>> readmeControls() {
-    std::ifstream in(std::string(MARCHBOX_SOURCE_DIR) + "/README.md");
+// The rows "| keys | action |" of the table in docs/editor.md's "## Controls" section, header
+// and rule left out.
+std::vector<std::pair<std::string, std::string>> documentedControls() {
+    std::ifstream in(std::string(MARCHBOX_SOURCE_DIR) + "/docs/editor.md");
     std::vector<std::pair<std::string, std::string>> rows;
     std::string line;
     bool inSection = false;
     while (std::getline(in, line)) {
-        if (line.rfind("## ", 0) == 0) inSection = line == "## The editor";
+        if (line.rfind("## ", 0) == 0) inSection = line == "## Controls";
         if (!inSection || line.rfind("| ", 0) != 0 || line.find("---") != std::string::npos) continue;
         size_t mid = line.find(" | ");
         std::string keys = trim(line.substr(2, mid - 2)), action = trim(line.substr(mid + 3));
@@ -38,14 +38,14 @@ std::vector<std::pair<std::string, std::string>> readmeControls() {
 
 }  // namespace
 
-TEST(Controls, ReadmeListsEveryControlAsHelpShowsIt) {
-    auto readme = readmeControls();
+TEST(Controls, DocsListEveryControlAsHelpShowsIt) {
+    auto docs = documentedControls();
     auto table = editorControls();
-    ASSERT_EQ(readme.size(), table.size()) << "README's editor section has " << readme.size()
-                                           << " rows of keys, Help > Controls " << table.size();
+    ASSERT_EQ(docs.size(), table.size()) << "docs/editor.md's Controls section has " << docs.size()
+                                         << " rows of keys, Help > Controls " << table.size();
     for (size_t i = 0; i < table.size(); ++i) {
-        EXPECT_EQ(readme[i].first, table[i].keys) << "row " << i;
-        EXPECT_EQ(readme[i].second, table[i].action) << "row " << i;
+        EXPECT_EQ(docs[i].first, table[i].keys) << "row " << i;
+        EXPECT_EQ(docs[i].second, table[i].action) << "row " << i;
     }
 }
 
