@@ -1,28 +1,38 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Marchbox needs (when missing), then configures and builds it.
 # Usage: scripts/setup.sh [BUILD_DIR] [extra cmake args...]
+#        scripts/setup.sh --install PACKAGE...   (only installs those, when missing: CI's extras)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 PACKAGES=(g++ cmake pkg-config libglfw3-dev libglew-dev libglm-dev libimgui-dev
           libosmesa6-dev libegl-dev libgtest-dev libstb-dev xvfb xauth xdotool x11-utils python3)
 
-missing=()
-for p in "${PACKAGES[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  if [[ $(id -u) -eq 0 ]]; then
-    echo "setup: installing ${missing[*]}"
-    export DEBIAN_FRONTEND=noninteractive
-    apt-get update -qq
-    apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-  else
+# install_missing PACKAGE...: apt-get install those not installed; without root, print the
+# command to run and fail.
+install_missing() {
+  local missing=() p
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  ((${#missing[@]})) || return 0
+  if [[ $(id -u) -ne 0 ]]; then
     echo "setup: missing packages; run:"
     echo "  sudo apt-get install -y ${missing[*]}"
     exit 1
   fi
+  echo "setup: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}
+
+if [[ ${1:-} == --install ]]; then
+  shift
+  install_missing "$@"
+  exit 0
 fi
+install_missing "${PACKAGES[@]}"
 
 build=${1:-build}
 shift || true

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs an off-screen render and a simulate under valgrind --leak-check=full and fails on any
 # memory error or definite leak not allocated by the OpenGL driver (tests/valgrind/mesa.supp).
-# Slow (a render takes about 1.5 minutes under valgrind), so not part of CI.
+# Slow (a render takes about 1.5 minutes under valgrind): CI runs it last (.ci/run).
 # Usage: scripts/valgrind.sh [BUILD_DIR]   (default build; builds marchbox there if needed)
 set -euo pipefail
 cd "$(dirname "$0")/.."

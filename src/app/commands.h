@@ -1,4 +1,4 @@
-// commands.h — the subcommands of ../shared/CLI.md. Each returns the process exit status.
+// commands.h — the subcommands of docs/cli.md. Each returns the process exit status.
 #pragma once
 
 #include "args.h"

@@ -108,7 +108,7 @@ static void viewWindow(UiContext& c) {
     ImGui::End();
 }
 
-// Help > Controls: editorControls(), the table README's editor section lists too.
+// Help > Controls: editorControls(), the table docs/editor.md lists too.
 static void helpWindow(UiContext& c) {
     if (!c.ui.showHelp) return;
     if (beginPanel(c, Panel::Controls, "Controls", &c.ui.showHelp) &&

@@ -1,7 +1,7 @@
 // contact_batches.h — the contact solver's rows, four contacts at a time.
 //
 // The solver's state lives here from load() to the end of the substeps, structure of
-// arrays: a batch holds kLanes contacts of one level (marchbox/contact_graph.h), each field a row
+// arrays: a batch holds kLanes contacts of one level (contact_graph.h), each field a row
 // of kLanes doubles, so that one pass reads each contact's ~200 bytes once, in memory order, and
 // computes its rows with SIMD instructions. The lanes compute what the rows of one contact
 // computed one at a time, operation for operation, so the result is the same to the bit (but

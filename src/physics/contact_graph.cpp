@@ -1,4 +1,4 @@
-// contact_graph.cpp — levels of contacts that share no dynamic body (see marchbox/contact_graph.h).
+// contact_graph.cpp — levels of contacts that share no dynamic body (see contact_graph.h).
 #include "contact_graph.h"
 
 #include <algorithm>

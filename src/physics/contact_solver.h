@@ -1,6 +1,6 @@
 // contact_solver.h — sequential impulses on sphere contacts, Box2D v3 style soft step:
 // the contacts, their row masses for a step and the restitution pass. The substeps' rows run in
-// batches (marchbox/contact_batches.h).
+// batches (contact_batches.h).
 //
 // A contact joins body a and body b along a unit normal from a to b. A static surface is the
 // world's static body (zero inverse mass and velocity) as a. Both contact arms lie along the

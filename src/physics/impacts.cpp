@@ -1,4 +1,4 @@
-// impacts.cpp — impacts at their time of impact, in time order (see marchbox/impacts.h).
+// impacts.cpp — impacts at their time of impact, in time order (see impacts.h).
 #include "impacts.h"
 
 #include <algorithm>

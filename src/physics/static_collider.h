@@ -1,5 +1,5 @@
 // static_collider.h — what a dynamic sphere sees of the static scene: the ground plane
-// and the static objects' CSG chain, through the SDF mirror (marchbox/sdf.h).
+// and the static objects' CSG chain, through the SDF mirror (marchbox/scene/sdf.h).
 //
 // The chain is split into groups whose union is the whole: the objects up to the last one that
 // is not a sharp union form one group (a subtract or intersect changes everything before it);

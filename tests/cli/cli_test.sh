@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # cli_test.sh — absurd command lines get one line on standard error and the exit status of
-# ../shared/CLI.md (1 bad input, 2 usage, 3 OpenGL), never a crash, a hang or a stack trace.
+# docs/cli.md (1 bad input, 2 usage, 3 OpenGL), never a crash, a hang or a stack trace.
 # Usage: tests/cli/cli_test.sh MARCHBOX SOURCE_DIR GROUP   (GROUP: args, files or gl)
 set -uo pipefail
 mb=$1 src=$2 group=$3

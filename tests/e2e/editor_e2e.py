@@ -272,7 +272,7 @@ def is_yellow(rgb):  # the overlay's and menu bar's notes, (255, 204, 77)
 
 
 def check_missing_list(app):
-    """What the issue found missing, on screen: simulated time on the overlay, an unsaved
+    """What a user once found missing, on screen: simulated time on the overlay, an unsaved
     marker in the menu bar while an edit is unsaved, the features the scene's shader was built
     for in View, and a note on the overlay while an added object's shader compiles."""
     img = app.screenshot()

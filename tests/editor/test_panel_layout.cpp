@@ -11,7 +11,7 @@ bool overlap(const PanelRect& a, const PanelRect& b) {
     return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
 }
 
-// The window sizes people use (the two) and the e2e tests' small one; the menu bar and
+// The window sizes people use (960x600 and 1280x720) and the e2e tests' small one; the menu bar and
 // the statistics overlay as ImGui draws them at its default font.
 const PanelFrame kFrames[] = {{960, 600, 19, 140}, {1280, 720, 19, 140}, {640, 400, 19, 140}};
 

@@ -45,12 +45,12 @@ TEST(PhysicsAnalytic, ProjectileFollowsTheParabola) {
     EXPECT_LT(glm::length(w.body(0).spin), 1e-12);
 }
 
-// Impacts are resolved at their time of impact (marchbox/impacts.h): the flight to the ground
+// Impacts are resolved at their time of impact (impacts.h): the flight to the ground
 // is a parabola, the bounce turns the impact speed v into e·v, the flight after is a parabola
 // again, and the step ends where that flight is. So a bounce keeps exactly e² of the height and
 // the apexes are e^(2k)·h to rounding. What is left is how they are seen: the highest step end
 // is at most g·(dt/2)²/2 = 8.5e-5 m below the true apex. Bound: that, plus 1e-9 of rounding
-// (it is about 1e-15 per step), for the first five apexes; the issue asks 1 mm of the third.
+// (it is about 1e-15 per step), for the first five apexes, far inside 1 mm.
 TEST(PhysicsAnalytic, BounceApexesFallAsEToTheTwoN) {
     const double e = double(0.8f);
     PhysicsWorld w(bounceScene(1.0f, float(e)));
@@ -133,7 +133,7 @@ TEST(PhysicsAnalytic, SlideTurnsIntoRollingAtFiveSevenths) {
 // A ball spinning in place at ω0 on the ground: friction at the contact point changes no angular
 // momentum about it, I·ω0 = I·ω + m·v·r, and once it rolls ω = v/r: v = 2/7·ω0·r. As for the
 // slide above, the friction row reaches zero slip within a substep once the clamp releases:
-// rounding only (the issue asks 2 %). Rolling resistance off: it would take angular momentum.
+// rounding only (bound 2 %). Rolling resistance off: it would take angular momentum.
 TEST(PhysicsAnalytic, SpinInPlaceTurnsIntoRollingAtTwoSevenths) {
     const double w0 = 10.0;
     Scene scene = spinScene(float(w0), 0.3f);
@@ -189,10 +189,10 @@ TEST(PhysicsAnalytic, RollingZeroKeepsRolling) {
 }
 
 // Newton's cradle, e = 1: a striker at 2 m/s into a touching row of four. Impacts are taken one
-// after another (marchbox/impacts.h): the striker's impact gives ball 1 its speed at the instant
+// after another (impacts.h): the striker's impact gives ball 1 its speed at the instant
 // ball 1 touches ball 2, whose impact is then due at once, and so on down the row. Equal masses
 // exchange velocities, so the last ball leaves at 2 m/s and the rest stop, to rounding (bound
-// 1e-9; the issue asks ≥ 1.96 and ≤ 0.04 m/s).
+// 1e-9, where ≥ 1.96 and ≤ 0.04 m/s would pass a plain solver).
 TEST(PhysicsAnalytic, NewtonsCradleSendsOutTheLastBall) {
     const double v = 2.0;
     PhysicsWorld w(cradleScene(4, float(v)));

@@ -127,11 +127,11 @@ TEST(PhysicsExtreme, PileComesToRest) {
 }
 
 // 64 elastic, frictionless spheres in a closed box, no gravity, default settings, 30 s. Every
-// impact is one pair's, at its time of impact, one after another (marchbox/impacts.h): Newton's
+// impact is one pair's, at its time of impact, one after another (impacts.h): Newton's
 // law with e = 1 on one pair, Δu = −2·u along n with the pair's effective mass, conserves the
 // pair's kinetic energy exactly, whatever else happens in the step. Without gravity nothing
 // rests, so every impact bounces (bounceThreshold). What is left is rounding, about 1e-16 per
-// impact over some 10⁴ impacts: bound 1e-9 (the issue asks 0.5 %). The spheres must not sink
+// impact over some 10⁴ impacts: bound 1e-9 (0.5 % would pass a plain solver). The spheres must not sink
 // into each other or the walls beyond the slop while they do it.
 TEST(PhysicsExtreme, ElasticGasConservesEnergy) {
     PhysicsWorld w(gasScene(64, 3));

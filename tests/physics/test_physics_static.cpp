@@ -89,8 +89,8 @@ TEST(PhysicsStatic, SphereSettlesIntoASubtractedHole) {
 // whose surface bends is followed every substep, RATTLE's way: the solve pass aims the end of
 // the substep's straight path at the surface (StaticCollider::bend), the relax pass works along
 // the normal found there. For a circle that keeps the speed exactly; with gravity the method is
-// a symplectic kick-drift, whose energy error stays bounded instead of drifting. Bounds: the
-// issue's 2 % of the swing energy (the energy above the bowl's bottom) over 10 periods
+// a symplectic kick-drift, whose energy error stays bounded instead of drifting. Bounds: 2 % of
+// the swing energy (the energy above the bowl's bottom) over 10 periods
 // (measured 0.2 %, was a 49 % gain with the step's first normal), and the centre within
 // 0.1 slop of its circle (measured 0.2 mm).
 class PhysicsBowl : public ::testing::TestWithParam<std::tuple<float, float, float>> {};
@@ -126,7 +126,7 @@ INSTANTIATE_TEST_SUITE_P(PhysicsBowls, PhysicsBowl,
 // (μ below 2/7·tan θ + 5/7·c), a = g·(sin θ − μ·cos θ). The velocity is exact but for the
 // friction row trailing by a substep (bound 2·a·h); the position of a body a contact pushes moves
 // by v·h each substep, the symplectic Euler lag a·T·h/2, plus that velocity lag over T. Both well
-// inside the 1 %.
+// inside 1 %.
 class PhysicsRamp : public ::testing::TestWithParam<std::tuple<float, float, float, bool>> {};
 
 TEST_P(PhysicsRamp, AccelerationDownTheSlope) {

@@ -1,5 +1,5 @@
 // marchbox/editor/controls.h — every key and mouse action of the editor window, once: Help >
-// Controls draws this table and README's editor section lists the same rows (a test holds the
+// Controls draws this table and docs/editor.md lists the same rows (a test holds the
 // two together).
 #pragma once
 

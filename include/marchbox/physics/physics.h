@@ -7,12 +7,12 @@
 //
 // The scene's World gives gravity, restitution, friction and rolling resistance; PhysicsSettings
 // holds how the method runs. Dynamic spheres (Object::dynamic()) move; every other object, and the ground plane, is a static
-// collider seen through its SDF (marchbox/sdf.h). The state is double precision so that a sphere
+// collider seen through its SDF (marchbox/scene/sdf.h). The state is double precision so that a sphere
 // 1e5 m from the origin still resolves millimetres; the scene keeps floats.
 //
 // One step of dt is split into `substeps` soft steps (Box2D v3's "soft step"):
 //   collide once (speculative contacts, warm started from the last step); resolve the step's
-//   impacts at their times of impact, one after another (marchbox/impacts.h); then per substep
+//   impacts at their times of impact, one after another (impacts.h); then per substep
 //   integrate velocities → warm start → solve (soft, with bias) → integrate positions → relax
 //   (rigid, no bias); then restitution for what the impacts left, the impacts' position
 //   corrections, a continuous sweep for fast spheres, and sleep. A contact with a curved static
@@ -87,7 +87,7 @@ struct PhysicsStats {
     int contacts = 0;             // contact constraints in the last step (speculative included)
     int awake = 0;                // awake dynamic bodies
     int halves = 0;               // contacts in the two halves that two threads may solve at once
-    int levels = 0;               // levels of contacts that share no body (marchbox/contact_graph.h)
+    int levels = 0;               // levels of contacts that share no body (contact_graph.h)
     double maxPenetration = 0.0;  // m, deepest overlap at the end of the last step
 };
 
