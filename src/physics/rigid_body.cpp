@@ -1,0 +1,139 @@
+// rigid_body.cpp — closed-form mass properties and the free rigid body's rotation (rigid_body.h).
+#include "rigid_body.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+
+namespace mb {
+
+using glm::dquat;
+using glm::dvec3;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+//-----------------------------------------------------------------------------
+// Mass properties: each shape's moments about its centre, for mass m spread uniformly.
+//-----------------------------------------------------------------------------
+dvec3 sphereInertia(double m, double r) { return dvec3(0.4 * m * r * r); }
+
+// Half extents (a, b, c): Ix = m(b² + c²)/3, and so on round.
+dvec3 boxInertia(double m, const dvec3& half) {
+    const dvec3 s = half * half;
+    return m / 3.0 * dvec3(s.y + s.z, s.x + s.z, s.x + s.y);
+}
+
+// Axis y, length h: Iy = m r²/2, Ix = Iz = m(3r² + h²)/12.
+dvec3 cylinderInertia(double m, double r, double h) {
+    const double across = m * (3.0 * r * r + h * h) / 12.0;
+    return dvec3(across, 0.5 * m * r * r, across);
+}
+
+// A cylinder (radius r, length h, along y) capped by two hemispheres; masses by volume share:
+//   mc = m·πr²h / V, ms = m·(4/3)πr³ / V (both caps: one sphere), V = πr²h + (4/3)πr³.
+// Along y the caps together are a sphere: Iy = mc r²/2 + (2/5) ms r².
+// Across (x, z), each cap of mass ms/2 has (2/5)(ms/2)r² about a diameter of its flat face (half
+// a sphere's, by symmetry); its centroid lies 3r/8 from that face, so about its centroid it has
+// (ms/2)(2r²/5 − 9r²/64), and the centroid is d = h/2 + 3r/8 from the capsule's centre. Both caps:
+//   ms (2r²/5 − 9r²/64 + d²) = ms (2r²/5 + h²/4 + 3hr/8),
+// the 9r²/64 cancelling against d²'s (3r/8)² term; Ix = Iz = mc(3r² + h²)/12 + that.
+dvec3 capsuleInertia(double m, double r, double h) {
+    const double cylinderVolume = kPi * r * r * h, sphereVolume = 4.0 / 3.0 * kPi * r * r * r;
+    const double mc = m * cylinderVolume / (cylinderVolume + sphereVolume), ms = m - mc;
+    const double across = mc * (3.0 * r * r + h * h) / 12.0
+                        + ms * (0.4 * r * r + 0.25 * h * h + 0.375 * h * r);
+    return dvec3(across, 0.5 * mc * r * r + 0.4 * ms * r * r, across);
+}
+
+// Ring radius R in the x-z plane, tube radius a: Iy = m(R² + 3a²/4), Ix = Iz = m(R²/2 + 5a²/8).
+dvec3 torusInertia(double m, double ring, double tube) {
+    const double R2 = ring * ring, a2 = tube * tube;
+    const double across = m * (0.5 * R2 + 0.625 * a2);
+    return dvec3(across, m * (R2 + 0.75 * a2), across);
+}
+
+//-----------------------------------------------------------------------------
+// Free rotation: a Lie–Poisson splitting (McLachlan 1993; Touma & Wisdom 1994).
+//-----------------------------------------------------------------------------
+// The kinetic energy T = Σ L_k²/(2 I_k) in body momentum L splits into three axis terms. The
+// term of axis k alone keeps L_k and spins the body about its axis k at rate ω_k = L_k/I_k, so
+// its flow is exact: L turns about body axis k by −ω_k t (L' = L × ω, Euler's equations) while
+// q turns by +ω_k t about the same axis, which leaves the world momentum q·L unchanged. Every
+// sub-flow therefore keeps |L| and world L to rounding; only T drifts, by the splitting error.
+//
+// T's error, measured over 10 s at h = 1/480 for the box of half extents (0.1, 0.2, 0.4) and its
+// two other orientations in the body, ω = (3, 5, 7), (−6, 2, 4), (1, −8, 3), (5.77, 5.77, 5.77)
+// rad/s (worst relative error of all):
+//   Strang X(h/2) Y(h/2) Z(h) Y(h/2) X(h/2), best to worst axis order:  3.7e-6 .. 1.0e-4
+//   three Strang steps of h/3 (the triple jump's cost), axes in x, y, z order:  up to 5.0e-6
+//   Yoshida's triple jump of Strang, worst of the six axis orders:         up to 6.5e-8
+//   the same, smallest moment outermost, intermediate in the middle:        3.9e-10
+// Strang is second order and misses the 1e-6 goal, even at the triple jump's cost; the triple
+// jump is fourth order and symmetric (time-reversible, so the error oscillates instead of
+// growing). Ordering the axes by moment costs a sort of three and was the best of the six orders
+// for each body measured, so no body depends on how its shape happens to lie in its frame.
+
+// Axis k's exact flow for time t.
+void flowAboutAxis(dquat& q, dvec3& bodyMomentum, const dvec3& inertia, int k, double t) {
+    const double halfAngle = 0.5 * bodyMomentum[k] / inertia[k] * t;
+    const double s = std::sin(halfAngle), c = std::cos(halfAngle);
+    const double sinAngle = 2.0 * s * c, cosAngle = 1.0 - 2.0 * s * s;
+    const int i = (k + 1) % 3, j = (k + 2) % 3;  // (i, j, k) cyclic: turning i towards j is +
+    const double li = bodyMomentum[i], lj = bodyMomentum[j];
+    bodyMomentum[i] = cosAngle * li + sinAngle * lj;   // turned by −angle
+    bodyMomentum[j] = cosAngle * lj - sinAngle * li;
+    dvec3 axis(0.0);
+    axis[k] = s;
+    q = q * dquat(c, axis);                            // turned by +angle, in the body frame
+}
+
+// Strang: outer(h/2) middle(h/2) inner(h) middle(h/2) outer(h/2), second order and symmetric.
+void strangStep(dquat& q, dvec3& bodyMomentum, const dvec3& inertia,
+                const std::array<int, 3>& order, double h) {
+    const auto [outer, middle, inner] = order;
+    flowAboutAxis(q, bodyMomentum, inertia, outer, 0.5 * h);
+    flowAboutAxis(q, bodyMomentum, inertia, middle, 0.5 * h);
+    flowAboutAxis(q, bodyMomentum, inertia, inner, h);
+    flowAboutAxis(q, bodyMomentum, inertia, middle, 0.5 * h);
+    flowAboutAxis(q, bodyMomentum, inertia, outer, 0.5 * h);
+}
+
+// Smallest moment outermost, then the largest, the intermediate inside: the best order measured.
+// Ties go to the lower axis, so the order is a pure function of `inertia`.
+std::array<int, 3> axisOrder(const dvec3& inertia) {
+    std::array<int, 3> byMoment = {0, 1, 2};
+    std::stable_sort(byMoment.begin(), byMoment.end(),
+                     [&](int a, int b) { return inertia[a] < inertia[b]; });
+    return {byMoment[0], byMoment[2], byMoment[1]};
+}
+
+}  // namespace
+
+MassProperties massProperties(const Object& o) {
+    const double m = o.mass, r = o.radius, h = o.height;
+    switch (o.type) {
+    case ShapeType::Sphere: return {m, sphereInertia(m, r)};
+    case ShapeType::Box: return {m, boxInertia(m, dvec3(o.size))};
+    case ShapeType::Torus: return {m, torusInertia(m, r, o.minor)};
+    case ShapeType::Capsule: return {m, capsuleInertia(m, r, h)};
+    case ShapeType::Cylinder: return {m, cylinderInertia(m, r, h)};
+    }
+    return {m, sphereInertia(m, r)};  // unreachable: the loader admits only the five shapes
+}
+
+// Yoshida's triple jump: Strang steps of w1·h, w0·h, w1·h with w1 = 1/(2 − ∛2), w0 = 1 − 2·w1
+// cancel the third-order error of the symmetric step, leaving a fourth-order one.
+void rotateFree(dquat& q, dvec3& spin, const dvec3& inertia, double h) {
+    const double w1 = 1.0 / (2.0 - std::cbrt(2.0)), w0 = 1.0 - 2.0 * w1;
+    const std::array<int, 3> order = axisOrder(inertia);
+    dvec3 bodyMomentum = inertia * (glm::conjugate(q) * spin);
+    for (const double w : {w1, w0, w1}) strangStep(q, bodyMomentum, inertia, order, w * h);
+    q = glm::normalize(q);
+    spin = q * (bodyMomentum / inertia);
+}
+
+}  // namespace mb
