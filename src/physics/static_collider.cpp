@@ -85,7 +85,7 @@ double StaticCollider::groundDistance(const glm::dvec3& p) const {
 // once it has moved. While that leaves them out of reach, none is measured; the slack is far
 // above the rounding of the bounds, so a group left out would have been left out measured.
 void StaticCollider::query(int body, const glm::dvec3& centre, double radius, double reach,
-                           std::vector<StaticHit>& out) {
+                           std::vector<StaticHit>& out, double size) {
     out.clear();
     if (groundDistance(centre) - radius < reach)
         out.push_back({0, groundDistance(centre) - radius, glm::dvec3(0, 1, 0)});
@@ -102,7 +102,7 @@ void StaticCollider::query(int body, const glm::dvec3& centre, double radius, do
         // The distance alone rules most groups out (a pile's far walls); only a surface in
         // reach pays for the four samples of its normal.
         const double d = localDistance();
-        if (d - radius < reach) out.push_back(localHit(int(g), radius, d));
+        if (d - radius < reach) out.push_back(localHit(int(g), radius, d, size));
     }
 }
 
@@ -113,11 +113,11 @@ StaticHit StaticCollider::hit(int feature, const glm::dvec3& centre, double radi
 
 double StaticCollider::localDistance() const { return mapObjects(local_, glm::vec3(0.0f)).d; }
 
-StaticHit StaticCollider::localHit(int group, double radius, double d) const {
+StaticHit StaticCollider::localHit(int group, double radius, double d, double size) const {
     // Tetrahedral central difference (Quilez): four samples at the corners k of a tetrahedron,
     // n ∝ Σ k·f(h·k). Error O(h²·curvature); h scales with the sphere so it stays above the
     // float noise of the local distances.
-    const float h = float(1e-3 * (radius + std::abs(d)));
+    const float h = float(1e-3 * (std::max(radius, size) + std::abs(d)));
     const glm::vec3 k[4] = {{1, -1, -1}, {-1, -1, 1}, {-1, 1, -1}, {1, 1, 1}};
     glm::dvec3 n(0.0);
     for (const glm::vec3& c : k) n += glm::dvec3(c) * double(mapObjects(local_, c * h).d);

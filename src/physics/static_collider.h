@@ -32,7 +32,10 @@ public:
 
     // Every surface within `reach` of the sphere's surface. `body` names the sphere from one call
     // to the next: how far its groups were when last measured spares most calls measuring again.
-    void query(int body, const glm::dvec3& centre, double radius, double reach, std::vector<StaticHit>& out);
+    // `size`: the body's size, where its radius is no measure of it (a corner has radius 0): the
+    // normal's difference step scales with the larger of the two.
+    void query(int body, const glm::dvec3& centre, double radius, double reach, std::vector<StaticHit>& out,
+               double size = 0.0);
 
     // One surface (StaticHit::feature, not the ground) seen from a sphere at `centre`.
     StaticHit hit(int feature, const glm::dvec3& centre, double radius);
@@ -73,7 +76,7 @@ private:
     double groundDistance(const glm::dvec3& p) const;
     double localDistance() const;  // to the localised group, from the local origin
     // The group localised at the centre, `d` its localDistance().
-    StaticHit localHit(int group, double radius, double d) const;
+    StaticHit localHit(int group, double radius, double d, double size = 0.0) const;
 
     struct Clearance {         // a lower bound on every group's distance from `at`
         glm::dvec3 at{0.0};

@@ -22,6 +22,7 @@
 
 #include "marchbox/scene/scene.h"
 
+#include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
 #include <vector>
@@ -83,6 +84,14 @@ struct PhysicsBody {
     int object = -1;                           // index in Scene::objects; -1 for the static body
 };
 
+// A dynamic body of any shape but the sphere, turned by a unit quaternion (body to world).
+struct RigidState {
+    glm::dvec3 pos, vel, spin;  // m, m/s, rad/s (world)
+    glm::dquat orient;
+    bool awake;
+    int object;                 // index in Scene::objects
+};
+
 struct PhysicsStats {
     int contacts = 0;             // contact constraints in the last step (speculative included)
     int awake = 0;                // awake dynamic bodies
@@ -102,10 +111,12 @@ public:
     PhysicsWorld& operator=(const PhysicsWorld&) = delete;
 
     void step();                           // advance by one fixed step, settings().dt
-    void writeBack(Scene& scene) const;    // pos, vel, spin into the scene's dynamic objects
+    void writeBack(Scene& scene) const;    // pos, vel, spin (and orient) into the dynamic objects
 
     int bodyCount() const { return int(bodies_.size()) - 1; }            // dynamic spheres
     const PhysicsBody& body(int i) const { return bodies_[size_t(i)]; }  // in scene order
+    int rigidCount() const;                // dynamic bodies of the other shapes
+    RigidState rigid(int i) const;         // in scene order
     const PhysicsSettings& settings() const { return settings_; }
     const PhysicsStats& stats() const { return stats_; }
     double kineticEnergy() const;          // J, translation and rotation

@@ -89,7 +89,7 @@ struct Object {
     std::string comment{};      // `{}`: aggregates built without it stay warning-free
 
     // A dynamic object is moved by the simulator; everything else is a static collider.
-    bool dynamic() const { return type == ShapeType::Sphere && !isStatic && mass > 0.0f; }
+    bool dynamic() const { return !isStatic && mass > 0.0f; }
 };
 
 //-----------------------------------------------------------------------------

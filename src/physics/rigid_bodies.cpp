@@ -1,0 +1,734 @@
+// rigid_bodies.cpp — bodies of every shape but the sphere: their contacts, rows and motion.
+#include "rigid_bodies.h"
+
+#include "box_box.h"
+#include "island.h"
+#include "rigid_body.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_access.hpp>
+
+namespace mb {
+
+using glm::dmat3;
+using glm::dquat;
+using glm::dvec3;
+
+namespace {
+
+constexpr int kProbeStride = 64;  // StaticCollider ids per body: its probes, then its rims'
+constexpr int kMaxManifold = 4;
+constexpr int kSweeps = 16;       // of a manifold's normal rows in the relax pass (solve)
+constexpr int kBounceSweeps = 16; // ... and in restitute, where a face must bounce whole
+
+dquat orientationOf(const Object& o) {
+    return dquat(dmat3(rotationFromEuler(o.rot)));
+}
+
+// The shape alone, at the origin and unturned: the body's frame.
+SdfObject shapeOf(const Object& o) {
+    Object at = o;
+    at.pos = glm::vec3(0.0f);
+    at.rot = glm::vec3(0.0f);
+    at.op = CsgOp::Union;
+    at.blend = 0.0f;
+    return makeSdfObject(at);
+}
+
+dmat3 worldInverseInertia(const dquat& q, const dvec3& inertia) {
+    const dmat3 r = glm::mat3_cast(q);
+    return r * dmat3(1.0 / inertia.x, 0, 0, 0, 1.0 / inertia.y, 0, 0, 0, 1.0 / inertia.z) * glm::transpose(r);
+}
+
+// The body's signed distance at world point p, and its gradient (tetrahedral differences in
+// the body's frame, where the float SDF sees small numbers, turned back to world).
+struct ShapeSample {
+    double distance;
+    dvec3 normal;
+};
+
+ShapeSample sampleShape(const RigidBody& b, const dvec3& p) {
+    const dvec3 local = glm::conjugate(b.orient) * (p - b.pos);
+    const glm::vec3 l(local);
+    const float h = float(1e-3 * b.bound);
+    const glm::vec3 k[4] = {{1, -1, -1}, {-1, -1, 1}, {-1, 1, -1}, {1, 1, 1}};
+    dvec3 n(0.0);
+    for (const glm::vec3& c : k) n += dvec3(c) * double(sdObjectLocal(b.shape, l + c * h));
+    const double len = glm::length(n);
+    return {double(sdObjectLocal(b.shape, l)), b.orient * (len > 0.0 ? n / len : dvec3(0, 1, 0))};
+}
+
+dvec3 relativeVelocity(const RigidContact& c) {
+    const dvec3 vb = *c.b.vel + glm::cross(*c.b.spin, c.b.anchor);
+    return c.a.vel ? vb - *c.a.vel - glm::cross(*c.a.spin, c.a.anchor) : vb;
+}
+
+void applyImpulse(RigidContact& c, const dvec3& p) {
+    if (c.a.invMass > 0.0) {
+        *c.a.vel -= c.a.invMass * p;
+        *c.a.spin -= c.a.invInertia * glm::cross(c.a.anchor, p);
+    }
+    if (c.b.invMass > 0.0) {
+        *c.b.vel += c.b.invMass * p;
+        *c.b.spin += c.b.invInertia * glm::cross(c.b.anchor, p);
+    }
+}
+
+void applyAngular(RigidContact& c, const dvec3& l) {
+    if (c.a.invMass > 0.0) *c.a.spin -= c.a.invInertia * l;
+    if (c.b.invMass > 0.0) *c.b.spin += c.b.invInertia * l;
+}
+
+// 1 / K for an impulse along unit d at the contact: K = Σ 1/m + (I⁻¹(r×d))×r·d.
+double rowMass(const RigidContact& c, const dvec3& d) {
+    double k = c.a.invMass + c.b.invMass;
+    for (const ContactSide* s : {&c.a, &c.b}) {
+        if (s->invMass == 0.0) continue;
+        const dvec3 rd = glm::cross(s->anchor, d);
+        k += glm::dot(rd, s->invInertia * rd);
+    }
+    return k > 0.0 ? 1.0 / k : 0.0;
+}
+
+// How far the anchor moved since the step's start: the body's displacement and its turn.
+dvec3 anchorMove(const ContactSide& s) {
+    if (!s.delta) return dvec3(0.0);
+    const dvec3 turned = s.orient ? *s.orient * s.localAnchor + s.offset - s.anchor : dvec3(0.0);
+    return *s.delta + turned;
+}
+
+double separationNow(const RigidContact& c) {
+    return c.separation + glm::dot(c.normal, anchorMove(c.b) - anchorMove(c.a));
+}
+
+// Two unit tangents with the normal, from the normal alone, so a persisting contact keeps its
+// friction impulse's frame from step to step.
+void tangentsOf(RigidContact& c) {
+    const dvec3& n = c.normal;
+    const dvec3 other = std::abs(n.x) < 0.57 ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
+    c.tangent[0] = glm::normalize(glm::cross(other, n));
+    c.tangent[1] = glm::cross(n, c.tangent[0]);
+}
+
+// A manifold's friction, at its centre (c: the manifold's friction contact): Coulomb's disc
+// |λ_t| ≤ μ·Σλ_n, and the twist about the normal, |λ_w| ≤ μ·r·Σλ_n with r the points' mean
+// distance from the centre. Row by row at each point, the first point's friction would turn a
+// face that lands flat about its normal; at the centre, nothing but a twist can.
+void solveFriction(RigidContact& c, double normalImpulse) {
+    const double twist = glm::dot(c.normal, *c.b.spin - (c.a.spin ? *c.a.spin : dvec3(0.0)));
+    double w = c.twistImpulse - c.twistMass * twist;
+    const double twistLimit = c.friction * c.twistArm * normalImpulse;
+    w = std::clamp(w, -twistLimit, twistLimit);
+    applyAngular(c, (w - c.twistImpulse) * c.normal);
+    c.twistImpulse = w;
+    const dvec3 v = relativeVelocity(c);
+    double t0 = c.tangentImpulse[0] - c.tangentMass[0] * glm::dot(c.tangent[0], v);
+    double t1 = c.tangentImpulse[1] - c.tangentMass[1] * glm::dot(c.tangent[1], v);
+    const double limit = c.friction * normalImpulse, length = std::hypot(t0, t1);
+    if (length > limit) {
+        t0 *= limit / length;
+        t1 *= limit / length;
+    }
+    applyImpulse(c, (t0 - c.tangentImpulse[0]) * c.tangent[0] + (t1 - c.tangentImpulse[1]) * c.tangent[1]);
+    c.tangentImpulse[0] = t0;
+    c.tangentImpulse[1] = t1;
+}
+
+// A bounce: the normal speed the contact leaves with at the step's end, and how far past the
+// surface the body should be by then (0 where it touched from the step's start).
+struct Bounce {
+    double speed, rise;
+};
+
+Bounce bounceOf(const RigidContact& c, double accel, double dt) {
+    const double v0 = c.relativeVelocity, s0 = c.separation;
+    if (s0 <= 0.0) return {-c.restitution * v0, 0.0};
+    // The first root of s0 + v0·t + ½·a·t² = 0 (v0 < 0: approaching), written to avoid the
+    // cancellation of −v0 − √(v0² − 2·a·s0).
+    const double root = std::sqrt(std::max(0.0, v0 * v0 - 2.0 * accel * s0));
+    const double t = std::min(dt, 2.0 * s0 / (-v0 + root));
+    const double after = dt - t, out = -c.restitution * (v0 + accel * t);
+    return {out + accel * after, out * after + 0.5 * accel * after * after};
+}
+
+// Rolling resistance: an angular impulse against the relative spin across the normal (twist
+// about the normal is not rolling), |τ| ≤ rolling · r · λ_n with r the body's arm.
+void solveRolling(RigidContact& c) {
+    dvec3 w = *c.b.spin - (c.a.spin ? *c.a.spin : dvec3(0.0));
+    w -= glm::dot(w, c.normal) * c.normal;
+    const double len = glm::length(w);
+    if (len == 0.0) return;
+    const dvec3 axis = w / len;
+    double k = 0.0;
+    for (const ContactSide* s : {&c.a, &c.b})
+        if (s->invMass > 0.0) k += glm::dot(axis, s->invInertia * axis);
+    if (k == 0.0) return;
+    dvec3 total = c.rollImpulse - w / k;
+    const double limit = c.rolling * c.rollArm * c.normalImpulse, size = glm::length(total);
+    if (size > limit) total *= limit / size;
+    applyAngular(c, total - c.rollImpulse);
+    c.rollImpulse = total;
+}
+
+std::uint64_t pairKey(int a, int b) { return std::uint64_t(a + 1) << 40 | std::uint64_t(b + 1) << 16; }
+
+// Up to four of the candidates: the deepest, the one furthest from it, the one spanning the
+// largest triangle with those, and the one furthest from all three. Ties go to the first.
+template <class Candidate>
+void reduceManifold(std::vector<Candidate>& all) {
+    if (all.size() <= size_t(kMaxManifold)) return;
+    auto best = [&](auto score) {
+        size_t at = 0;
+        for (size_t i = 1; i < all.size(); ++i)
+            if (score(all[i]) > score(all[at])) at = i;
+        return all[at];
+    };
+    std::vector<Candidate> kept;
+    kept.push_back(best([](const Candidate& c) { return -c.separation; }));
+    const dvec3 p0 = kept[0].point;
+    kept.push_back(best([&](const Candidate& c) { return glm::length(c.point - p0); }));
+    const dvec3 p1 = kept[1].point;
+    kept.push_back(best([&](const Candidate& c) { return glm::length(glm::cross(p1 - p0, c.point - p0)); }));
+    const dvec3 p2 = kept[2].point;
+    kept.push_back(best([&](const Candidate& c) {
+        return std::min({glm::length(c.point - p0), glm::length(c.point - p1), glm::length(c.point - p2)});
+    }));
+    all = kept;
+}
+
+template <class Candidate>
+double lowest(const std::vector<Candidate>& all) {
+    double low = all.empty() ? 0.0 : all[0].point.y;
+    for (const Candidate& c : all) low = std::min(low, c.point.y);
+    return low;
+}
+
+}  // namespace
+
+RigidBodies::RigidBodies(const Scene& scene, const PhysicsSettings& settings)
+    : settings_(settings),
+      rolling_(scene.world.rolling),
+      worldFriction_(scene.world.friction),
+      worldRestitution_(scene.world.restitution),
+      dt_(settings.dt),
+      statics_(scene) {
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& o = scene.objects[i];
+        if (!o.dynamic() || o.type == ShapeType::Sphere) continue;
+        RigidBody b;
+        const MassProperties mp = massProperties(o);
+        b.pos = dvec3(o.pos);
+        b.vel = dvec3(o.vel);
+        b.spin = dvec3(o.spin);
+        b.orient = orientationOf(o);
+        b.invMass = 1.0 / mp.mass;
+        b.inertia = mp.inertia;
+        b.invInertia = worldInverseInertia(b.orient, b.inertia);
+        b.shape = shapeOf(o);
+        b.bound = double(b.shape.bound);
+        b.friction = worldFriction_;
+        b.restitution = worldRestitution_;
+        b.object = int(i);
+        b.probes = probesOf(o);
+        b.rims = rimsOf(o);
+        bodies_.push_back(std::move(b));
+    }
+}
+
+//-----------------------------------------------------------------------------
+// Contacts
+//-----------------------------------------------------------------------------
+
+ContactSide RigidBodies::sideOf(RigidBody& b, const dvec3& point, const dvec3& centre) {
+    ContactSide s;
+    s.rigid = &b;
+    s.vel = &b.vel;
+    s.spin = &b.spin;
+    s.delta = &b.delta;
+    s.orient = &b.orient;
+    s.supported = &b.supported;
+    s.invMass = b.awake ? b.invMass : 0.0;
+    s.invInertia = b.awake ? b.invInertia : dmat3(0.0);
+    s.anchor = point - b.pos;
+    s.localAnchor = glm::conjugate(b.orient) * (centre - b.pos);
+    s.offset = point - centre;
+    return s;
+}
+
+void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
+    contacts_.clear();
+    if (bodies_.empty()) return;  // a scene of spheres alone: nothing here to do
+    const int n = count(), m = int(spheres.size()) - 1;  // spheres end with the static body
+    centres_.resize(size_t(n + m));
+    extents_.resize(size_t(n + m));
+    margins_.resize(size_t(n));
+    touching_.assign(size_t(n), 0);
+    for (int i = 0; i < n; ++i) {
+        const RigidBody& b = bodies_[size_t(i)];
+        margins_[size_t(i)] = 4.0 * settings_.linearSlop + (glm::length(b.vel) + glm::length(b.spin) * b.bound) * dt_ +
+                              gravity * dt_ * dt_;
+        centres_[size_t(i)] = b.pos;
+        extents_[size_t(i)] = b.bound + margins_[size_t(i)];
+    }
+    for (int s = 0; s < m; ++s) {
+        const PhysicsBody& b = spheres[size_t(s)];
+        centres_[size_t(n + s)] = b.pos;
+        extents_[size_t(n + s)] = b.radius + 4.0 * settings_.linearSlop + glm::length(b.vel) * dt_ + gravity * dt_ * dt_;
+    }
+    for (int i = 0; i < n; ++i)
+        if (bodies_[size_t(i)].awake) collideStatics(i);
+    if (n + m > 1) broadphase_.findPairs(centres_, extents_, pairs_);
+    else pairs_.clear();
+    for (auto [i, j] : pairs_) {
+        if (i >= n) continue;  // sphere pairs are the sphere solver's
+        if (j < n) {
+            if (bodies_[size_t(i)].awake || bodies_[size_t(j)].awake) collidePair(i, j);
+        } else if (bodies_[size_t(i)].awake || spheres[size_t(j - n)].awake) {
+            collideSphere(i, spheres[size_t(j - n)], j - n);
+        }
+    }
+    wake(spheres);
+    std::sort(contacts_.begin(), contacts_.end(), [](const RigidContact& x, const RigidContact& y) {
+        return x.height < y.height || (x.height == y.height && x.key < y.key);
+    });
+    manifolds_.clear();
+    for (size_t i = 0; i < contacts_.size(); ++i) {
+        prepare(contacts_[i]);
+        if (i == 0 || (contacts_[i].key ^ contacts_[i - 1].key) >> 8 != 0) manifolds_.push_back({int(i), int(i), {}});
+        manifolds_.back().end = int(i) + 1;
+    }
+    for (Manifold& m : manifolds_) prepareFriction(m);
+}
+
+// One manifold per static surface the body's probes reach.
+void RigidBodies::collideStatics(int i) {
+    RigidBody& b = bodies_[size_t(i)];
+    std::vector<std::vector<Candidate>> byFeature;
+    probeStatics(i, byFeature);
+    ContactSide fixed;
+    for (size_t f = 0; f < byFeature.size(); ++f) {
+        if (byFeature[f].empty()) continue;
+        candidates_ = byFeature[f];
+        reduceManifold(candidates_);
+        const double low = lowest(candidates_);
+        for (const Candidate& c : candidates_) {
+            RigidContact k;
+            k.a = fixed;
+            k.b = sideOf(b, c.point, c.centre);
+            k.normal = c.normal;
+            k.separation = c.separation;
+            k.height = low;
+            k.key = pairKey(i, -1) | std::uint64_t(f) << 8 | std::uint64_t(c.probe);
+            k.friction = std::sqrt(b.friction * worldFriction_);
+            k.restitution = std::max(b.restitution, worldRestitution_);
+            contacts_.push_back(k);
+        }
+    }
+}
+
+void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFeature) {
+    const RigidBody& b = bodies_[size_t(i)];
+    const double reach = margins_[size_t(i)];
+    // A rim's support point turns about the rim's centre: that is its probe's centre.
+    auto add = [&](const StaticHit& hit, const dvec3& at, double radius, int probe, const dvec3& centre) {
+        if (size_t(hit.feature) >= byFeature.size()) byFeature.resize(size_t(hit.feature) + 1);
+        const dvec3 point = at - (radius + 0.5 * hit.separation) * hit.normal;
+        byFeature[size_t(hit.feature)].push_back({point, hit.normal, hit.separation, probe, centre, false});
+    };
+    for (size_t k = 0; k < b.probes.size(); ++k) {
+        const dvec3 c = b.pos + b.orient * b.probes[k].local;
+        statics_.query(i * kProbeStride + int(k), c, b.probes[k].radius, reach, hits_, b.bound);
+        for (const StaticHit& hit : hits_) add(hit, c, b.probes[k].radius, int(k), c);
+    }
+    const dvec3 axis = b.orient * dvec3(0, 1, 0);
+    for (size_t r = 0; r < b.rims.size(); ++r) {
+        const dvec3 c = b.pos + b.orient * b.rims[r].centre;
+        const int id = i * kProbeStride + int(b.probes.size() + 2 * r);
+        statics_.query(id, c, 0.0, b.rims[r].radius + reach, hits_, b.bound);
+        const std::vector<StaticHit> near = hits_;
+        for (const StaticHit& surface : near) {
+            const std::vector<dvec3> support = rimSupport(c, axis, b.rims[r].radius, surface.normal);
+            for (size_t k = 0; k < support.size(); ++k) {
+                statics_.query(id + 1, support[k], 0.0, reach, hits_, b.bound);
+                for (const StaticHit& hit : hits_)
+                    if (hit.feature == surface.feature)
+                        add(hit, support[k], 0.0, int(b.probes.size() + 4 * r + k), k == 0 && support.size() == 1 ? c : support[k]);
+            }
+        }
+    }
+}
+
+// The prober's probes against the shape's SDF; `flip` where the prober is the pair's a, so
+// every normal points from a to b. Keys: offset + probe.
+void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bool flip, int offset) {
+    const double reach = 4.0 * settings_.linearSlop +
+                         (glm::length(prober.vel - shape.vel) + glm::length(prober.spin) * prober.bound +
+                          glm::length(shape.spin) * shape.bound) * dt_;
+    auto probe = [&](const dvec3& at, double radius, int key, const dvec3& centre) {
+        const ShapeSample s = sampleShape(shape, at);
+        const double separation = s.distance - radius;
+        if (separation >= reach) return;
+        const dvec3 point = at - (radius + 0.5 * separation) * s.normal;
+        candidates_.push_back({point, flip ? -s.normal : s.normal, separation, offset + key, centre, flip});
+    };
+    for (size_t k = 0; k < prober.probes.size(); ++k) {
+        const dvec3 c = prober.pos + prober.orient * prober.probes[k].local;
+        probe(c, prober.probes[k].radius, int(k), c);
+    }
+    const dvec3 axis = prober.orient * dvec3(0, 1, 0);
+    for (size_t r = 0; r < prober.rims.size(); ++r) {
+        const dvec3 c = prober.pos + prober.orient * prober.rims[r].centre;
+        const std::vector<dvec3> support = rimSupport(c, axis, prober.rims[r].radius, sampleShape(shape, c).normal);
+        for (size_t k = 0; k < support.size(); ++k)
+            probe(support[k], 0.0, int(prober.probes.size() + 4 * r + k), support.size() == 1 ? c : support[k]);
+    }
+}
+
+// Boxes by their faces and edges (box_box.h); every other pair by probing both ways.
+void RigidBodies::collidePair(int i, int j) {
+    candidates_.clear();
+    const RigidBody &bi = bodies_[size_t(i)], &bj = bodies_[size_t(j)];
+    if (bi.shape.type == ShapeType::Box && bj.shape.type == ShapeType::Box) {
+        const double reach = 4.0 * settings_.linearSlop + (glm::length(bi.vel - bj.vel) +
+                             glm::length(bi.spin) * bi.bound + glm::length(bj.spin) * bj.bound) * dt_;
+        for (const BoxContact& c : collideBoxes({bi.pos, bi.orient, dvec3(bi.shape.size)},
+                                                {bj.pos, bj.orient, dvec3(bj.shape.size)}, reach))
+            candidates_.push_back({c.point, c.normal, c.separation, c.feature, c.point, false});
+    } else {
+        probeShape(bj, bi, false, 0);
+        probeShape(bi, bj, true, 128);
+    }
+    reduceManifold(candidates_);
+    const double low = lowest(candidates_);
+    RigidBody &a = bodies_[size_t(i)], &b = bodies_[size_t(j)];
+    for (const Candidate& c : candidates_) {
+        RigidContact k;
+        k.a = sideOf(a, c.point, c.proberIsA ? c.centre : c.point);
+        k.b = sideOf(b, c.point, c.proberIsA ? c.point : c.centre);
+        k.normal = c.normal;
+        k.separation = c.separation;
+        k.height = low;
+        k.key = pairKey(i, j) | std::uint64_t(c.probe);
+        k.friction = std::sqrt(a.friction * b.friction);
+        k.restitution = std::max(a.restitution, b.restitution);
+        contacts_.push_back(k);
+        touching_[size_t(i)] |= b.awake && glm::length(b.vel) > settings_.sleepSpeed;
+        touching_[size_t(j)] |= a.awake && glm::length(a.vel) > settings_.sleepSpeed;
+    }
+}
+
+// The sphere's centre against the body's SDF: one exact contact, as a sphere meets any SDF.
+// The body's own probes against the sphere are left out: the sphere's distance is exact.
+void RigidBodies::collideSphere(int i, PhysicsBody& sphere, int sphereIndex) {
+    RigidBody& b = bodies_[size_t(i)];
+    const ShapeSample s = sampleShape(b, sphere.pos);
+    const double separation = s.distance - sphere.radius;
+    const double reach = 4.0 * settings_.linearSlop + glm::length(sphere.vel - b.vel) * dt_ +
+                         glm::length(b.spin) * b.bound * dt_;
+    if (separation >= reach) return;
+    const dvec3 point = sphere.pos - (sphere.radius + 0.5 * separation) * s.normal;
+    RigidContact k;
+    k.a = sideOf(b, point, point);
+    k.b.vel = &sphere.vel;
+    k.b.spin = &sphere.spin;
+    k.b.delta = &sphere.delta;
+    k.b.supported = &sphere.supported;
+    k.b.invMass = sphere.awake ? sphere.invMass : 0.0;
+    k.b.invInertia = dmat3(sphere.awake ? sphere.invInertia : 0.0);
+    k.b.anchor = point - sphere.pos;
+    k.normal = s.normal;
+    k.separation = separation;
+    k.height = point.y;
+    k.key = pairKey(i, count() + sphereIndex);
+    k.friction = std::sqrt(b.friction * worldFriction_);
+    k.restitution = std::max(b.restitution, worldRestitution_);
+    contacts_.push_back(k);
+    if (!sphere.awake && b.awake && glm::length(b.vel) > settings_.sleepSpeed) touching_[size_t(i)] |= 2;
+    if (sphere.awake && glm::length(sphere.vel) > settings_.sleepSpeed) touching_[size_t(i)] |= 1;
+}
+
+// A sleeping body that a moving one touches wakes: a rigid body at once (its rows were made
+// with it fixed, so they are made again next step), a sphere with its island.
+void RigidBodies::wake(std::vector<PhysicsBody>& spheres) {
+    std::vector<int> islands;
+    for (const RigidContact& c : contacts_) {
+        const int second = int(c.key >> 16 & 0xffffff) - 1;
+        if (second < count()) continue;
+        const int first = int(c.key >> 40) - 1;
+        PhysicsBody& sphere = spheres[size_t(second - count())];
+        if (!sphere.awake && (touching_[size_t(first)] & 2)) islands.push_back(sphere.island);
+    }
+    wakeIslands(spheres, islands);
+    for (size_t i = 0; i < bodies_.size(); ++i)
+        if (!bodies_[i].awake && (touching_[i] & 1)) {
+            bodies_[i].awake = true;
+            bodies_[i].sleepTime = 0.0;
+        }
+}
+
+void RigidBodies::prepare(RigidContact& c) {
+    tangentsOf(c);
+    c.normalMass = rowMass(c, c.normal);
+    c.tangentMass[0] = rowMass(c, c.tangent[0]);
+    c.tangentMass[1] = rowMass(c, c.tangent[1]);
+    c.rolling = rolling_;
+    c.rollArm = glm::length(c.b.anchor);
+    c.slop = 0.1 * settings_.linearSlop;
+    c.relativeVelocity = glm::dot(c.normal, relativeVelocity(c));
+    auto warm = std::lower_bound(kept_.begin(), kept_.end(), c.key,
+                                 [](const auto& k, std::uint64_t key) { return k.first < key; });
+    if (warm == kept_.end() || warm->first != c.key) return;
+    c.normalImpulse = warm->second.normalImpulse;
+    c.tangentImpulse[0] = warm->second.tangentImpulse[0];
+    c.tangentImpulse[1] = warm->second.tangentImpulse[1];
+    c.rollImpulse = warm->second.rollImpulse;
+    c.twistImpulse = warm->second.twistImpulse;
+}
+
+// The manifold's friction contact: its first point's, moved to the points' centre.
+void RigidBodies::prepareFriction(Manifold& m) {
+    RigidContact& f = m.friction;
+    f = contacts_[size_t(m.begin)];
+    f.key |= 0xff;
+    const int count = m.end - m.begin;
+    dvec3 a(0.0), b(0.0);
+    for (int i = m.begin; i < m.end; ++i) {
+        a += contacts_[size_t(i)].a.anchor;
+        b += contacts_[size_t(i)].b.anchor;
+    }
+    f.a.anchor = a / double(count);
+    f.b.anchor = b / double(count);
+    f.twistArm = 0.0;
+    for (int i = m.begin; i < m.end; ++i) f.twistArm += glm::length(contacts_[size_t(i)].b.anchor - f.b.anchor) / count;
+    double k = 0.0;
+    for (const ContactSide* s : {&f.a, &f.b})
+        if (s->invMass > 0.0) k += glm::dot(f.normal, s->invInertia * f.normal);
+    f.twistMass = k > 0.0 ? 1.0 / k : 0.0;
+    prepare(f);
+}
+
+//-----------------------------------------------------------------------------
+// Rows
+//-----------------------------------------------------------------------------
+
+void RigidBodies::warmStart() {
+    for (RigidContact& c : contacts_) {
+        applyImpulse(c, c.normalImpulse * c.normal);
+        applyAngular(c, c.rollImpulse);
+    }
+    for (Manifold& m : manifolds_) {
+        RigidContact& f = m.friction;
+        applyImpulse(f, f.tangentImpulse[0] * f.tangent[0] + f.tangentImpulse[1] * f.tangent[1]);
+        applyAngular(f, f.twistImpulse * f.normal);
+    }
+}
+
+// The normal row: speculative where apart (close the gap in this substep, no more), a soft
+// push-out beyond the slop in the solve pass, rigid in the relax pass.
+void RigidBodies::solveNormal(RigidContact& c, const Softness& soft, double h, bool useBias) {
+    const double s = separationNow(c);
+    double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
+    if (s > 0.0) {
+        bias = s / h;
+    } else if (useBias) {
+        bias = std::max(soft.biasRate * std::min(0.0, s + c.slop), -settings_.maxPushSpeed);
+        massScale = soft.massScale;
+        impulseScale = soft.impulseScale;
+    }
+    const double vn = glm::dot(c.normal, relativeVelocity(c));
+    const double impulse = -c.normalMass * massScale * (vn + bias) - impulseScale * c.normalImpulse;
+    const double total = std::max(c.normalImpulse + impulse, 0.0);
+    applyImpulse(c, (total - c.normalImpulse) * c.normal);
+    c.normalImpulse = total;
+    c.maxNormalImpulse = std::max(c.maxNormalImpulse, total);
+    if (useBias && total > 0.0) {
+        if (c.a.supported) *c.a.supported = true;
+        *c.b.supported = true;
+    }
+}
+
+// The relax pass sweeps a manifold's rows kSweeps times: the points of a face share one body,
+// and one sweep in a fixed order leaves the first point pushing hardest, which turns a box
+// dropped flat. Each sweep brings the velocities closer to the one answer that stops every
+// point alike (the impulses may differ; the motion they give does not). The solve pass sweeps
+// once: its soft rows are made for one sweep, and more would soften them again each time.
+void RigidBodies::solve(const Softness& soft, double h, bool useBias) {
+    const int sweeps = useBias ? 1 : kSweeps;
+    for (Manifold& m : manifolds_)
+        for (int sweep = 0; sweep < sweeps; ++sweep) {
+            for (int i = m.begin; i < m.end; ++i) solveNormal(contacts_[size_t(i)], soft, h, useBias);
+            double pushed = 0.0;
+            for (int i = m.begin; i < m.end; ++i) {
+                pushed += contacts_[size_t(i)].normalImpulse;
+                if (contacts_[size_t(i)].rolling > 0.0) solveRolling(contacts_[size_t(i)]);
+            }
+            solveFriction(m.friction, pushed);
+        }
+}
+
+// After the substeps, approaching contacts that touched bounce: the normal velocity set to
+// −e times the approach speed (Box2D's relax-then-restitution), swept as the relax pass is so
+// a face bounces whole. A contact that was open when the step began met its surface within
+// the step, at t* where s0 + v0·t + ½·a·t² = 0 (a: gravity along the normal, for a body on a
+// static surface): it bounces with −e·(v0 + a·t*) and flies the rest of the step, so the body
+// ends where the bounce at t* takes it, not where the step's speculative row held it.
+void RigidBodies::restitute(double threshold, double gravity) {
+    for (Manifold& m : manifolds_) {
+        const double accel = m.friction.a.vel ? 0.0 : -gravity * m.friction.normal.y;
+        if (heldEarly(m, accel)) {
+            undo(m);
+            continue;
+        }
+        double rise = 1e300;
+        for (int sweep = 0; sweep < kBounceSweeps; ++sweep)
+            for (int i = m.begin; i < m.end; ++i) {
+                RigidContact& c = contacts_[size_t(i)];
+                if (c.relativeVelocity > -threshold || c.maxNormalImpulse == 0.0 || c.restitution == 0.0)
+                    continue;
+                const Bounce b = bounceOf(c, accel, dt_);
+                rise = std::min(rise, b.rise);
+                const double vn = glm::dot(c.normal, relativeVelocity(c));
+                const double impulse = -c.normalMass * (vn - b.speed);
+                const double total = std::max(c.normalImpulse + impulse, 0.0);
+                applyImpulse(c, (total - c.normalImpulse) * c.normal);
+                c.normalImpulse = total;
+            }
+        const RigidContact& c = contacts_[size_t(m.begin)];
+        if (rise > 0.0 && rise < 1e300 && !c.a.vel && c.b.rigid) c.b.rigid->pos += rise * c.normal;
+    }
+}
+
+// Speculative rows look a substep ahead, so the last relax pass can stop a body short of a
+// surface it would only have reached next step: every point that pushed began the step apart
+// and would not have closed its gap in free flight by the step's end.
+bool RigidBodies::heldEarly(const Manifold& m, double accel) const {
+    bool pushed = false;
+    for (int i = m.begin; i < m.end; ++i) {
+        const RigidContact& c = contacts_[size_t(i)];
+        if (c.maxNormalImpulse == 0.0) continue;
+        const double v0 = c.relativeVelocity, s0 = c.separation;
+        if (s0 <= 0.0 || s0 + v0 * dt_ + 0.5 * accel * dt_ * dt_ <= 0.0) return false;
+        pushed = true;
+    }
+    return pushed;
+}
+
+// Takes back everything the manifold's rows applied this substep: free flight goes on.
+void RigidBodies::undo(Manifold& m) {
+    for (int i = m.begin; i < m.end; ++i) {
+        RigidContact& c = contacts_[size_t(i)];
+        applyImpulse(c, -c.normalImpulse * c.normal);
+        applyAngular(c, -c.rollImpulse);
+        c.normalImpulse = 0.0;
+        c.rollImpulse = dvec3(0.0);
+    }
+    RigidContact& f = m.friction;
+    applyImpulse(f, -(f.tangentImpulse[0] * f.tangent[0] + f.tangentImpulse[1] * f.tangent[1]));
+    applyAngular(f, -f.twistImpulse * f.normal);
+    f.tangentImpulse[0] = f.tangentImpulse[1] = f.twistImpulse = 0.0;
+}
+
+//-----------------------------------------------------------------------------
+// Motion
+//-----------------------------------------------------------------------------
+
+void RigidBodies::integrateVelocities(double h, double gravity) {
+    for (RigidBody& b : bodies_) {
+        if (!b.awake) continue;
+        b.vel.y -= gravity * h;
+        const double speed = glm::length(b.vel);
+        if (speed > settings_.maxSpeed) b.vel *= settings_.maxSpeed / speed;
+    }
+}
+
+// As the spheres: x += v·h, with gravity's ½·g·h² where no contact pushed (exact free flight).
+// The turn is the free body's (rotateFree): the contacts' torques came in as spin already.
+void RigidBodies::integratePositions(double h, double gravity) {
+    const bool exact = settings_.integrator == Integrator::ExactGravity;
+    for (RigidBody& b : bodies_) {
+        if (!b.awake) continue;
+        dvec3 dx = b.vel * h;
+        if (exact && !b.supported) dx.y += 0.5 * gravity * h * h;  // v·h after v -= g·h, plus ½·g·h²
+        b.pos += dx;
+        b.delta += dx;
+        rotateFree(b.orient, b.spin, b.inertia, h);
+        b.invInertia = worldInverseInertia(b.orient, b.inertia);
+        b.supported = false;
+    }
+}
+
+void RigidBodies::finishStep() {
+    kept_.clear();
+    for (const RigidContact& c : contacts_) kept_.emplace_back(c.key, c);
+    for (const Manifold& m : manifolds_) kept_.emplace_back(m.friction.key, m.friction);
+    std::sort(kept_.begin(), kept_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (RigidBody& b : bodies_) b.delta = dvec3(0.0);
+    updateSleep();
+}
+
+// Bodies touching one another sleep together, once every one of them has been slow for
+// timeToSleep and nothing moving touches them (union-find over this step's contacts).
+void RigidBodies::updateSleep() {
+    if (!settings_.sleep) return;
+    const int n = count();
+    std::vector<int> root(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) root[size_t(i)] = i;
+    auto find = [&](int i) {
+        while (root[size_t(i)] != i) i = root[size_t(i)] = root[size_t(root[size_t(i)])];
+        return i;
+    };
+    for (const RigidContact& c : contacts_) {
+        const int first = int(c.key >> 40) - 1, second = int(c.key >> 16 & 0xffffff) - 1;
+        if (first >= 0 && second >= 0 && second < n) root[size_t(find(first))] = find(second);
+    }
+    std::vector<char> ready(size_t(n), 1);
+    for (int i = 0; i < n; ++i) {
+        RigidBody& b = bodies_[size_t(i)];
+        const bool slow = glm::length(b.vel) < settings_.sleepSpeed &&
+                          glm::length(b.spin) * b.bound < settings_.sleepSpeed;
+        b.sleepTime = slow && b.awake ? b.sleepTime + dt_ : 0.0;
+        if (b.awake && (b.sleepTime < settings_.timeToSleep || touching_[size_t(i)] != 0))
+            ready[size_t(find(i))] = 0;
+    }
+    for (int i = 0; i < n; ++i) {
+        RigidBody& b = bodies_[size_t(i)];
+        if (!b.awake || !ready[size_t(find(i))]) continue;
+        b.awake = false;
+        b.vel = b.spin = dvec3(0.0);
+    }
+}
+
+void RigidBodies::writeBack(Scene& scene) const {
+    for (const RigidBody& b : bodies_) {
+        Object& o = scene.objects[size_t(b.object)];
+        o.pos = glm::vec3(b.pos);
+        o.vel = glm::vec3(b.vel);
+        o.spin = glm::vec3(b.spin);
+        // o.orient = glm::quat(b.orient);  TODO after format merge
+    }
+}
+
+double RigidBodies::kineticEnergy() const {
+    double e = 0.0;
+    for (const RigidBody& b : bodies_) {
+        const dvec3 local = glm::conjugate(b.orient) * b.spin;
+        e += 0.5 * glm::dot(b.vel, b.vel) / b.invMass + 0.5 * glm::dot(local * b.inertia, local);
+    }
+    return e;
+}
+
+double RigidBodies::potentialEnergy(double gravity) const {
+    double e = 0.0;
+    for (const RigidBody& b : bodies_) e += gravity * b.pos.y / b.invMass;
+    return e;
+}
+
+double RigidBodies::deepestOverlap() const {
+    double deepest = 0.0;
+    for (const RigidContact& c : contacts_) deepest = std::max(deepest, -c.separation);
+    return deepest;
+}
+
+}  // namespace mb

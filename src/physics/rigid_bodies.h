@@ -1,0 +1,151 @@
+// rigid_bodies.h — the dynamic bodies that are not spheres: boxes, capsules, cylinders and tori,
+// turned by unit quaternions, touching through manifolds found on their SDFs.
+//
+// A body's probes (rigid_probes.h) are tested against the SDF of whatever it may touch: the
+// static scene and the ground, another body (both ways: each one's probes against the other's
+// shape), or a sphere. Each pair keeps at most four of its points, the deepest and then those
+// that span the largest area, so a box rests flat on four corners; points keep their probe's
+// key across steps and start from last step's impulses.
+//
+// The rows are solved with the spheres' soft step (Box2D v3) in the same substeps: the normal
+// row soft with bias in the solve pass and rigid in the relax pass, Coulomb friction on the
+// tangent plane (a disc: |λ_t| ≤ μ·λ_n), rolling resistance (|τ| ≤ rolling · r · λ_n), and
+// restitution after the substeps. Spheres touching a body take part through their own
+// PhysicsBody. Between substeps a body's orientation turns by the free rigid body's exact
+// sub-flows (rotateFree), which keep its angular momentum and energy.
+#pragma once
+
+#include "broadphase.h"
+#include "contact_solver.h"
+#include "rigid_probes.h"
+#include "static_collider.h"
+
+#include "marchbox/physics/physics.h"
+#include "marchbox/scene/sdf.h"
+
+#include <cstdint>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
+#include <vector>
+
+namespace mb {
+
+struct RigidBody {
+    glm::dvec3 pos{0.0}, vel{0.0}, spin{0.0};  // m, m/s, rad/s (world)
+    glm::dquat orient{1.0, 0.0, 0.0, 0.0};     // body to world
+    glm::dvec3 delta{0.0};                     // displacement during the current step
+    double invMass = 0.0;
+    glm::dvec3 inertia{0.0};                   // principal moments about the local axes
+    glm::dmat3 invInertia{0.0};                // world, for the orientation now
+    double bound = 0.0;                        // radius about pos that holds the shape
+    double friction = 0.0, restitution = 0.0;  // the body's own, or the world's
+    double sleepTime = 0.0;
+    bool awake = true;
+    bool supported = false;                    // a contact pushed it this substep
+    int object = -1;                           // index in Scene::objects
+    SdfObject shape;                           // at the origin, unturned
+    std::vector<Probe> probes;
+    std::vector<Rim> rims;
+};
+
+// What a contact's impulses move on one side: a rigid body, a sphere, or nothing (static).
+struct ContactSide {
+    RigidBody* rigid = nullptr;            // where the side is a rigid body
+    glm::dvec3* vel = nullptr;
+    glm::dvec3* spin = nullptr;
+    const glm::dvec3* delta = nullptr;     // displacement this step
+    const glm::dquat* orient = nullptr;    // null where the anchor does not turn with the body
+    bool* supported = nullptr;
+    double invMass = 0.0;
+    glm::dmat3 invInertia{0.0};
+    glm::dvec3 anchor{0.0};                // contact point − centre, world, at the step's start
+    // Where the anchor goes as the body turns: a point of the body (localAnchor, its frame) and
+    // an offset that stays put in the world. A corner turns with the body (offset 0); a round
+    // surface's contact stays below its centre, the probe's, which turns (offset −ρ·normal).
+    glm::dvec3 localAnchor{0.0};
+    glm::dvec3 offset{0.0};
+};
+
+struct RigidContact {
+    ContactSide a, b;                      // the normal points from a to b
+    std::uint64_t key = 0;                 // the pair and the probe, for warm starting
+    glm::dvec3 normal{0.0, 1.0, 0.0};
+    glm::dvec3 tangent[2];
+    double separation = 0.0;               // at the step's start; < 0 overlaps
+    double height = 0.0;                   // of its manifold's lowest point: solved bottom-up
+    double friction = 0.0, restitution = 0.0, rolling = 0.0, rollArm = 0.0, slop = 0.0;
+    double normalMass = 0.0, tangentMass[2] = {0.0, 0.0};
+    double normalImpulse = 0.0, maxNormalImpulse = 0.0;
+    double tangentImpulse[2] = {0.0, 0.0};  // a manifold's friction only, as the twist
+    glm::dvec3 rollImpulse{0.0};
+    double twistImpulse = 0.0, twistMass = 0.0, twistArm = 0.0;  // a manifold's friction only
+    double relativeVelocity = 0.0;         // normal, at the step's start, for restitution
+};
+
+class RigidBodies {
+public:
+    RigidBodies(const Scene& scene, const PhysicsSettings& settings);
+
+    int count() const { return int(bodies_.size()); }
+    const RigidBody& body(int i) const { return bodies_[size_t(i)]; }
+    int contactCount() const { return int(contacts_.size()); }
+
+    // This step's contacts against the statics, each other and the spheres (waking those hit).
+    void collide(std::vector<PhysicsBody>& spheres, double gravity);
+    void integrateVelocities(double h, double gravity);
+    void warmStart();
+    void solve(const Softness& soft, double h, bool useBias);  // useBias false: the relax pass
+    void integratePositions(double h, double gravity);
+    void restitute(double threshold, double gravity);
+    void finishStep();                                 // keeps the impulses; sleep
+    void writeBack(Scene& scene) const;                // pos, orient, vel, spin
+    double kineticEnergy() const;
+    double potentialEnergy(double gravity) const;
+    double deepestOverlap() const;                     // m, at the last step's start
+
+private:
+    struct Candidate {
+        glm::dvec3 point, normal;  // normal from a to b
+        double separation;
+        int probe;                 // key within the pair
+        glm::dvec3 centre;         // of the probe, which belongs to b, or to a where proberIsA
+        bool proberIsA;
+    };
+    void collideStatics(int i);
+    void collidePair(int i, int j);
+    void collideSphere(int i, PhysicsBody& sphere, int sphereIndex);
+    void probeStatics(int i, std::vector<std::vector<Candidate>>& byFeature);
+    void probeShape(const RigidBody& prober, const RigidBody& shape, bool flip, int offset);
+    void addManifold(const ContactSide& a, const ContactSide& b, std::uint64_t pairKey,
+                     double friction, double restitution);
+    // `centre`: the probe's, where b holds it; else the point itself, a point of b's surface.
+    ContactSide sideOf(RigidBody& b, const glm::dvec3& point, const glm::dvec3& centre);
+    void prepare(RigidContact& c);
+    void solveNormal(RigidContact& c, const Softness& soft, double h, bool useBias);
+    void wake(std::vector<PhysicsBody>& spheres);
+    void updateSleep();
+
+    const PhysicsSettings& settings_;
+    double rolling_, worldFriction_, worldRestitution_, dt_;
+    std::vector<RigidBody> bodies_;
+    StaticCollider statics_;
+    Broadphase broadphase_;
+    std::vector<RigidContact> contacts_;  // each manifold's points together, bottom-up
+    struct Manifold {
+        int begin, end;         // in contacts_
+        RigidContact friction;  // the points' friction, at their centre
+    };
+    void prepareFriction(Manifold& m);
+    bool heldEarly(const Manifold& m, double accel) const;
+    void undo(Manifold& m);
+    std::vector<Manifold> manifolds_;
+    std::vector<Candidate> candidates_;
+    std::vector<std::pair<std::uint64_t, RigidContact>> kept_;  // last step's, by key
+    std::vector<glm::dvec3> centres_;
+    std::vector<double> extents_, margins_;
+    std::vector<std::pair<int, int>> pairs_;
+    std::vector<StaticHit> hits_;
+    std::vector<int> touching_;  // per body: an awake mover touched it this step
+};
+
+}  // namespace mb

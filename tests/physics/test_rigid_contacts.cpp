@@ -1,0 +1,177 @@
+// test_rigid_contacts.cpp — bodies of every shape against the ground, slopes and each other,
+// against closed forms.
+#include "marchbox/physics/physics.h"
+#include "marchbox/report/physics_scenes.h"
+#include "physics_test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace mb;
+using glm::dvec3;
+
+namespace {
+
+void run(PhysicsWorld& w, double seconds) {
+    for (int i = 0; i < stepsFor(seconds, w.settings()); ++i) w.step();
+}
+
+Object dynamicShape(ShapeType type, glm::vec3 pos, float mass) {
+    Object o;
+    o.type = type;
+    o.pos = pos;
+    o.mass = mass;
+    return o;
+}
+
+Object dynamicBox(glm::vec3 pos, glm::vec3 half, float mass = 1.0f) {
+    Object o = dynamicShape(ShapeType::Box, pos, mass);
+    o.size = half;
+    return o;
+}
+
+// A plank tilted θ about z (no ground) and a body at rest on it, turned with it, 3 m up the
+// slope from its middle; returns the distance it moved along the slope in `seconds`.
+Scene slopeScene(float degrees, float friction, Object body) {
+    Scene s = physicsWorld(9.81f, 0.0f, friction, false);
+    s.world.rolling = 0.0f;
+    Object plank;
+    plank.type = ShapeType::Box;
+    plank.isStatic = true;
+    plank.size = {20.0f, 0.5f, 2.0f};
+    plank.rot = {0.0f, 0.0f, degrees};
+    s.objects.push_back(plank);
+    const double t = double(degrees) * M_PI / 180.0;
+    const dvec3 along(std::cos(t), std::sin(t), 0.0), up(-std::sin(t), std::cos(t), 0.0);
+    const double lift = 0.5 + (body.type == ShapeType::Box ? double(body.size.y) : double(body.radius));
+    body.pos = glm::vec3(3.0 * along + lift * up);
+    if (body.type == ShapeType::Box) body.rot = {0.0f, 0.0f, degrees};
+    s.objects.push_back(body);
+    return s;
+}
+
+double slid(PhysicsWorld& w, double seconds, float degrees) {
+    const double t = double(degrees) * M_PI / 180.0;
+    const dvec3 along(std::cos(t), std::sin(t), 0.0);
+    const dvec3 start = w.rigid(0).pos;
+    run(w, seconds);
+    return glm::dot(w.rigid(0).pos - start, along);
+}
+
+}  // namespace
+
+// μ > tan θ: static friction holds the box (Coulomb's cone), to within 1 mm over 5 s.
+TEST(RigidContacts, BoxHoldsOnASlopeSteeperFrictionThanItsTangent) {
+    PhysicsWorld w(slopeScene(20.0f, 0.5f, dynamicBox({}, {0.2f, 0.1f, 0.15f})));
+    EXPECT_LT(std::abs(slid(w, 5.0, 20.0f)), 1e-3);
+}
+
+// μ < tan θ: the box slides with a = g·(sin θ − μ·cos θ); from rest, s = ½·a·t², within 1 %.
+TEST(RigidContacts, BoxSlidesDownASlopeAtTheCoulombAcceleration) {
+    const float degrees = 30.0f, mu = 0.3f;
+    PhysicsWorld w(slopeScene(degrees, mu, dynamicBox({}, {0.2f, 0.1f, 0.15f})));
+    const double t = 1.0, theta = double(degrees) * M_PI / 180.0;
+    const double a = 9.81 * (std::sin(theta) - double(mu) * std::cos(theta));
+    const double s = slid(w, t, degrees);
+    EXPECT_NEAR(-s, 0.5 * a * t * t, 0.01 * 0.5 * a * t * t) << "a = " << -2.0 * s / (t * t) << ", not " << a;
+}
+
+// A solid cylinder rolling without slipping: a = ⅔·g·sin θ (I = ½·m·r²); a capsule rolls with
+// a = g·sin θ / (1 + I/(m·r²)), its I about the axis from the closed form. Within 1 %.
+class RigidRolling : public ::testing::TestWithParam<ShapeType> {};
+
+TEST_P(RigidRolling, RollsDownASlopeAtItsClosedFormAcceleration) {
+    const float degrees = 10.0f;
+    Object body = dynamicShape(GetParam(), {}, 1.0f);
+    body.radius = 0.2f;
+    body.height = 0.6f;
+    body.rot = {90.0f, 0.0f, 0.0f};  // its axis along z, across the slope
+    PhysicsWorld w(slopeScene(degrees, 0.8f, body));
+    const double r = 0.2, h = 0.6, theta = double(degrees) * M_PI / 180.0;
+    double ratio = 0.5;  // I / (m·r²) of the solid cylinder
+    if (GetParam() == ShapeType::Capsule) {
+        const double vc = M_PI * r * r * h, vs = 4.0 / 3.0 * M_PI * r * r * r;
+        ratio = (vc / (vc + vs)) * 0.5 + (vs / (vc + vs)) * 0.4;
+    }
+    const double a = 9.81 * std::sin(theta) / (1.0 + ratio), t = 1.0;
+    const double s = slid(w, t, degrees);
+    EXPECT_NEAR(-s, 0.5 * a * t * t, 0.01 * 0.5 * a * t * t) << "a = " << -2.0 * s / (t * t) << ", not " << a;
+}
+
+INSTANTIATE_TEST_SUITE_P(CylinderAndCapsule, RigidRolling,
+                         ::testing::Values(ShapeType::Cylinder, ShapeType::Capsule));
+
+// Dropped flat from 1 m with e = 0.5, a box first rises to e²·h above where it landed, within
+// 1 mm, and picks up no spin (< 1e-6 rad/s): its four corners bounce as one face.
+TEST(RigidContacts, BoxDroppedFlatBouncesStraight) {
+    Scene s = physicsWorld(9.81f, 0.5f, 0.5f, true);
+    s.objects.push_back(dynamicBox({0, 1.25f, 0}, {0.25f, 0.25f, 0.25f}));
+    PhysicsWorld w(s);
+    double apex = 0.0, spin = 0.0;
+    bool rising = false;
+    for (int i = 0; i < stepsFor(1.0, w.settings()); ++i) {  // to just past the first apex
+        w.step();
+        const RigidState b = w.rigid(0);
+        spin = std::max(spin, glm::length(b.spin));
+        rising |= b.vel.y > 0.0;
+        if (rising) apex = std::max(apex, b.pos.y - 0.25);
+        if (rising && b.vel.y < 0.0) break;
+    }
+    std::printf("flat drop: apex %.4f m (e²·h 0.25), spin %.3g rad/s\n", apex, spin);
+    EXPECT_NEAR(apex, 0.25, 1e-3);
+    EXPECT_LT(spin, 1e-6);
+}
+
+// Ten unit boxes stacked: the top moves less than 1 cm in 60 s.
+TEST(RigidContacts, TenBoxStackStands) {
+    Scene s = physicsWorld(9.81f, 0.3f, 0.6f, true);
+    for (int k = 0; k < 10; ++k) s.objects.push_back(dynamicBox({0, 0.5f + float(k), 0}, {0.5f, 0.5f, 0.5f}));
+    PhysicsWorld w(s);
+    const dvec3 top = w.rigid(9).pos;
+    run(w, 60.0);
+    std::printf("stack: top moved %.4g m, %d awake\n", glm::length(w.rigid(9).pos - top), w.stats().awake);
+    EXPECT_LT(glm::length(w.rigid(9).pos - top), 0.01);
+}
+
+// A torus (ring 0.3, tube 0.05) dropped tilted over an upright capsule peg (radius 0.1) settles
+// around it: its centre on the peg's axis within the hole's play, lying flat on its tube.
+TEST(RigidContacts, TorusDroppedOverAPegSettlesAroundIt) {
+    Scene s = physicsWorld(9.81f, 0.2f, 0.5f, true);
+    Object peg;
+    peg.type = ShapeType::Capsule;
+    peg.isStatic = true;
+    peg.pos = {0, 0.6f, 0};
+    peg.radius = 0.1f;
+    peg.height = 1.0f;
+    s.objects.push_back(peg);
+    Object ring = dynamicShape(ShapeType::Torus, {0.05f, 1.5f, 0}, 1.0f);
+    ring.radius = 0.3f;
+    ring.minor = 0.05f;
+    ring.rot = {10.0f, 0.0f, 0.0f};
+    s.objects.push_back(ring);
+    PhysicsWorld w(s);
+    run(w, 4.0);
+    const RigidState b = w.rigid(0);
+    EXPECT_LT(std::hypot(b.pos.x, b.pos.z), 0.3 - 0.05 - 0.1 + 0.01) << "not around the peg";
+    EXPECT_NEAR(b.pos.y, 0.05, 0.005) << "not lying on the ground on its tube";
+}
+
+// A box 5 cm thick thrown at 50 m/s against a wall 10 cm thick does not pass through it:
+// 42 cm a step, more than both together; its speculative contacts stop it at the face.
+TEST(RigidContacts, ThinFastBoxDoesNotPassThroughAWall) {
+    Scene s = physicsWorld(0.0f, 0.0f, 0.3f, false);
+    Object wall;
+    wall.type = ShapeType::Box;
+    wall.isStatic = true;
+    wall.pos = {2.0f, 0, 0};
+    wall.size = {0.05f, 2.0f, 2.0f};
+    s.objects.push_back(wall);
+    Object thin = dynamicBox({0, 0, 0}, {0.025f, 0.3f, 0.3f});
+    thin.vel = {50.0f, 0, 0};
+    s.objects.push_back(thin);
+    PhysicsWorld w(s);
+    run(w, 0.5);
+    EXPECT_LT(w.rigid(0).pos.x, 2.0 - 0.05) << "passed into or through the wall";
+}
