@@ -74,7 +74,9 @@ static void shapeFields(Object& o, FieldEdit& e) {
     if (o.type == ShapeType::Torus) fieldFloat("minor", Field::Minor, &o.minor, e);
     if (o.type == ShapeType::Capsule || o.type == ShapeType::Cylinder)
         fieldFloat("height", Field::Height, &o.height, e);
+    const glm::vec3 rot = o.rot;
     fieldVec3("rot", Field::Rotation, &o.rot, e);
+    if (o.rot != rot) o.orient.reset();  // typed angles replace the exact turn
     int op = int(o.op);
     fieldCombo("op", &op, kOpNames, kCsgOpCount, e,
                "How it joins the objects before it in the list: union, subtract (carve it out)\n"
@@ -83,12 +85,25 @@ static void shapeFields(Object& o, FieldEdit& e) {
     fieldFloat("blend", Field::Blend, &o.blend, e);
 }
 
-static void motionFields(Object& o, FieldEdit& e) {
-    fieldFlag("static", &o.isStatic, e, "A static object never moves; dynamic spheres hit it.");
+// Friction and restitution show the world's value until the object is given its own.
+static void ownFloat(const char* label, Field f, std::optional<float>* own, float world, FieldEdit& e) {
+    float value = own->value_or(world);
+    fieldFloat(label, f, &value, e);
+    if (value != own->value_or(world)) *own = value;
+}
+
+static void motionFields(Object& o, const World& w, FieldEdit& e) {
+    bool dynamic = !o.isStatic;
+    fieldFlag("dynamic", &dynamic, e,
+              "A dynamic object (with a mass) falls, tumbles and collides as a rigid body of its\n"
+              "shape; a static one never moves.");
+    o.isStatic = !dynamic;
     fieldFloat("mass", Field::Mass, &o.mass, e);
+    ownFloat("friction", Field::Friction, &o.friction, w.friction, e);
+    ownFloat("restitution", Field::Restitution, &o.restitution, w.restitution, e);
     fieldVec3("vel", Field::Velocity, &o.vel, e);
     fieldVec3("spin", Field::Spin, &o.spin, e);
-    if (!o.dynamic()) ImGui::TextDisabled("static collider: only dynamic spheres move");
+    if (!o.dynamic()) ImGui::TextDisabled("static collider: tick dynamic, with a mass, to move it");
 }
 
 // place: the Objects panel or the object popup, whichever shows the fields.
@@ -99,7 +114,7 @@ static void objectFields(UiContext& c, int i, Place place) {
     ImGui::PushID(i);
     shapeFields(o, e);
     materialCombo(s, &o.material, e);
-    motionFields(o, e);
+    motionFields(o, s.world, e);
     ImGui::PopID();
     if (e.changed) c.editor.edit("Edit object", [&](Scene& sc) { sc.objects[size_t(i)] = o; }, e.key);
 }

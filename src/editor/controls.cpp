@@ -13,7 +13,7 @@ static const Control kControls[] = {
     {"Right click", "edit the object under the mouse"},
     {"Ctrl drag", "move the selected object over the ground"},
     {"Delete", "delete the selection"},
-    {"J", "random velocities for the dynamic spheres"},
+    {"J", "random velocities for the dynamic bodies"},
     {"Space", "play or pause the simulation"},
     {"Ctrl+Z, Ctrl+Y", "undo, redo (a simulation run is one step); Ctrl+Shift+Z redoes too"},
     {"Ctrl+N, Ctrl+O, Ctrl+S", "new, open, save"},

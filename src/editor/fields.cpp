@@ -51,8 +51,8 @@ static const FieldSpec kSpecs[] = {
     {"height", 0, kFar, true, 0.01f, 10, false, false, "%.3f", "m", "Length along local y of a capsule's segment or a cylinder."},
     {"rot", -360, 360, false, -180, 180, false, false, "%.1f", "degrees", "Turns about x, then y, then z."},
     {"mass", 0, 1e6, false, 0, 20, false, false, "%.2f", "kg", "0 keeps a sphere still."},
-    {"vel", -kFar, kFar, false, -20, 20, false, false, "%.2f", "m/s", "Velocity of a dynamic sphere."},
-    {"spin", -kFar, kFar, false, -20, 20, false, false, "%.2f", "rad/s", "Angular velocity of a dynamic sphere."},
+    {"vel", -kFar, kFar, false, -20, 20, false, false, "%.2f", "m/s", "Velocity of a dynamic body."},
+    {"spin", -kFar, kFar, false, -20, 20, false, false, "%.2f", "rad/s", "Angular velocity of a dynamic body."},
     {"blend", 0, kFar, false, 0, 1, false, false, "%.3f", "m", "Smooth-blend radius with the objects before; 0 is sharp."},
 };
 static_assert(sizeof kSpecs / sizeof kSpecs[0] == size_t(Field::Count), "one row per Field");

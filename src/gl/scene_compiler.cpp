@@ -41,13 +41,20 @@ std::string objectLine(const ObjectLayout& o, int i) {
            ", " + k + ", " + id + ".0);" + comment + "\n";
 }
 
+// Whether the shader turns the point into the object's frame. A body of any shape but the
+// sphere turns as it moves, so its shader has the turn from the start and play compiles nothing.
+bool turns(const Object& o) {
+    if (o.dynamic() && o.type != ShapeType::Sphere) return true;
+    return o.orient ? *o.orient != glm::quat(1.0f, 0.0f, 0.0f, 0.0f) : o.rot != glm::vec3(0.0f);
+}
+
 }  // namespace
 
 std::vector<ObjectLayout> objectLayout(const Scene& scene) {
     std::vector<ObjectLayout> layout;
     layout.reserve(scene.objects.size());
     for (const Object& o : scene.objects)
-        layout.push_back({o.type, o.op, o.rot != glm::vec3(0.0f), o.blend > 0.0f});
+        layout.push_back({o.type, o.op, turns(o), o.blend > 0.0f});
     return layout;
 }
 

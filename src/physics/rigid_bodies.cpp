@@ -23,15 +23,13 @@ constexpr int kMaxManifold = 4;
 constexpr int kSweeps = 16;       // of a manifold's normal rows in the relax pass (solve)
 constexpr int kBounceSweeps = 16; // ... and in restitute, where a face must bounce whole
 
-dquat orientationOf(const Object& o) {
-    return dquat(dmat3(rotationFromEuler(o.rot)));
-}
 
 // The shape alone, at the origin and unturned: the body's frame.
 SdfObject shapeOf(const Object& o) {
     Object at = o;
     at.pos = glm::vec3(0.0f);
     at.rot = glm::vec3(0.0f);
+    at.orient.reset();
     at.op = CsgOp::Union;
     at.blend = 0.0f;
     return makeSdfObject(at);
@@ -222,14 +220,14 @@ RigidBodies::RigidBodies(const Scene& scene, const PhysicsSettings& settings)
         b.pos = dvec3(o.pos);
         b.vel = dvec3(o.vel);
         b.spin = dvec3(o.spin);
-        b.orient = orientationOf(o);
+        b.orient = glm::normalize(dquat(o.orientation()));
         b.invMass = 1.0 / mp.mass;
         b.inertia = mp.inertia;
         b.invInertia = worldInverseInertia(b.orient, b.inertia);
         b.shape = shapeOf(o);
         b.bound = double(b.shape.bound);
-        b.friction = worldFriction_;
-        b.restitution = worldRestitution_;
+        b.friction = o.friction.value_or(float(worldFriction_));
+        b.restitution = o.restitution.value_or(float(worldRestitution_));
         b.object = int(i);
         b.probes = probesOf(o);
         b.rims = rimsOf(o);
@@ -331,6 +329,9 @@ void RigidBodies::collideStatics(int i) {
 void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFeature) {
     const RigidBody& b = bodies_[size_t(i)];
     const double reach = margins_[size_t(i)];
+    // The sphere about the whole body first: inside a pile most bodies are nowhere near a wall.
+    statics_.query(i * kProbeStride + kProbeStride - 1, b.pos, b.bound, reach, hits_, b.bound);
+    if (hits_.empty()) return;
     // A rim's support point turns about the rim's centre: that is its probe's centre.
     auto add = [&](const StaticHit& hit, const dvec3& at, double radius, int probe, const dvec3& centre) {
         if (size_t(hit.feature) >= byFeature.size()) byFeature.resize(size_t(hit.feature) + 1);
@@ -706,7 +707,8 @@ void RigidBodies::writeBack(Scene& scene) const {
         o.pos = glm::vec3(b.pos);
         o.vel = glm::vec3(b.vel);
         o.spin = glm::vec3(b.spin);
-        // o.orient = glm::quat(b.orient);  TODO after format merge
+        o.orient = glm::quat(b.orient);
+        o.rot = eulerFromRotation(glm::mat3_cast(*o.orient));  // shown in Edit
     }
 }
 

@@ -191,6 +191,32 @@ Scene pileScene(int count, std::uint32_t seed, float r) {
     return s;
 }
 
+// The same bin as pileScene, filled in turn with boxes, capsules, cylinders and spheres of about
+// r, each turned at random: the mixed pile the rigid bodies are timed on against Bullet.
+Scene mixedPileScene(int count, std::uint32_t seed, float r) {
+    Scene s = physicsWorld(9.81f, 0.3f, 0.5f, true);
+    Lcg rng{seed};
+    const float spacing = 2.4f * r;
+    const int side = std::max(2, int(std::ceil(std::sqrt(count / 8.0f))));
+    const float inner = 0.5f * spacing * float(side) + 0.3f * r;
+    addWalls(s, inner, 0.5f * spacing * float(count / (side * side) + 2), 0.1f);
+    const ShapeType types[4] = {ShapeType::Box, ShapeType::Capsule, ShapeType::Cylinder, ShapeType::Sphere};
+    for (int i = 0; i < count; ++i) {
+        const int layer = i / (side * side), row = (i / side) % side, col = i % side;
+        Object o = dynamicSphere({spacing * (float(col) - 0.5f * float(side - 1)),
+                                  r + 0.5f * r + spacing * float(layer),
+                                  spacing * (float(row) - 0.5f * float(side - 1))},
+                                 r * rng.range(0.8f, 1.0f), 1.0f);
+        o.type = types[i % 4];
+        o.size = glm::vec3(0.7f * o.radius);
+        o.height = o.radius;
+        if (o.type == ShapeType::Capsule) o.radius *= 0.5f;
+        o.rot = {rng.range(0.0f, 180.0f), rng.range(0.0f, 180.0f), rng.range(0.0f, 180.0f)};
+        s.objects.push_back(o);
+    }
+    return s;
+}
+
 Scene gasScene(int count, std::uint32_t seed) {
     Scene s = physicsWorld(0.0f, 1.0f, 0.0f, false);
     Lcg rng{seed};

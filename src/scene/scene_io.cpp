@@ -31,6 +31,11 @@ std::string formatValue(CsgOp v) { return csgOpName(v); }
 std::string formatValue(const glm::vec3& v) {
     return formatFloat(v.x) + ',' + formatFloat(v.y) + ',' + formatFloat(v.z);
 }
+std::string formatValue(const glm::quat& q) {
+    return formatFloat(q.w) + ',' + formatFloat(q.x) + ',' + formatFloat(q.y) + ',' + formatFloat(q.z);
+}
+template <class T>
+std::string formatValue(const std::optional<T>& v) { return formatValue(*v); }  // written: set
 
 // Comment lines as they were read; anything else a program put there made one (commentLine).
 void writeComment(std::string& out, std::string_view text) {
@@ -47,6 +52,7 @@ void writeRecord(std::string& out, const R& rec, std::string_view comment = {}) 
     out += Schema<R>::kind;
     forEachKey<R>([&](const char* name, auto field, Rule, Need<R> need) {
         if (need.pick && rec.*need.pick != need.when) return;  // the other spelling is written
+        if (need.written && !need.written(rec)) return;        // absent: the default applies
         out += ' ';
         out += name;
         out += ':';
@@ -77,8 +83,11 @@ bool sameList(const std::vector<R>& a, const std::vector<R>& b) {
 std::string formatScene(const Scene& scene) {
     const SceneComments& c = scene.comments;
     std::string out;
-    writeRecord(out, SceneHeader{});
+    writeRecord(out, SceneHeader{kSceneVersion});
     writeRecord(out, scene.camera, c.camera);
+    std::vector<Keyframe> keys = scene.keyframes;
+    std::stable_sort(keys.begin(), keys.end(), [](const Keyframe& a, const Keyframe& b) { return a.t < b.t; });
+    for (const Keyframe& k : keys) writeRecord(out, k, k.comment);
     writeRecord(out, scene.world, c.world);
     writeRecord(out, scene.render, c.render);
     for (size_t i = 0; i < scene.materials.size(); ++i) {
@@ -88,7 +97,10 @@ std::string formatScene(const Scene& scene) {
         writeRecord(out, m, m.comment);
     }
     for (const Light& l : scene.lights) writeRecord(out, l, l.comment);
-    for (const Object& o : scene.objects) writeRecord(out, o, o.comment);
+    for (Object o : scene.objects) {
+        if (o.dynamic() && !o.orient) o.orient = o.orientation();  // a body's turn, exactly
+        writeRecord(out, o, o.comment);
+    }
     writeComment(out, c.end);
     return out;
 }
@@ -99,6 +111,7 @@ bool operator==(const Scene& a, const Scene& b) {
     return sameRecord(a.camera, b.camera) && sameRecord(a.world, b.world) &&
            sameRecord(a.render, b.render) && sameList(a.materials, b.materials) &&
            sameList(a.lights, b.lights) && sameList(a.objects, b.objects) &&
+           sameList(a.keyframes, b.keyframes) &&
            a.comments == b.comments;
 }
 

@@ -1,4 +1,4 @@
-// scene_parse.cpp — scene text to Scene (parseScene), following ../shared/SCENE_FORMAT.md.
+// scene_parse.cpp — scene text to Scene (parseScene), as docs/scene-format.md describes it.
 //
 // A line is split at blanks by hand; std::regex then checks only single tokens (a key:value
 // field, a number, a vector, a name). libstdc++'s regex recurses once per character, so the
@@ -9,6 +9,7 @@
 #include "marchbox/scene/scene_io.h"
 
 #include "marchbox/scene/printable.h"
+#include "marchbox/scene/sdf.h"
 
 #include "scene_schema.h"
 
@@ -17,6 +18,8 @@
 #include <climits>
 #include <cmath>
 #include <functional>
+#include <glm/geometric.hpp>
+#include <limits>
 #include <map>
 #include <regex>
 
@@ -35,6 +38,7 @@ struct Syntax {
     std::regex field{R"(([A-Za-z0-9_]+):(.*))"};
     std::regex number{kNumber};
     std::regex vector{std::string("(") + kNumber + "),(" + kNumber + "),(" + kNumber + ")"};
+    std::regex quaternion{std::string("(") + kNumber + "),(" + kNumber + "),(" + kNumber + "),(" + kNumber + ")"};
     std::regex name{"[A-Za-z0-9_.-]+"};
 };
 
@@ -113,6 +117,29 @@ Expect readValue(std::string_view s, glm::vec3& v) {
     return nullptr;
 }
 
+// w,x,y,z, of length within 1e-3 of 1 (typed by hand, or from a save), then normalised.
+Expect readValue(std::string_view s, glm::quat& q) {
+    std::cmatch m;
+    if (!matches(s, syntax().quaternion, &m)) return "a quaternion w,x,y,z";
+    float c[4];
+    for (int i = 0; i < 4; ++i)
+        if (readNumber(view(m[i + 1]), c[i])) return "a quaternion of numbers within float range";
+    const glm::quat read(c[0], c[1], c[2], c[3]);
+    if (std::fabs(glm::length(read) - 1.0f) > 1e-3f) return "a unit quaternion (length within 1e-3 of 1)";
+    // Normalised only where it is off by more than rounding: a saved unit quaternion must read
+    // back to the same floats, and normalize() is not exact twice over.
+    q = std::fabs(glm::length(read) - 1.0f) > 1e-6f ? glm::normalize(read) : read;
+    return nullptr;
+}
+
+template <class T>
+Expect readValue(std::string_view s, std::optional<T>& v) {
+    T read{};
+    if (Expect e = readValue(s, read)) return e;
+    v = read;
+    return nullptr;
+}
+
 Expect readValue(std::string_view s, ShapeType& v) {
     int n = 0;
     while (n < kShapeTypeCount && s != shapeTypeName(ShapeType(n))) ++n;
@@ -139,6 +166,7 @@ bool obeys(const glm::vec3& v, const Rule& r) {
 }
 template <class T>
 bool obeys(const T&, const Rule&) { return true; }  // flags, names and enums have no range
+bool obeys(const std::optional<float>& v, const Rule& r) { return !v || obeys(*v, r); }
 
 // The text after "must be", e.g. "> 0", "1 to 179".
 std::string describe(const Rule& r) {
@@ -185,19 +213,24 @@ private:
     bool readFields(const std::vector<std::string_view>& tokens, size_t first, Fields* fields);
     void record(std::string_view kind, Fields& fields, std::string comment);
     void header(Fields& fields);
+    void object(Fields& fields, std::string comment);
+    void keyframe(Fields& fields, std::string comment);
     template <class R> void single(Fields& fields, R& rec);
     template <class R> bool append(Fields& fields, std::vector<R>& list, int max, std::string comment);
     template <class R> void readRecord(Fields& fields, R& rec);
     template <class T> void readKey(const char* key, std::string_view text, T& v, const Rule& r);
     const Field* take(Fields& fields, const char* key);
     void finish();
+    void finishKeyframes();
     void error(std::string message) { errorAt(line_, std::move(message)); }
     void errorAt(int line, std::string message);
 
     int line_ = 0;
+    int version_ = 1;                         // the `scene` record's, which comes first
     int records_ = 0;                         // records so far, to check `scene` comes first
     std::map<std::string_view, int> counts_;  // records of each kind, for the limits
     std::vector<int> objectLines_;            // where each object is, for its material error
+    std::vector<int> keyframeLines_;          // where each keyframe is, for a repeated t
     std::string comment_;                     // comment and blank lines since the last record
     bool stopped_ = false;
 };
@@ -280,8 +313,9 @@ void Parser::record(std::string_view kind, Fields& fields, std::string comment) 
     } else if (is<Light>(kind)) {
         append(fields, scene.lights, kMaxLights, std::move(comment));
     } else if (is<Object>(kind)) {
-        if (append(fields, scene.objects, kMaxObjects, std::move(comment)))
-            objectLines_.push_back(line_);
+        object(fields, std::move(comment));
+    } else if (is<Keyframe>(kind)) {
+        keyframe(fields, std::move(comment));
     } else {
         error("unknown record kind " + quote(kind));
     }
@@ -291,6 +325,28 @@ void Parser::header(Fields& fields) {
     if (records_ > 1) error("'scene' must be the first record");
     SceneHeader h;
     readRecord(fields, h);
+    version_ = h.version;
+}
+
+void Parser::object(Fields& fields, std::string comment) {
+    const bool rot = std::any_of(fields.begin(), fields.end(), [](const Field& f) { return f.key == "rot"; });
+    const bool orient = std::any_of(fields.begin(), fields.end(), [](const Field& f) { return f.key == "orient"; });
+    if (rot && orient) error("an object holds 'rot' or 'orient', not both");
+    if (append(fields, scene.objects, kMaxObjects, std::move(comment))) objectLines_.push_back(line_);
+}
+
+// The keys a keyframe leaves out come from the camera record, which may follow it: until the
+// end of the file they are NaN, which no file can hold.
+void Parser::keyframe(Fields& fields, std::string comment) {
+    if (version_ < 2) return error("a 'keyframe' record needs scene version:2");
+    Keyframe k;
+    constexpr float kUnset = std::numeric_limits<float>::quiet_NaN();
+    k.pos = k.target = glm::vec3(kUnset);
+    k.fov = kUnset;
+    readRecord(fields, k);
+    k.comment = std::move(comment);
+    scene.keyframes.push_back(std::move(k));
+    keyframeLines_.push_back(line_);
 }
 
 template <class R>
@@ -324,6 +380,7 @@ void Parser::readRecord(Fields& fields, R& rec) {
             ++picked;
             rec.*need.pick = need.when;
         }
+        if (f && need.version2 && version_ < 2) error(quote(key) + " needs scene version:2");
         if (f) readKey(key, f->value, std::invoke(field, rec), rule);
         if (!f && need.required) error(std::string("missing required key '") + key + "'");
     });
@@ -353,8 +410,21 @@ void Parser::readKey(const char* key, std::string_view text, T& v, const Rule& r
     if (!obeys(v, rule)) error(quote(key) + " must be " + describe(rule));
 }
 
-// Checks that need the whole file: material indices, and names for unnamed materials.
+// A body's turn is its exact orient (a save writes it), and rot then only shows it in degrees:
+// so a file read, saved and read again gives the same scene whichever of the two it held.
+void exactTurn(Object& o) {
+    if (o.dynamic() && !o.orient) o.orient = glm::quat_cast(rotationFromEuler(o.rot));
+    if (o.orient) o.rot = eulerFromRotation(glm::mat3_cast(*o.orient));
+}
+
+// Checks that need the whole file: material indices, names for unnamed materials, keyframes'
+// defaults and order; and version 1's meaning, where only spheres moved.
 void Parser::finish() {
+    for (Object& o : scene.objects) {
+        if (version_ < 2 && o.type != ShapeType::Sphere && o.dynamic()) o.isStatic = true;
+        exactTurn(o);
+    }
+    finishKeyframes();
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         int m = scene.objects[i].material;
         if (m >= int(scene.materials.size()))
@@ -362,6 +432,28 @@ void Parser::finish() {
     }
     for (size_t i = 0; i < scene.materials.size(); ++i)
         if (scene.materials[i].name.empty()) scene.materials[i].name = defaultMaterialName(i);
+}
+
+void Parser::finishKeyframes() {
+    for (Keyframe& k : scene.keyframes) {
+        for (int i = 0; i < 3; ++i) {
+            if (std::isnan(k.pos[i])) k.pos[i] = scene.camera.pos[i];
+            if (std::isnan(k.target[i])) k.target[i] = scene.camera.target[i];
+        }
+        if (std::isnan(k.fov)) k.fov = scene.camera.fov;
+    }
+    std::vector<size_t> order(scene.keyframes.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return scene.keyframes[a].t < scene.keyframes[b].t; });
+    std::vector<Keyframe> sorted;
+    for (size_t i = 0; i < order.size(); ++i) {
+        if (i > 0 && scene.keyframes[order[i]].t == scene.keyframes[order[i - 1]].t)
+            errorAt(keyframeLines_[std::max(order[i], order[i - 1])],
+                    "a second keyframe at t " + formatFloat(scene.keyframes[order[i]].t));
+        sorted.push_back(scene.keyframes[order[i]]);
+    }
+    scene.keyframes = std::move(sorted);
 }
 
 }  // namespace

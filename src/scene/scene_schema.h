@@ -7,7 +7,8 @@
 //
 // `field` is a member pointer or a generic lambda returning a reference (std::invoke takes
 // both); the C++ type of the field decides the value syntax (float: Number, glm::vec3: Vector,
-// int: whole Number, bool: Flag, std::string: Name, ShapeType / CsgOp: their names).
+// glm::quat: Quaternion, int: whole Number, bool: Flag, std::string: Name, ShapeType / CsgOp:
+// their names; std::optional of any: the key may be absent, and is then not written).
 #pragma once
 
 #include "marchbox/scene/scene.h"
@@ -39,12 +40,24 @@ struct Need {
     bool required = false;
     bool R::*pick = nullptr;
     bool when = false;
+    bool version2 = false;                // new in version 2: an error in a version 1 file
+    bool (*written)(const R&) = nullptr;  // where set, the writer writes the key only if true
 };
 
-// The `scene` record: it has no counterpart in Scene, only a version to check.
+// The `scene` record: it has no counterpart in Scene, only a version to check. Files without
+// one are version 1; saves write version 2.
 struct SceneHeader {
     int version = 1;
 };
+constexpr int kSceneVersion = 2;
+
+// A dynamic object saves its exact turn, `orient`, in place of `rot`; so does any object that
+// has one, so that it reads back the same.
+inline bool writesOrient(const Object& o) { return o.orient.has_value(); }
+inline bool writesRot(const Object& o) { return !o.orient.has_value(); }
+inline bool hasName(const Object& o) { return !o.name.empty(); }
+inline bool hasFriction(const Object& o) { return o.friction.has_value(); }
+inline bool hasRestitution(const Object& o) { return o.restitution.has_value(); }
 
 template <class R>
 struct Schema;
@@ -54,7 +67,7 @@ struct Schema<SceneHeader> {
     static constexpr const char* kind = "scene";
     template <class K>
     static void keys(K& key) {
-        key("version", &SceneHeader::version, between(1, 1));
+        key("version", &SceneHeader::version, between(1, kSceneVersion));
     }
 };
 
@@ -66,6 +79,18 @@ struct Schema<Camera> {
         key("pos", &Camera::pos);
         key("target", &Camera::target);
         key("fov", &Camera::fov, between(1, 179));
+    }
+};
+
+template <>
+struct Schema<Keyframe> {
+    static constexpr const char* kind = "keyframe";
+    template <class K>
+    static void keys(K& key) {
+        key("t", &Keyframe::t, atLeast(0), Need<Keyframe>{true});
+        key("pos", &Keyframe::pos);
+        key("target", &Keyframe::target);
+        key("fov", &Keyframe::fov, between(1, 179));
     }
 };
 
@@ -134,20 +159,25 @@ struct Schema<Object> {
     template <class K>
     static void keys(K& key) {
         const Need<Object> required{true};
+        auto since2 = [](bool (*written)(const Object&)) { return Need<Object>{false, nullptr, false, true, written}; };
         key("type", &Object::type, Rule{}, required);
+        key("name", &Object::name, Rule{}, since2(hasName));
         key("material", &Object::material, atLeast(0));  // existence is checked at end of file
         key("pos", &Object::pos, Rule{}, required);
         key("radius", &Object::radius, above(0));
         key("size", &Object::size, above(0));
         key("minor", &Object::minor, above(0));
         key("height", &Object::height, above(0));
-        key("rot", &Object::rot);
+        key("rot", &Object::rot, Rule{}, Need<Object>{false, nullptr, false, false, writesRot});
+        key("orient", &Object::orient, Rule{}, since2(writesOrient));
         key("mass", &Object::mass, atLeast(0));
         key("vel", &Object::vel);
         key("spin", &Object::spin);
         key("static", &Object::isStatic);
         key("op", &Object::op);
         key("blend", &Object::blend, atLeast(0));
+        key("friction", &Object::friction, atLeast(0), since2(hasFriction));
+        key("restitution", &Object::restitution, between(0, 1), since2(hasRestitution));
     }
 };
 

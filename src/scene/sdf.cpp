@@ -1,6 +1,8 @@
 // sdf.cpp — signed distance functions and the scene's CSG chain. Twin of shaders/sdf.glsl.
 #include "marchbox/scene/sdf.h"
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -64,6 +66,13 @@ glm::mat3 rotationFromEuler(vec3 degrees) {
     return glm::mat3(m);
 }
 
+// R = Rz·Ry·Rx has R[row 2][col 0] = −sin y, R[2][1] = cos y·sin x, R[2][2] = cos y·cos x,
+// R[1][0] = sin z·cos y, R[0][0] = cos z·cos y (glm indexes [col][row]).
+glm::vec3 eulerFromRotation(const glm::mat3& r) {
+    const float y = std::asin(std::clamp(-r[0][2], -1.0f, 1.0f));
+    return glm::degrees(vec3(std::atan2(r[1][2], r[2][2]), y, std::atan2(r[0][1], r[0][0])));
+}
+
 static float boundingRadius(const Object& o) {
     switch (o.type) {
     case ShapeType::Sphere: return o.radius;
@@ -80,7 +89,8 @@ SdfObject makeSdfObject(const Object& o) {
     s.type = o.type;
     s.op = o.op;
     s.pos = o.pos;
-    s.toLocal = glm::transpose(rotationFromEuler(o.rot));
+    // Euler angles give the matrix directly, to the bit as before orient existed.
+    s.toLocal = glm::transpose(o.orient ? glm::mat3_cast(*o.orient) : rotationFromEuler(o.rot));
     s.size = o.size;
     s.radius = o.radius;
     s.minor = o.minor;

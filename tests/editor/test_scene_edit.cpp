@@ -83,13 +83,14 @@ TEST(SceneEdit, DuplicateAppendsAMovedCopy) {
     EXPECT_EQ(why, "no object 7");
 }
 
-TEST(SceneEdit, RandomVelocitiesTouchOnlyDynamicSpheres) {
+TEST(SceneEdit, RandomVelocitiesTouchOnlyDynamicBodies) {
     Scene s = threeMaterials();
     s.objects[1].isStatic = true;
-    s.objects[2].type = ShapeType::Box;
-    EXPECT_EQ(randomizeVelocities(s, 1), 1);
+    s.objects[2].type = ShapeType::Box;  // a box with a mass moves too
+    EXPECT_EQ(randomizeVelocities(s, 1), 2);
     EXPECT_NE(s.objects[0].vel, glm::vec3(0.0f));
     EXPECT_EQ(s.objects[1].vel, glm::vec3(0.0f));
+    EXPECT_NE(s.objects[2].vel, glm::vec3(0.0f));
     Scene again = threeMaterials();
     again.objects[1].isStatic = true;
     again.objects[2].type = ShapeType::Box;

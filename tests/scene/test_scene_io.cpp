@@ -20,7 +20,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The example from shared/SCENE_FORMAT.md, verbatim.
+// A version 1 file, the format's example before version 2: its box has no `static` and a mass,
+// and stays still all the same (only version 1's spheres move).
 const char* kExample = R"(scene version:1
 camera pos:0,2.5,-7 target:0,0.8,0 fov:45
 world gravity:9.81 restitution:0.7 friction:0.3
@@ -36,14 +37,37 @@ object type:sphere material:1 pos:2,0.9,0 radius:0.6 static:1 op:subtract blend:
 - type:0 material:2 pos:-1.5,3,0.5 radius:0.4 mass:1
 )";
 
+// The format's version 2 example: a body of every kind, exact turns, keyframes.
+const char* kExample2 = R"(scene version:2
+camera pos:0,2.5,-7 target:0,0.8,0 fov:45
+keyframe t:0 pos:0,2.5,-7
+keyframe t:4 pos:5,3,-4 target:0,0.5,0
+world gravity:9.81 restitution:0.7 friction:0.3
+render steps:256 shadows:2 reflections:2
+material name:red r:0.9 g:0.15 b:0.1 Ka:0.1 Kd:0.8 Ks:0.6 C:48 Kr:0.1
+material name:mirror r:0.9 g:0.9 b:0.95 Kd:0.2 Ks:1 C:200 Kr:0.8
+light pos:3,6,-4 color:1,0.95,0.9 intensity:1
+light dir:-0.3,-1,0.2 color:0.4,0.45,0.6 intensity:0.5
+object type:sphere material:0 pos:0,2,0 radius:0.5 mass:2 vel:1,0,0
+object type:box material:1 pos:2,0.5,0 size:0.5,0.5,1.5 rot:0,30,0 static:1
+object type:box material:0 pos:-1,3,0 size:0.3,0.2,0.4 mass:1.5 spin:0,2,0
+object type:sphere material:1 pos:2,0.9,0 radius:0.6 static:1 op:subtract blend:0.05
+- r:0.2 g:0.8 b:0.3 Ka:0.1 Kd:0.7 Ks:0.3 C:16
+- type:0 material:2 pos:-1.5,3,0.5 radius:0.4 mass:1
+)";
+
 const char* kMat = "material r:1 g:1 b:1";                     // one valid material, line 1
 const char* kObj = "material r:1 g:1 b:1\nobject type:0 pos:0,0,0";  // an object on line 2
 
+// A fatal failure where the text does not parse: callers that go on to index the scene wrap
+// the call in ASSERT_NO_FATAL_FAILURE, so a wrong bound fails its own test and no other.
 Scene parseOk(const std::string& text) {
     Scene s;
     std::vector<SceneError> errors;
-    EXPECT_TRUE(parseScene(text, &s, &errors)) << text << "\nfirst error: "
-        << (errors.empty() ? "" : std::to_string(errors[0].line) + ": " + errors[0].message);
+    [&] {
+        ASSERT_TRUE(parseScene(text, &s, &errors)) << text << "\nfirst error: "
+            << (errors.empty() ? "" : std::to_string(errors[0].line) + ": " + errors[0].message);
+    }();
     return s;
 }
 
@@ -80,7 +104,8 @@ std::string readBytes(const fs::path& p) {
 // Reading
 //-----------------------------------------------------------------------------
 TEST(SceneParse, ExampleFromSpecLoadsWithItsValues) {
-    Scene s = parseOk(kExample);
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk(kExample));
     EXPECT_EQ(s.camera.pos, glm::vec3(0, 2.5f, -7));
     EXPECT_EQ(s.camera.fov, 45.0f);
     EXPECT_EQ(s.world.restitution, 0.7f);
@@ -144,7 +169,8 @@ TEST(SceneParse, LegacyLinesAndDashPrefix) {
 }
 
 TEST(SceneParse, KeysInAnyOrder) {
-    Scene s = parseOk("material b:0.3 name:x Kr:1 r:0.1 g:0.2\n");
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk("material b:0.3 name:x Kr:1 r:0.1 g:0.2\n"));
     EXPECT_EQ(s.materials[0].color, glm::vec3(0.1f, 0.2f, 0.3f));
     EXPECT_EQ(s.materials[0].name, "x");
     EXPECT_EQ(s.materials[0].Kr, 1.0f);
@@ -155,17 +181,20 @@ TEST(SceneParse, TypeByNameOrNumberAndOpByName) {
     for (int i = 0; i < kShapeTypeCount; ++i) {
         std::string text = std::string(kMat) + "\nobject type:" + names[i] + " pos:0,0,0\n" +
                            "object type:" + std::to_string(i) + " pos:0,0,0\n";
-        Scene s = parseOk(text);
+        Scene s;
+        ASSERT_NO_FATAL_FAILURE(s = parseOk(text));
         EXPECT_EQ(s.objects[0].type, ShapeType(i));
         EXPECT_EQ(s.objects[1].type, ShapeType(i));
     }
-    Scene s = parseOk(std::string(kObj) + " op:union\n" + "object type:0 pos:0,0,0 op:intersect\n");
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk(std::string(kObj) + " op:union\n" + "object type:0 pos:0,0,0 op:intersect\n"));
     EXPECT_EQ(s.objects[0].op, CsgOp::Union);
     EXPECT_EQ(s.objects[1].op, CsgOp::Intersect);
 }
 
 TEST(SceneParse, NumberForms) {
-    Scene s = parseOk("camera pos:1,-0.25,.5 target:3e-4,+2,1E3 fov:+45\n");
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk("camera pos:1,-0.25,.5 target:3e-4,+2,1E3 fov:+45\n"));
     EXPECT_EQ(s.camera.pos, glm::vec3(1, -0.25f, 0.5f));
     EXPECT_EQ(s.camera.target, glm::vec3(3e-4f, 2, 1000));
     EXPECT_EQ(s.camera.fov, 45.0f);
@@ -174,7 +203,8 @@ TEST(SceneParse, NumberForms) {
 }
 
 TEST(SceneParse, WholeNumberKeysAcceptIntegerValuedNumbers) {
-    Scene s = parseOk("scene version:1.0\nrender steps:256.0 aa:2e0 shadows:0\n");
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk("scene version:1.0\nrender steps:256.0 aa:2e0 shadows:0\n"));
     EXPECT_EQ(s.render.steps, 256);
     EXPECT_EQ(s.render.aa, 2);
     EXPECT_EQ(s.render.shadows, 0);
@@ -183,12 +213,14 @@ TEST(SceneParse, WholeNumberKeysAcceptIntegerValuedNumbers) {
 }
 
 TEST(SceneParse, ObjectMayComeBeforeItsMaterial) {
-    Scene s = parseOk("object type:box pos:0,0,0 material:1\n" + repeatLines(kMat, 2));
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk("object type:box pos:0,0,0 material:1\n" + repeatLines(kMat, 2)));
     EXPECT_EQ(s.objects[0].material, 1);
 }
 
 TEST(SceneParse, FailureLeavesTheSceneUntouched) {
-    Scene s = parseOk(kExample);
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk(kExample));
     Scene before = s;
     std::vector<SceneError> errors;
     EXPECT_FALSE(parseScene("camera fov:10\nworld gravity:-1\n", &s, &errors));
@@ -243,7 +275,7 @@ TEST(SceneErrors, EachKindWithItsLine) {
         {"render\n# c\nrender", 3, "second render record"},
         {"camera\nscene version:1", 2, "'scene' must be the first record"},
         {"scene\nscene", 2, "'scene' must be the first record"},
-        {"scene version:2", 1, "'version' must be 1"},
+        {"scene version:3", 1, "'version' must be 1 to 2"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.text);
@@ -369,7 +401,8 @@ TEST(SceneLimits, Objects4096LoadAnd4097Fail) {
 
 TEST(SceneLimits, Materials256LoadAnd257Fail) {
     std::string text = repeatLines(kMat, 256);
-    Scene s = parseOk(text);
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk(text));
     ASSERT_EQ(s.materials.size(), 256u);
     EXPECT_EQ(s.materials[255].name, "material255");
     expectError(text + kMat, 257, "more than 256 materials");
@@ -399,7 +432,7 @@ TEST(SceneParse, WorldRollingReadsAndDefaults) {
 //-----------------------------------------------------------------------------
 TEST(SceneFormat, DefaultSceneCanonicalText) {
     EXPECT_EQ(formatScene(Scene{}),
-              "scene version:1\n"
+              "scene version:2\n"
               "camera pos:0,2,-6 target:0,1,0 fov:50\n"
               "world gravity:9.81 restitution:0.8 friction:0.3 rolling:0.02 floor:0 ground:1\n"
               "render steps:256 epsilon:0.001 shadows:1 reflections:3 fog:0 ao:0 aa:1\n");
@@ -419,21 +452,23 @@ TEST(SceneFormat, EveryKeyWrittenAndUnnamedMaterialsGetTheirIndexName) {
                         "material name:material1 "), std::string::npos) << text;
     EXPECT_NE(text.find("\nlight dir:0,-1,0 color:1,1,1 intensity:1\n"), std::string::npos);
     EXPECT_NE(text.find("\nobject type:sphere material:0 pos:0,0,0 radius:0.5 size:0.5,0.5,0.5 "
-                        "minor:0.1 height:1 rot:0,0,0 mass:1 vel:0,0,0 spin:0,0,0 static:0 "
-                        "op:subtract blend:0\n"), std::string::npos) << text;
+                        "minor:0.1 height:1 orient:1,0,0,0 mass:1 vel:0,0,0 spin:0,0,0 static:0 "
+                        "op:subtract blend:0\n"), std::string::npos) << "a body writes orient" << text;
 }
 
 void expectRoundTrip(const Scene& s) {
     std::string text = formatScene(s);
-    Scene again = parseOk(text);
+    Scene again;
+    ASSERT_NO_FATAL_FAILURE(again = parseOk(text));
     EXPECT_EQ(again, s);
     EXPECT_EQ(formatScene(again), text);
 }
 
 TEST(SceneFormat, SpecExampleRoundTripsExactly) {
-    Scene s = parseOk(kExample);
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk(kExample));
     expectRoundTrip(s);
-    EXPECT_EQ(formatScene(s).rfind("scene version:1\n", 0), 0u);
+    EXPECT_EQ(formatScene(s).rfind("scene version:2\n", 0), 0u) << "saves write version 2";
 }
 
 TEST(SceneFormat, EveryFileInScenesRoundTripsThroughSaveAndLoad) {
@@ -504,6 +539,7 @@ TEST(SceneFormat, RandomScenesRoundTripThroughText) {
         o.rot = glm::vec3(anyFloat(), anyFloat(), anyFloat());
         o.radius = std::fabs(anyFloat()) + FLT_MIN;
         o.type = ShapeType(i % kShapeTypeCount);
+        o.isStatic = true;  // a static object keeps its Euler angles, to the bit
         s.objects.push_back(o);
     }
     s.materials.resize(1);
@@ -548,7 +584,8 @@ const char* kCommented =
     "# the end\r\n";
 
 TEST(SceneComments, EachRunStaysAboveItsRecordInTheCanonicalOrder) {
-    Scene s = parseOk(kCommented);
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk(kCommented));
     std::vector<std::string> r = recordLines(s);  // scene camera world render 2×material light 2×object
     ASSERT_EQ(r.size(), 9u);
     // A save starts with `scene version:1` (SCENE_FORMAT.md): the lines above it go with the
@@ -565,13 +602,15 @@ TEST(SceneComments, EachRunStaysAboveItsRecordInTheCanonicalOrder) {
 }
 
 TEST(SceneComments, RoundTripKeepsEveryCommentAndSavingTwiceGivesTheSameBytes) {
-    Scene s = parseOk(kCommented);
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk(kCommented));
     const std::string saved = formatScene(s);
     for (const char* note : {"# Notes on the whole file", "# the objects come first here",
                              "  # indented, with trailing blanks", "# the camera, last in this file",
                              "# blue", "# the end"})
         EXPECT_NE(saved.find(std::string(note) + "\n"), std::string::npos) << note;
-    Scene again = parseOk(saved);
+    Scene again;
+    ASSERT_NO_FATAL_FAILURE(again = parseOk(saved));
     EXPECT_EQ(again, s);
     EXPECT_EQ(formatScene(again), saved);
     // The example scenes carry comments of their own: each one survives a save.
@@ -592,7 +631,8 @@ TEST(SceneComments, RoundTripKeepsEveryCommentAndSavingTwiceGivesTheSameBytes) {
 }
 
 TEST(SceneComments, ADeletedRecordTakesItsCommentsAndTheEndStays) {
-    Scene s = parseOk(kCommented);
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk(kCommented));
     s.objects.erase(s.objects.begin());
     s.materials.pop_back();
     s.objects[0].material = 0;
@@ -615,7 +655,8 @@ TEST(SceneComments, AnythingAProgramPutsThereSavesAsCommentsThatReadBack) {
     EXPECT_NE(saved.find("\n# not a comment\n  # spaced\n\n# \r# carriage\n# no newline\ncamera "),
               std::string::npos) << saved;
     EXPECT_NE(saved.find("\n#" + std::string(kMaxLineBytes - 1, 'x') + "\nobject "), std::string::npos);
-    Scene back = parseOk(saved);
+    Scene back;
+    ASSERT_NO_FATAL_FAILURE(back = parseOk(saved));
     EXPECT_EQ(formatScene(back), saved);
     EXPECT_EQ(back.comments.camera, "# not a comment\n  # spaced\n\n# \r# carriage\n# no newline\n");
 }
@@ -734,7 +775,8 @@ TEST_F(SceneFile, HugeFileIsRefusedWithoutReadingIt) {
 
 TEST_F(SceneFile, SaveReplacesTheTargetAndLeavesNoTemporary) {
     write("scene.txt", "old contents\n");
-    Scene s = parseOk(kExample);
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk(kExample));
     std::string error;
     ASSERT_TRUE(saveScene(path("scene.txt"), s, &error)) << error;
     EXPECT_EQ(readBytes(path("scene.txt")), formatScene(s));
@@ -768,4 +810,85 @@ TEST_F(SceneFile, SaveToReadOnlyFolderFailsClearly) {
     EXPECT_FALSE(saveScene(path("scene.txt"), Scene{}, &error));
     EXPECT_EQ(error, "cannot save '" + path("scene.txt") + "': Permission denied");
     EXPECT_EQ(readBytes(path("scene.txt")), "old contents\n");
+}
+
+//-----------------------------------------------------------------------------
+// Version 2
+//-----------------------------------------------------------------------------
+TEST(SceneVersion2, ExampleLoadsWithEveryShapeABodyAndKeyframesFromTheCamera) {
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk(kExample2));
+    ASSERT_EQ(s.objects.size(), 5u);
+    EXPECT_TRUE(s.objects[2].dynamic()) << "a version 2 box with mass moves";
+    EXPECT_FALSE(s.objects[1].dynamic());
+    ASSERT_EQ(s.keyframes.size(), 2u);
+    EXPECT_EQ(s.keyframes[0].target, glm::vec3(0, 0.8f, 0)) << "left out: the camera's";
+    EXPECT_EQ(s.keyframes[0].fov, 45.0f);
+    EXPECT_EQ(s.keyframes[1].pos, glm::vec3(5, 3, -4));
+    expectRoundTrip(s);
+}
+
+TEST(SceneVersion2, AVersion1BoxStaysStillAndSavesAsStatic) {
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk(kExample));
+    ASSERT_GE(s.objects.size(), 2u);
+    EXPECT_FALSE(s.objects[1].dynamic()) << "version 1 moved spheres only";
+    EXPECT_TRUE(s.objects[0].dynamic());
+    const std::string text = formatScene(s);
+    EXPECT_NE(text.find("object type:box material:1 pos:2,0.5,0 size:0.5,1.5,0.5"), 0u);
+    EXPECT_NE(text.find("rot:0,30,0 mass:1 vel:0,0,0 spin:0,0,0 static:1"), std::string::npos) << text;
+}
+
+TEST(SceneVersion2, OwnFrictionRestitutionNameAndOrientRoundTrip) {
+    Scene s;
+    ASSERT_NO_FATAL_FAILURE(s = parseOk(
+        "scene version:2\n" + std::string(kMat) +
+        "\nobject type:capsule name:peg.1 pos:0,1,0 orient:0.7071068,0,0.7071068,0 mass:2 friction:0.9"
+        " restitution:0.1\nobject type:box pos:0,3,0 static:1 orient:1,0,0,0\n"));
+    ASSERT_EQ(s.objects.size(), 2u);
+    const Object& o = s.objects[0];
+    EXPECT_EQ(o.name, "peg.1");
+    ASSERT_TRUE(o.friction && o.restitution && o.orient);
+    EXPECT_EQ(*o.friction, 0.9f);
+    EXPECT_EQ(*o.restitution, 0.1f);
+    EXPECT_NEAR(glm::length(*o.orient), 1.0f, 1e-7f);
+    EXPECT_NEAR(o.rot.y, 90.0f, 1e-3f) << "rot shows the exact turn in degrees";
+    EXPECT_FALSE(s.objects[1].friction) << "absent: the world's";
+    const std::string saved = formatScene(s);
+    EXPECT_NE(saved.find("name:peg.1"), std::string::npos);
+    EXPECT_NE(saved.find("friction:0.9 restitution:0.1"), std::string::npos) << saved;
+    EXPECT_EQ(saved.find("rot:"), std::string::npos) << "both objects hold an exact turn";
+    expectRoundTrip(s);
+}
+
+TEST(SceneVersion2, EachNewErrorWithItsLine) {
+    struct Case {
+        std::string text;
+        int line;
+        const char* message;
+    };
+    const std::string v2 = "scene version:2\n", obj = "object type:box pos:0,0,0 ";
+    const Case cases[] = {
+        {v2 + obj + "rot:0,1,0 orient:1,0,0,0", 2, "an object holds 'rot' or 'orient', not both"},
+        {v2 + obj + "orient:1,0,0,0.1", 2, "'orient' must be a unit quaternion (length within 1e-3 of 1), got '1,0,0,0.1'"},
+        {v2 + obj + "orient:1,0,0", 2, "'orient' must be a quaternion w,x,y,z, got '1,0,0'"},
+        {obj + "orient:1,0,0,0", 1, "'orient' needs scene version:2"},
+        {obj + "name:a", 1, "'name' needs scene version:2"},
+        {obj + "friction:0.5", 1, "'friction' needs scene version:2"},
+        {"scene version:1\n" + obj + "restitution:0.5", 2, "'restitution' needs scene version:2"},
+        {"keyframe t:1", 1, "a 'keyframe' record needs scene version:2"},
+        {v2 + "keyframe t:1\nkeyframe t:0\nkeyframe t:1 fov:30", 4, "a second keyframe at t 1"},
+        {v2 + "keyframe pos:0,0,0", 2, "missing required key 't'"},
+        {v2 + "keyframe t:-1", 2, "'t' must be >= 0"},
+        {v2 + obj + "friction:-1", 2, "'friction' must be >= 0"},
+        {v2 + obj + "restitution:2", 2, "'restitution' must be 0 to 1"},
+        {v2 + obj + "name:a,b", 2, "'name' must be a name of letters, digits, '_', '.' or '-', got 'a,b'"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.text);
+        std::vector<SceneError> errors = parseErrors(c.text + "\n" + kMat);  // for material 0
+        ASSERT_EQ(errors.size(), 1u) << (errors.empty() ? "" : errors[0].message);
+        EXPECT_EQ(errors[0].line, c.line);
+        EXPECT_EQ(errors[0].message, c.message);
+    }
 }

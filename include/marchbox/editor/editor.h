@@ -55,7 +55,7 @@ public:
     bool duplicate(ItemKind k, int index, std::string* why);   // selects the copy
     bool remove(ItemKind k, int index, std::string* why);
     void clear(ItemKind k);
-    int kick();  // J: random velocities for the dynamic spheres; returns how many
+    int kick();  // J: random velocities for the dynamic bodies; returns how many
 
     //-------------------------------------------------------------------------
     // [SECTION] Selection

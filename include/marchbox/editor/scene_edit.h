@@ -42,8 +42,8 @@ void clearItems(Scene& s, ItemKind k);
 // A fresh scene for File > New: ground, one light, one material, one sphere.
 Scene newScene();
 
-// J in the editor: a random velocity for every dynamic sphere, mostly sideways and a little up.
-// Returns how many spheres it touched.
+// J in the editor: a random velocity for every dynamic body, mostly sideways and a little up.
+// Returns how many bodies it touched.
 int randomizeVelocities(Scene& s, uint32_t seed);
 
 }  // namespace mb

@@ -1,4 +1,4 @@
-// marchbox/physics/physics.h — the rigid-body sphere simulator.
+// marchbox/physics/physics.h — the rigid-body simulator.
 //
 // [SECTION] Settings
 // [SECTION] Bodies and statistics
@@ -6,9 +6,11 @@
 // [SECTION] Driving it: simulate() and the frame accumulator
 //
 // The scene's World gives gravity, restitution, friction and rolling resistance; PhysicsSettings
-// holds how the method runs. Dynamic spheres (Object::dynamic()) move; every other object, and the ground plane, is a static
-// collider seen through its SDF (marchbox/scene/sdf.h). The state is double precision so that a sphere
-// 1e5 m from the origin still resolves millimetres; the scene keeps floats.
+// holds how the method runs. Dynamic objects (Object::dynamic()) move: spheres through the
+// solver below, every other shape as a turning rigid body (rigid_bodies.h, in the same
+// substeps). Every other object, and the ground plane, is a static collider seen through its
+// SDF (marchbox/scene/sdf.h). The state is double precision so that a sphere 1e5 m from the
+// origin still resolves millimetres; the scene keeps floats.
 //
 // One step of dt is split into `substeps` soft steps (Box2D v3's "soft step"):
 //   collide once (speculative contacts, warm started from the last step); resolve the step's

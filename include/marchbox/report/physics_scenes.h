@@ -42,6 +42,8 @@ Scene tunnelScene(float speed, float angleDegrees);    // at a 2 cm plate, angle
 Scene restingScene(float radius, float x);             // at rest on the ground at x
 // Dropped into a walled bin, about 8 layers deep: radii from 0.8·r to r.
 Scene pileScene(int count, std::uint32_t seed, float r = 0.1f);
+// The same bin with boxes, capsules, cylinders and spheres of about r in turn, each turned.
+Scene mixedPileScene(int count, std::uint32_t seed, float r = 0.2f);
 Scene gasScene(int count, std::uint32_t seed);         // elastic, frictionless, in a closed box
 
 }  // namespace mb

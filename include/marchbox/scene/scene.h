@@ -1,13 +1,15 @@
-// marchbox/scene/scene.h — the scene model: plain data, defaults from ../shared/SCENE_FORMAT.md.
+// marchbox/scene/scene.h — the scene model: plain data, defaults from docs/scene-format.md.
 //
 // [SECTION] Limits
-// [SECTION] Records (Camera, World, RenderSettings, Material, Light, Object)
+// [SECTION] Records (Camera, Keyframe, World, RenderSettings, Material, Light, Object)
 // [SECTION] Scene (and the file's comments)
 //
 // Units are metres, seconds, kilograms; +y is up. Angles in `rot` are degrees, as in the file.
 #pragma once
 
+#include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,16 @@ struct Camera {
     glm::vec3 pos{0.0f, 2.0f, -6.0f};
     glm::vec3 target{0.0f, 1.0f, 0.0f};
     float fov = 50.0f;  // vertical, degrees, 1..179
+};
+
+// A point of the camera's path over time (format version 2). The loader fills the keys a record
+// leaves out from the `camera` record.
+struct Keyframe {
+    float t = 0.0f;             // s, >= 0; no two keyframes share one
+    glm::vec3 pos{0.0f};
+    glm::vec3 target{0.0f};
+    float fov = 50.0f;
+    std::string comment{};
 };
 
 struct World {
@@ -80,16 +92,22 @@ struct Object {
     float minor = 0.1f;         // torus tube radius
     float height = 1.0f;        // capsule segment / cylinder length along local y
     glm::vec3 rot{0.0f};        // Euler degrees, R = Rz(z)·Ry(y)·Rx(x)
+    std::optional<glm::quat> orient;  // the exact turn (unit, w,x,y,z); where set, rot is unused
     float mass = 1.0f;
     glm::vec3 vel{0.0f};        // m/s
     glm::vec3 spin{0.0f};       // angular velocity, rad/s
     bool isStatic = false;
     CsgOp op = CsgOp::Union;
     float blend = 0.0f;         // smooth-blend radius, 0 = sharp
+    std::string name{};         // [A-Za-z0-9_.-]+, or empty: none
+    std::optional<float> friction{}, restitution{};  // the object's own; absent: the world's
     std::string comment{};      // `{}`: aggregates built without it stay warning-free
 
-    // A dynamic object is moved by the simulator; everything else is a static collider.
+    // A dynamic object is moved by the simulator, whatever its type; everything else is a
+    // static collider. (A version 1 file's other shapes load static: only spheres moved.)
     bool dynamic() const { return !isStatic && mass > 0.0f; }
+    // Body to world: orient where set, else rot.
+    glm::quat orientation() const;
 };
 
 //-----------------------------------------------------------------------------
@@ -113,6 +131,7 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Light> lights;
     std::vector<Object> objects;  // in file order: the CSG chain is evaluated in this order
+    std::vector<Keyframe> keyframes;  // in order of t
     SceneComments comments;
 };
 

@@ -39,6 +39,7 @@ glm::vec2 opIntersect(float a, float b, float k);
 //-----------------------------------------------------------------------------
 // R = Rz(z)·Ry(y)·Rx(x), angles in degrees.
 glm::mat3 rotationFromEuler(glm::vec3 degrees);
+glm::vec3 eulerFromRotation(const glm::mat3& r);  // its angles, for showing an exact turn
 
 // One object, resolved for evaluation: the same numbers the shader receives.
 struct SdfObject {
