@@ -441,6 +441,41 @@ def case_simulate(app, scene):
     check(scene_values(scene, 'object', 'vel')[0] != [0, 0, 0], 'Don\'t save saved')
 
 
+def case_body(app, scene):
+    """A box ticked dynamic moves as a body: J throws it, Space plays, and it comes to rest on
+    one of its faces somewhere else; Ctrl+Z after the run puts it back as it was."""
+    start = scene_values(scene, 'object', 'pos')
+    app.click(*project(scene, start[2]), button=3)
+    check(app.wait('select ') == 'select object 2', 'the box was not selected')
+    app.wait('popup object popup open')
+    # The object popup's fields, where the Objects panel has scrolled them away at 640x400:
+    # ImGui names a popup's window by the hash of its id, "object popup".
+    app.click_widget('##Popup_f4c3f45f/dynamic')
+    app.wait('edit Edit object')
+    app.key('Escape')
+    app.wait('popup object popup closed')
+    app.key('j')
+    app.wait('edit Random velocities')
+    app.key('space')
+    app.wait('play')
+    time.sleep(5)
+    app.key('space')
+    app.wait('pause')
+    app.save()
+    pos, (w, x, y, z) = scene_values(scene, 'object', 'pos')[2], scene_values(scene, 'object', 'orient')[2]
+    check(pos != start[2], 'the box did not move')
+    check(abs(pos[1] - 0.5) < 0.02, 'the box is not resting on a face: y = %s' % pos[1])
+    # The y components of the turned box's axes: one of them is 1 when it rests on a face.
+    up = [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)]
+    check(max(abs(v) for v in up) > 0.999, 'the box rests on an edge or corner: orient %s' % [w, x, y, z])
+    app.key('ctrl+z')
+    check(app.wait('undo ') == 'undo Simulation run', 'undo did not undo the run')
+    app.save()
+    check(scene_values(scene, 'object', 'pos')[2] == start[2], 'undo did not put the box back')
+    app.key('Escape')
+    check(app.finish() == 0, 'exit status not 0')
+
+
 def case_open_error(app, scene):
     """A file that fails to load leaves the open scene as it was. Its 41 errors scroll in a
     list: OK stays on screen. Return presses OK, but not the Return that opened the file,
