@@ -5,7 +5,10 @@
 #include "marchbox/gl/gpu_scene.h"
 #include "marchbox/gl/shader.h"
 
+#include "marchbox/scene/sdf.h"
+
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <sstream>
 #include <utility>
@@ -144,9 +147,19 @@ std::vector<std::string> describeFeatures(const ShaderFeatures& f) {
     return lines;
 }
 
+// MODE_SHADED, MODE_NORMALS, ... MODE_ID: the names the shaders compare MODE with, made from
+// the command line's names so that RenderMode is the one list of modes.
+static std::string modeMacro(int mode) {
+    std::string name = "MODE_";
+    for (const char* c = kModeNames[mode]; *c; ++c)
+        name += char(std::toupper(static_cast<unsigned char>(*c)));
+    return name;
+}
+
 // The macros in the order the prefix lists them.
-static std::vector<std::pair<const char*, long>> featureDefines(const ShaderFeatures& f) {
-    std::vector<std::pair<const char*, long>> d = {{"UBER", f.uber}, {"MODE", long(f.mode)}};
+static std::vector<std::pair<std::string, long>> featureDefines(const ShaderFeatures& f) {
+    std::vector<std::pair<std::string, long>> d = {{"UBER", f.uber}, {"MODE", long(f.mode)}};
+    for (int m = 0; m < kRenderModeCount; ++m) d.push_back({modeMacro(m), m});
     static const char* shapeDefs[kShapeTypeCount] = {"HAS_SPHERE", "HAS_BOX", "HAS_TORUS",
                                                      "HAS_CAPSULE", "HAS_CYLINDER"};
     for (int i = 0; i < kShapeTypeCount; ++i) d.push_back({shapeDefs[i], (f.shapes >> i) & 1});
@@ -167,6 +180,9 @@ std::string shaderPrefix(const ShaderFeatures& f) {
     std::ostringstream o;
     o << (f.objectsInStorage ? "#version 430 core\n" : "#version 330 core\n");
     for (const auto& [name, value] : featureDefines(f)) o << "#define " << name << ' ' << value << '\n';
+    // A march's object id is a float: an object's index or one of these, sdf.h's own values.
+    o << "const float HIT_GROUND = " << kHitGround << ".0;\n"
+      << "const float HIT_NONE = " << kHitNone << ".0;\n";
     return o.str();
 }
 

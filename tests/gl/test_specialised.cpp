@@ -2,10 +2,13 @@
 // holds only the code the scene needs.
 #include "golden.h"
 
+#include "marchbox/gl/shader.h"
 #include "marchbox/gl/shader_source.h"
 
 #include <gtest/gtest.h>
 #include <filesystem>
+#include <fstream>
+#include <regex>
 #include <set>
 
 using namespace mb;
@@ -60,6 +63,21 @@ TEST(Specialised, KeepsOnlyTheShadowKindInUse) {
     EXPECT_NE(sourceFor(s).find("softShadow("), std::string::npos);
     std::string uber = sourceFor(s, true);
     EXPECT_NE(uber.find("uShadows"), std::string::npos);
+}
+
+// The conditionals read an unknown name as 0, so a misspelt mode would quietly be the shaded
+// view: every MODE_ name march.frag tests must be one the prefix defines from RenderMode.
+TEST(Specialised, EveryModeNameTheShaderTestsIsDefined) {
+    std::ifstream in(shaderDir() + "/march.frag");
+    std::string text((std::istreambuf_iterator<char>(in)), {}), prefix = shaderPrefix({});
+    const std::regex name("MODE_[A-Z]+");
+    const std::sregex_iterator end;
+    int tested = 0;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), name); it != end; ++it) {
+        EXPECT_NE(prefix.find("#define " + it->str() + " "), std::string::npos) << it->str();
+        ++tested;
+    }
+    EXPECT_GE(tested, kRenderModeCount - 1) << "march.frag names the views it draws";
 }
 
 // Past the uniform-block limit objects move to a storage buffer; nothing is capped silently.

@@ -85,7 +85,8 @@ ShaderFeatures shaderFeatures(const Scene& scene, RenderMode mode, bool uber,
 // "fog, ambient occlusion, ground".
 std::vector<std::string> describeFeatures(const ShaderFeatures& f);
 
-// The #version line and the #define block for a feature set.
+// The #version line, the #define block for a feature set (with MODE_SHADED ... MODE_ID, the names
+// of RenderMode's values) and the constants HIT_GROUND and HIT_NONE (sdf.h's kHitGround, kHitNone).
 std::string shaderPrefix(const ShaderFeatures& f);
 
 // The complete fragment source: prefix plus shaders/march.frag with its includes expanded.
