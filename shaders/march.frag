@@ -56,7 +56,7 @@ vec3 render(vec3 ro, vec3 rd, vec3 hit) {
     float heat = hit.z / float(MAX_STEPS);
     return clamp(vec3(3.0 * heat, 3.0 * heat - 1.0, 3.0 * heat - 2.0), 0.0, 1.0);
 #elif MODE == MODE_ID
-    float id = hit.y - HIT_NONE;  // 0 miss, 1 ground, 2+ objects
+    float id = hit.y - HIT_NONE;  // 0 miss, 1 ground, 2+ objects; objectIdAt() reads it
     return vec3(mod(id, 256.0), floor(id / 256.0), 0.0) / 255.0;
 #else
     if (missed(hit.y)) return vec3(0.0);

@@ -53,4 +53,10 @@ void applyQualityPreset(QualityPreset p, RenderSettings* r, RenderOptions* o) {
     if (s.checkerboard) q->checkerboard = true;
 }
 
+Scene converged(Scene scene) {
+    scene.render.steps = 4096;
+    scene.render.epsilon = 1e-5f;
+    return scene;
+}
+
 }  // namespace mb

@@ -30,6 +30,11 @@ bool parseRenderMode(const std::string& s, RenderMode* out) {
     return false;
 }
 
+int objectIdAt(const Image& ids, int x, int y) {
+    const uint8_t* p = ids.pixel(x, y);
+    return int(p[0]) + 256 * int(p[1]) + kHitNone;
+}
+
 static bool anyMirror(const Scene& s) {
     return std::any_of(s.materials.begin(), s.materials.end(), [](const Material& m) { return m.Kr > 0; });
 }

@@ -172,15 +172,6 @@ struct Result {
     double error = 0;  // RMSE against the reference, 0..255
 };
 
-double psnr(double rmse) { return 20 * std::log10(255.0 / std::max(rmse, 1e-3)); }
-
-double rmse(const Image& a, const Image& b) {
-    double sum = 0;
-    for (size_t i = 0; i < a.rgba.size(); ++i)
-        if (i % 4 != 3) sum += std::pow(double(a.rgba[i]) - double(b.rgba[i]), 2.0);
-    return std::sqrt(sum / (double(a.width) * a.height * 3));
-}
-
 // n×n box filter: an image rendered at n times the size, averaged down.
 Image downsample(const Image& big, int n) {
     Image small = makeImage(big.width / n, big.height / n);
@@ -230,11 +221,8 @@ Image renderImage(Renderer& r, const Scene& scene, const RenderOptions& o, int w
     return readFramebuffer(w, h);
 }
 
-Scene converged(Scene s) {
-    s.render.steps = 4096;
-    s.render.epsilon = 1e-5f;
-    return s;
-}
+// An RMSE as PSNR for a table: "inf" for a picture identical to its reference.
+std::string dB(double rmse) { return fmt("%.1f", psnrFromRmse(rmse)); }
 
 // On the front when every other setting at least as accurate (within 0.1 dB, below which
 // PSNR differences are single pixels) is slower by more than the spread: its fastest frame is
@@ -242,7 +230,8 @@ Scene converged(Scene s) {
 bool onFront(const Result& a, const std::vector<Result>& all) {
     for (const Result& b : all) {
         if (&a == &b || b.error < 0) continue;
-        if (psnr(b.error) >= psnr(a.error) - 0.1 && b.time.min <= a.time.max) return false;
+        bool asAccurate = psnrFromRmse(b.error) >= psnrFromRmse(a.error) - 0.1;
+        if (asAccurate && b.time.min <= a.time.max) return false;
     }
     return a.error >= 0;
 }
@@ -258,7 +247,7 @@ std::string resultTable(const std::vector<Result>& all, const Result* baseline) 
     for (const Result& m : all)
         md << "| " << m.variant.sweep << " | " << m.variant.label << " | " << timeCells(m.time) << " | "
            << (baseline ? fmt("%.2fx", baseline->time.median / m.time.median) : std::string("")) << " | "
-           << fmt("%.1f", psnr(m.error)) << " | " << (onFront(m, all) ? "yes" : "") << " |\n";
+           << dB(m.error) << " | " << (onFront(m, all) ? "yes" : "") << " |\n";
     return md.str();
 }
 
@@ -349,9 +338,9 @@ std::string marchingSection(Renderer& r, const std::string& name, const Scene& s
     const Result* draft = nullptr;
     for (const Result& m : all)
         if (m.variant.label.rfind("draft", 0) == 0) draft = &m;
-    *verdict = "| " + name + " | " + fmt("%.1f", psnr(asWritten.error)) + " | " +
+    *verdict = "| " + name + " | " + dB(asWritten.error) + " | " +
                fmt("%.2fx", asWritten.time.median / draft->time.median) + " | " +
-               fmt("%.1f", psnr(draft->error)) + " |\n";
+               dB(draft->error) + " |\n";
     return "### " + name + "\n\n![" + name + "](" + svg + ")\n\n" + resultTable(all, &asWritten);
 }
 
@@ -402,8 +391,8 @@ std::string presetSection(Renderer& r, const std::vector<std::string>& names, co
         for (size_t i = 0; i < all.size(); ++i) {
             double same = rmse(renderImage(r, variants[i].scene, variants[i].options, kWidth, kHeight), sameAa[i]);
             md << "| " << name << " | " << all[i].variant.label << " | " << timeCells(all[i].time) << " | "
-               << fmt("%.2fx", all[1].time.median / all[i].time.median) << " | " << fmt("%.1f", psnr(same))
-               << " | " << fmt("%.1f", psnr(all[i].error)) << " |\n";
+               << fmt("%.2fx", all[1].time.median / all[i].time.median) << " | " << dB(same)
+               << " | " << dB(all[i].error) << " |\n";
         }
     }
     return md.str();
@@ -424,7 +413,7 @@ std::string draftSection(Renderer& r, const std::string& root, int* passing, int
         applyQualityPreset(QualityPreset::Draft, &draft.scene.render, &draft.options);
         Image reference = renderImage(r, converged(scene), {}, kWidth, kHeight);
         std::vector<Result> all = measure(r, {asWritten, draft}, reference, kWidth, kHeight);
-        double speedUp = all[0].time.median / all[1].time.median, db = psnr(all[1].error);
+        double speedUp = all[0].time.median / all[1].time.median, db = psnrFromRmse(all[1].error);
         *passing += speedUp >= 2.0 && db >= 28.0;
         ++*scenes;
         md << "| " << path.stem().string() << " | " << fmt("%.1f", all[0].time.median) << " | "

@@ -98,7 +98,7 @@ TEST(Specialised, FourThousandNinetySixSpheresRender) {
     Image ids = test::renderOrDie(s, test::options(RenderMode::ObjectId), 320, 180);
     std::set<int> seen;
     for (int y = 0; y < ids.height; ++y)
-        for (int x = 0; x < ids.width; ++x) seen.insert(int(ids.pixel(x, y)[0]) + 256 * ids.pixel(x, y)[1] - 2);
+        for (int x = 0; x < ids.width; ++x) seen.insert(objectIdAt(ids, x, y));
     std::string error;
     if (seen.size() < 4050) savePng(test::outputPath("spheres4096.ids.png"), ids, &error);
     // About 2 pixels a sphere: a few at the edges may fall between pixel centres.
