@@ -1,5 +1,5 @@
 // scene_map.glsl — the scene's objects, compiled or looped over, the object grid, and the
-// ground. Twin of mapScene().
+// ground. map() is sdf.h's mapScene(), mapObjects() its mapObjects().
 
 // Whether a march's object id (an object's index, HIT_GROUND or HIT_NONE, all whole numbers)
 // is HIT_NONE: nothing was met.

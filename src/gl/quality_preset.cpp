@@ -1,4 +1,4 @@
-// quality_preset.cpp — the one table of quality presets.
+// quality_preset.cpp — the one table of quality presets, and the converged reference.
 #include "marchbox/gl/quality_preset.h"
 
 #include <algorithm>

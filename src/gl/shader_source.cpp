@@ -1,4 +1,5 @@
-// shader_source.cpp — from a scene's feature set to the #defines of its fragment shader.
+// shader_source.cpp — from a scene to its fragment shader: the feature set it needs, the
+// #defines made from it, and shaders/march.frag assembled behind them; the render modes' names.
 #include "marchbox/gl/shader_source.h"
 
 #include "marchbox/gl/glsl_conditionals.h"

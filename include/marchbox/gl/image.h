@@ -1,4 +1,5 @@
-// marchbox/gl/image.h — RGBA8 images, PNG files and the comparisons golden tests use.
+// marchbox/gl/image.h — RGBA8 images, PNG files, and the comparisons the tests and the render
+// report use.
 #pragma once
 
 #include <cstdint>
