@@ -1,4 +1,4 @@
-// args.cpp — strict parsing of the options in ../shared/CLI.md.
+// args.cpp — strict parsing of the options main.cpp's usage lists (README.md, "Command line").
 #include "args.h"
 
 #include "marchbox/scene/printable.h"

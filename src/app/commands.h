@@ -1,4 +1,5 @@
-// commands.h — the subcommands of ../shared/CLI.md. Each returns the process exit status.
+// commands.h — the subcommands main.cpp's usage lists (README.md, "Command line"). Each returns
+// the process exit status.
 #pragma once
 
 #include "args.h"

@@ -1,4 +1,4 @@
-// main.cpp — marchbox: the editor, or one of the subcommands of ../shared/CLI.md.
+// main.cpp — marchbox: the editor, or one of the subcommands its usage text lists.
 #include "args.h"
 #include "commands.h"
 

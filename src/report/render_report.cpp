@@ -22,7 +22,7 @@ namespace mb {
 
 namespace {
 
-constexpr int kWidth = 480, kHeight = 270;  // the issue's benchmark size
+constexpr int kWidth = 480, kHeight = 270;  // the size draft's 2x-at-28-dB bar is set at
 constexpr int kFrames = 9;  // a median of 5 still moved a row by a third when the machine stirred
 
 std::string fmt(const char* format, double v) {
@@ -95,7 +95,7 @@ std::string uberTable(Renderer& r, const std::string& root) {
         if (!loadExample(path, &s)) continue;
         row(path.stem().string(), s);
         if (path.stem() != "primitives") continue;
-        s.render.shadows = 0;  // the issue's case: no mirrors and no shadows
+        s.render.shadows = 0;  // the case with the least to switch: no mirrors, no shadows
         row("primitives, no shadows, no mirrors", s);
     }
     return md.str();
@@ -364,7 +364,7 @@ std::string aliasingSection(Renderer& r, const std::string& name, const Scene& s
     return "### " + name + "\n\n" + resultTable(all, &all.front());
 }
 
-// The example scenes of the issue, each as written against draft, normal and final, all three
+// Example scenes, each as written against draft, normal and final, all three
 // against one reference: converged marching at 4x4 supersampling.
 std::string presetSection(Renderer& r, const std::vector<std::string>& names, const std::string& root) {
     std::ostringstream md;
@@ -398,7 +398,7 @@ std::string presetSection(Renderer& r, const std::vector<std::string>& names, co
     return md.str();
 }
 
-// The issue's bar for draft, on every example scene: its frames and the scene's as written
+// Draft's bar (2x faster at 28 dB) on every example scene: its frames and the scene's as written
 // interleaved, its error against the scene as written converged (at the scene's own aa, so an
 // aa cap counts as error).
 std::string draftSection(Renderer& r, const std::string& root, int* passing, int* scenes) {
@@ -486,14 +486,14 @@ std::string workPrecision(Renderer& r, const std::string& root, const std::strin
     md << "## Quality presets\n\n`--quality draft|normal|final` on `render` and `bench` (table in "
           "`src/gl/quality_preset.cpp`). A cap lowers the scene's own value only, a floor raises it only:\n\n"
        << presetSettingsTable()
-       << "\nEach example scene the issue measured, " << kWidth << "x" << kHeight << ", the three presets' frames "
+       << "\nEach of these example scenes, " << kWidth << "x" << kHeight << ", the three presets' frames "
           "interleaved; speed-up against normal. The first PSNR column is marching error (reference "
           "converged at the preset's own aa), the second everything the eye sees (reference converged "
           "at 4x4).\n\n"
        << presetSection(r, {"default", "csg", "reflections", "pile", "primitives", "fog"}, root);
     int passing = 0, scenes = 0;
     const std::string draft = draftSection(r, root, &passing, &scenes);
-    md << "\n### Draft against the scene as written\n\nThe issue's bar: at least 2x faster than the scene "
+    md << "\n### Draft against the scene as written\n\nDraft's bar: at least 2x faster than the scene "
           "as written at 28 dB or more, on every example scene. Frames of the two interleaved; PSNR against "
           "the scene as written converged at its own aa, so draft's aa cap counts as error. "
        << passing << " of " << scenes << " scenes meet it. Draft takes every cut that holds 28 dB on all of "

@@ -11,7 +11,7 @@ using namespace mb;
 
 class Converged : public ::testing::TestWithParam<std::string> {};
 
-// The bar, 36 dB; measured at 240x135 the lowest is reflections' 37.6 dB. With the
+// The bar, 36 dB; measured at 240x135 the lowest is reflections' 37.6 dB. With the
 // ground marched instead of met (the renderer before the compiler) default scored 32 dB.
 TEST_P(Converged, AsWrittenIsWithin36dBOfConverged) {
     Scene scene = test::loadSceneOrDie("scenes/" + GetParam() + ".txt");

@@ -57,7 +57,7 @@ TEST(QualityPreset, ShadowsFromTheLightsAtLeastHalfAsBrightAsTheBrightest) {
 
 class DraftPreset : public ::testing::TestWithParam<std::string> {};
 
-// The bar is 28 dB against the converged render at 480x270, the size it is measured at
+// Draft's bar is 28 dB against the converged render at 480x270, the size it is measured at
 // (a stretched draft loses more at smaller sizes, where every pixel is an edge).
 TEST_P(DraftPreset, Within28dBOfConverged) {
     Scene scene = test::loadSceneOrDie("scenes/" + GetParam() + ".txt");
