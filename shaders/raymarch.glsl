@@ -39,9 +39,9 @@ vec2 objectSpan(vec3 ro, vec3 rd, float far, float grow) {
 }
 
 // Sphere tracing of the objects alone over the span; x: t, y: object or HIT_NONE, z: steps.
-#if RELAX_PERCENT > 100
-// Over-relaxed (Keinert et al. 2014): steps of omega·d while consecutive unbounding spheres
-// overlap; where they do not, step back and fall to plain tracing.
+// Past RELAX_PERCENT 100 it is over-relaxed (Keinert et al. 2014): steps of omega·d while
+// consecutive unbounding spheres overlap; where they do not, it steps back and traces plainly.
+// At 100 the relaxed branch is a constant false, so plain tracing compiles to steps of d alone.
 vec3 marchObjects(vec3 ro, vec3 rd, vec2 span) {
     float t = span.x, omega = float(RELAX_PERCENT) / 100.0, stepLength = 0.0, prevRadius = 0.0;
     vec3 h = vec3(1e10, HIT_NONE, 1e10);
@@ -52,38 +52,21 @@ vec3 marchObjects(vec3 ro, vec3 rd, vec2 span) {
 #endif
         h = mapObjectsAlong(ro + rd * t, rd);
         float radius = abs(h.x);
-        bool fail = omega > 1.0 && radius + prevRadius < stepLength;
-        if (fail) {
+        if (RELAX_PERCENT > 100 && omega > 1.0 && radius + prevRadius < stepLength) {
             stepLength -= omega * stepLength;
             omega = 1.0;
         } else {
+            // Inside a surface (the camera in an object) counts as a hit at once; a grid cell's
+            // capped step (y = HIT_NONE) never does.
             if (h.x < hitEpsilon(t) && !missed(h.y)) return vec3(t, h.y, float(i + 1));
             stepLength = h.x * omega;
         }
         prevRadius = radius;
         t += stepLength;
     }
-    return vec3(t, t <= span.y ? h.y : HIT_NONE, float(i));
-}
-#else
-vec3 marchObjects(vec3 ro, vec3 rd, vec2 span) {
-    float t = span.x;
-    vec3 h = vec3(1e10, HIT_NONE, 1e10);
-    int i = 0;
-    for (; i < MAX_STEPS && t <= span.y; ++i) {
-#if UBER
-        if (i >= uSteps) break;
-#endif
-        h = mapObjectsAlong(ro + rd * t, rd);
-        // Inside a surface (the camera in an object) counts as a hit at once; a grid cell's
-        // capped step (y = HIT_NONE) never does.
-        if (h.x < hitEpsilon(t) && !missed(h.y)) return vec3(t, h.y, float(i + 1));
-        t += h.x;
-    }
     // Out of steps still in the span: the ray is grazing the object it is nearest to.
     return vec3(t, t <= span.y ? h.y : HIT_NONE, float(i));
 }
-#endif
 
 // x: distance along rd; y: object index, HIT_GROUND or HIT_NONE; z: steps taken. The ground is
 // met analytically, so no ray runs out of steps over open floor and shows sky at the horizon.
