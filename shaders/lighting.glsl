@@ -47,7 +47,7 @@ struct Surface {
 };
 
 Surface surfaceAt(vec3 p, int id) {
-    if (id < 0) {  // the ground: 1 m checkers aligned to x and z
+    if (float(id) == HIT_GROUND) {  // 1 m checkers aligned to x and z
         float c = mod(floor(p.x) + floor(p.z), 2.0);
         return Surface(mix(vec3(0.80), vec3(0.35), c), vec4(0.1, 0.8, 0.1, 16.0), 0.0);
     }

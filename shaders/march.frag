@@ -1,5 +1,5 @@
 // march.frag — one full-screen pass: map -> castRay -> calcNormal -> shadow/AO -> shade -> main.
-// The #version line and the feature #defines come first; see src/gl/shader_source.cpp.
+// The #version line, the feature #defines and the HIT_ ids come first (src/gl/shader_source.cpp).
 #include "scene_data.glsl"
 #include "sdf.glsl"
 #include "scene_map.glsl"
@@ -9,7 +9,7 @@
 
 out vec4 fragColor;
 
-#if MODE == 0
+#if MODE == MODE_SHADED
 // The colour where a ray stops, fogged by its distance; s, p and n feed the next bounce.
 vec3 surfaceColor(vec3 ro, vec3 rd, vec3 hit, out Surface s, out vec3 p, out vec3 n) {
     p = ro + rd * hit.x;
@@ -21,7 +21,7 @@ vec3 surfaceColor(vec3 ro, vec3 rd, vec3 hit, out Surface s, out vec3 p, out vec
 // hit: castRay(ro, rd), which main() made for the outline too.
 #if REFLECTIONS == 0
 vec3 render(vec3 ro, vec3 rd, vec3 hit) {
-    if (hit.y < -1.5) return sky(rd);
+    if (missed(hit.y)) return sky(rd);
     Surface s;
     vec3 p, n;
     return surfaceColor(ro, rd, hit, s, p, n);
@@ -32,7 +32,7 @@ vec3 render(vec3 ro, vec3 rd, vec3 hit) {
     vec3 acc = vec3(0.0), weight = vec3(1.0);
     for (int bounce = 0; bounce <= REFLECTIONS; ++bounce) {
         if (bounce > 0) hit = castRay(ro, rd);
-        if (hit.y < -1.5) return acc + weight * sky(rd);
+        if (missed(hit.y)) return acc + weight * sky(rd);
         Surface s;
         vec3 p, n;
         vec3 col = surfaceColor(ro, rd, hit, s, p, n);
@@ -52,23 +52,23 @@ vec3 render(vec3 ro, vec3 rd, vec3 hit) {
 #else
 // Debug views of the primary hit.
 vec3 render(vec3 ro, vec3 rd, vec3 hit) {
-#if MODE == 3
+#if MODE == MODE_STEPS
     float heat = hit.z / float(MAX_STEPS);
     return clamp(vec3(3.0 * heat, 3.0 * heat - 1.0, 3.0 * heat - 2.0), 0.0, 1.0);
-#elif MODE == 6
-    float id = hit.y + 2.0;  // 0 miss, 1 ground, 2+ objects
+#elif MODE == MODE_ID
+    float id = hit.y - HIT_NONE;  // 0 miss, 1 ground, 2+ objects; objectIdAt() reads it
     return vec3(mod(id, 256.0), floor(id / 256.0), 0.0) / 255.0;
 #else
-    if (hit.y < -1.5) return vec3(0.0);
+    if (missed(hit.y)) return vec3(0.0);
     vec3 p = ro + rd * hit.x;
     vec3 n = calcNormal(p);
-#if MODE == 1
+#if MODE == MODE_NORMALS
     return n * 0.5 + 0.5;
-#elif MODE == 2
+#elif MODE == MODE_DEPTH
     return vec3(1.0 - clamp(hit.x / uMaxDist, 0.0, 1.0));
-#elif MODE == 4 && HAS_AO
+#elif MODE == MODE_AO && HAS_AO
     return vec3(calcAO(p, n));
-#elif MODE == 5
+#elif MODE == MODE_SHADOW
     float sum = 0.0;
     for (int i = 0; i < POINT_LIGHTS; ++i) {
         vec3 toLight = uLights[i].vec.xyz - p;

@@ -38,13 +38,13 @@ vec2 objectSpan(vec3 ro, vec3 rd, float far, float grow) {
     return span;
 }
 
-// Sphere tracing of the objects alone over the span; x: t, y: object or -2, z: steps.
-#if RELAX_PERCENT > 100
-// Over-relaxed (Keinert et al. 2014): steps of omega·d while consecutive unbounding spheres
-// overlap; where they do not, step back and fall to plain tracing.
+// Sphere tracing of the objects alone over the span; x: t, y: object or HIT_NONE, z: steps.
+// Past RELAX_PERCENT 100 it is over-relaxed (Keinert et al. 2014): steps of omega·d while
+// consecutive unbounding spheres overlap; where they do not, it steps back and traces plainly.
+// At 100 the relaxed branch is a constant false, so plain tracing compiles to steps of d alone.
 vec3 marchObjects(vec3 ro, vec3 rd, vec2 span) {
     float t = span.x, omega = float(RELAX_PERCENT) / 100.0, stepLength = 0.0, prevRadius = 0.0;
-    vec3 h = vec3(1e10, -2.0, 1e10);
+    vec3 h = vec3(1e10, HIT_NONE, 1e10);
     int i = 0;
     for (; i < MAX_STEPS && t <= span.y; ++i) {
 #if UBER
@@ -52,46 +52,29 @@ vec3 marchObjects(vec3 ro, vec3 rd, vec2 span) {
 #endif
         h = mapObjectsAlong(ro + rd * t, rd);
         float radius = abs(h.x);
-        bool fail = omega > 1.0 && radius + prevRadius < stepLength;
-        if (fail) {
+        if (RELAX_PERCENT > 100 && omega > 1.0 && radius + prevRadius < stepLength) {
             stepLength -= omega * stepLength;
             omega = 1.0;
         } else {
-            if (h.x < hitEpsilon(t) && h.y > -1.5) return vec3(t, h.y, float(i + 1));
+            // Inside a surface (the camera in an object) counts as a hit at once; a grid cell's
+            // capped step (y = HIT_NONE) never does.
+            if (h.x < hitEpsilon(t) && !missed(h.y)) return vec3(t, h.y, float(i + 1));
             stepLength = h.x * omega;
         }
         prevRadius = radius;
         t += stepLength;
     }
-    return vec3(t, t <= span.y ? h.y : -2.0, float(i));
-}
-#else
-vec3 marchObjects(vec3 ro, vec3 rd, vec2 span) {
-    float t = span.x;
-    vec3 h = vec3(1e10, -2.0, 1e10);
-    int i = 0;
-    for (; i < MAX_STEPS && t <= span.y; ++i) {
-#if UBER
-        if (i >= uSteps) break;
-#endif
-        h = mapObjectsAlong(ro + rd * t, rd);
-        // Inside a surface (the camera in an object) counts as a hit at once; a grid cell's
-        // capped step (y = -2) never does.
-        if (h.x < hitEpsilon(t) && h.y > -1.5) return vec3(t, h.y, float(i + 1));
-        t += h.x;
-    }
     // Out of steps still in the span: the ray is grazing the object it is nearest to.
-    return vec3(t, t <= span.y ? h.y : -2.0, float(i));
+    return vec3(t, t <= span.y ? h.y : HIT_NONE, float(i));
 }
-#endif
 
-// x: distance along rd; y: object index (-1 ground, -2 miss); z: steps taken. The ground is
+// x: distance along rd; y: object index, HIT_GROUND or HIT_NONE; z: steps taken. The ground is
 // met analytically, so no ray runs out of steps over open floor and shows sky at the horizon.
 vec3 castRay(vec3 ro, vec3 rd) {
     float ground = groundHit(ro, rd);
     vec3 hit = marchObjects(ro, rd, objectSpan(ro, rd, min(ground, uMaxDist), 0.0));
-    if (hit.y > -1.5) return hit;
-    return ground <= uMaxDist ? vec3(ground, -1.0, hit.z) : vec3(uMaxDist, -2.0, hit.z);
+    if (!missed(hit.y)) return hit;
+    return ground <= uMaxDist ? vec3(ground, HIT_GROUND, hit.z) : vec3(uMaxDist, HIT_NONE, hit.z);
 }
 
 // Differences far from the origin must span several float ulps of p to stay smooth.

@@ -1,5 +1,9 @@
 // scene_map.glsl — the scene's objects, compiled or looped over, the object grid, and the
-// ground. Twin of mapScene().
+// ground. map() is sdf.h's mapScene(), mapObjects() its mapObjects().
+
+// Whether a march's object id (an object's index, HIT_GROUND or HIT_NONE, all whole numbers)
+// is HIT_NONE: nothing was met.
+bool missed(float id) { return id < HIT_NONE + 0.5; }
 
 // Replaced by src/gl/scene_compiler.cpp: a compiled scene's loadObjects() and mapObjects(),
 // then the per-type SDF switch (the loop's, and the outline's), a case for each type present.
@@ -29,9 +33,9 @@ vec2 chainStep(vec2 res, int i, vec3 p) {
 }
 
 #if !USE_GRID || UBER
-// x: distance; y: index of the surface's object, -2 nothing.
+// x: distance; y: index of the surface's object, HIT_NONE for nothing.
 vec2 mapObjects(vec3 p) {
-    vec2 res = vec2(1e10, -2.0);
+    vec2 res = vec2(1e10, HIT_NONE);
     for (int i = 0; i < OBJECT_COUNT; ++i) res = chainStep(res, i, p);
     return res;
 }
@@ -51,7 +55,7 @@ ivec3 gridCellOf(vec3 p) {
 vec2 mapCell(ivec3 c, vec3 p) {
     int cell = (c.z * uGridDims.y + c.y) * uGridDims.x + c.x;
     int first = int(texelFetch(uGridCells, cell).r), last = int(texelFetch(uGridCells, cell + 1).r);
-    vec2 res = vec2(1e10, -2.0);
+    vec2 res = vec2(1e10, HIT_NONE);
     for (int k = first; k < last; ++k) res = chainStep(res, int(texelFetch(uGridItems, k).r), p);
     return res;
 }
@@ -71,21 +75,21 @@ vec2 mapGrid(vec3 p) { return mapCell(gridCellOf(p), p); }
 vec3 mapGridAlong(vec3 p, vec3 rd) {
     float bump = max(2.0 * uEpsilon, 1e-4 * min(uGridCell.x, min(uGridCell.y, uGridCell.z)));
     float outside = gridBoxDistance(p);
-    if (outside > 0.0) return vec3(outside + bump, -2.0, 1e10);
+    if (outside > 0.0) return vec3(outside + bump, HIT_NONE, 1e10);
     ivec3 c = gridCellOf(p);
     vec2 res = mapCell(c, p);
     vec3 lo = uGridOrigin + vec3(c) * uGridCell;
     vec3 safeRd = vec3(rd.x >= 0.0 ? 1.0 : -1.0, rd.y >= 0.0 ? 1.0 : -1.0, rd.z >= 0.0 ? 1.0 : -1.0) * max(abs(rd), vec3(1e-8));
     vec3 tExit = (lo + step(0.0, rd) * uGridCell - p) / safeRd;
     float exit = max(min(tExit.x, min(tExit.y, tExit.z)), 0.0) + bump;
-    return exit < res.x ? vec3(exit, -2.0, res.x) : vec3(res, res.x);
+    return exit < res.x ? vec3(exit, HIT_NONE, res.x) : vec3(res, res.x);
 }
 #endif
 
 // The ground plane, unioned last: what normals and occlusion see. Rays meet it analytically.
 vec2 withGround(vec2 res, vec3 p) {
 #if HAS_GROUND
-    if (GROUND_ON && p.y - uFloor < res.x) res = vec2(p.y - uFloor, -1.0);
+    if (GROUND_ON && p.y - uFloor < res.x) res = vec2(p.y - uFloor, HIT_GROUND);
 #endif
     return res;
 }

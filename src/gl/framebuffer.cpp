@@ -1,4 +1,4 @@
-// framebuffer.cpp — allocating the accumulation target.
+// framebuffer.cpp — ColorTarget: allocating a framebuffer and the texture it draws into.
 #include "marchbox/gl/framebuffer.h"
 
 namespace mb {

@@ -1,4 +1,5 @@
-// gl_loader.cpp — GLEW through glXGetProcAddressARB, forwarded to OSMesa while it is current.
+// gl_loader.cpp — GLEW through glXGetProcAddressARB, forwarded to the off-screen context (OSMesa
+// or EGL) while one is current.
 #include "marchbox/gl/gl.h"
 
 #include "marchbox/gl/offscreen_context.h"

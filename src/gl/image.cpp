@@ -5,7 +5,9 @@
 #include "marchbox/scene/printable.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <stb_image.h>
 #include <stb_image_write.h>
 
@@ -80,5 +82,18 @@ ImageDiff diffImages(const Image& a, const Image& b) {
     d.maxAbs = *std::max_element(perPixel.begin(), perPixel.end());
     return d;
 }
+
+double rmse(const Image& a, const Image& b) {
+    double sum = 0;
+    for (size_t i = 0; i < a.rgba.size(); ++i)
+        if (i % 4 != 3) sum += std::pow(double(a.rgba[i]) - double(b.rgba[i]), 2.0);
+    return std::sqrt(sum / (double(a.width) * a.height * 3));
+}
+
+double psnrFromRmse(double rmse) {
+    return rmse > 0 ? 20 * std::log10(255.0 / rmse) : std::numeric_limits<double>::infinity();
+}
+
+double psnr(const Image& a, const Image& b) { return psnrFromRmse(rmse(a, b)); }
 
 }  // namespace mb

@@ -1,4 +1,5 @@
-// offscreen_context.cpp — OSMesa, loaded with dlopen so that it never shadows the window's libGL.
+// offscreen_context.cpp — OSMesa, loaded with dlopen so that it never shadows the window's libGL,
+// or EGL (egl_context.cpp), behind one OffscreenContext.
 #include "marchbox/gl/offscreen_context.h"
 
 #include "marchbox/gl/gl.h"

@@ -1,4 +1,4 @@
-// quality_preset.cpp — the one table of quality presets.
+// quality_preset.cpp — the one table of quality presets, and the converged reference.
 #include "marchbox/gl/quality_preset.h"
 
 #include <algorithm>
@@ -51,6 +51,12 @@ void applyQualityPreset(QualityPreset p, RenderSettings* r, RenderOptions* o) {
     if (s.coneEpsilon) q->coneEpsilon = true;
     if (s.shadowCutoff > 0) q->shadowCutoff = s.shadowCutoff;
     if (s.checkerboard) q->checkerboard = true;
+}
+
+Scene converged(Scene scene) {
+    scene.render.steps = 4096;
+    scene.render.epsilon = 1e-5f;
+    return scene;
 }
 
 }  // namespace mb

@@ -1,4 +1,6 @@
-// renderer.cpp — the full-screen quad, the program cache and the scene's uniforms.
+// renderer.cpp — a scene's program and data: builds and caches a program per feature set (in
+// the background for requestScene, with the uber program standing in), then uploads the
+// scene's buffers, grid and uniforms for it. Drawing is render_passes.cpp's.
 #include "marchbox/gl/renderer.h"
 
 #include "marchbox/scene/camera.h"

@@ -68,8 +68,8 @@ std::string compileSceneMap(const std::vector<ObjectLayout>& layout) {
     }
     s << "\nvoid loadObjects() {\n";
     for (size_t i = 0; i < layout.size(); ++i) s << "    o" << i << " = uObjects[" << i << "];\n";
-    s << "}\n\n// x: distance; y: index of the surface's object, -2 nothing.\n"
-         "vec2 mapObjects(vec3 p) {\n    vec2 res = vec2(1e10, -2.0);\n";
+    s << "}\n\n// x: distance; y: index of the surface's object, HIT_NONE for nothing.\n"
+         "vec2 mapObjects(vec3 p) {\n    vec2 res = vec2(1e10, HIT_NONE);\n";
     for (size_t i = 0; i < layout.size(); ++i) s << objectLine(layout[i], int(i));
     s << "    return res;\n}\n";
     return s.str();

@@ -1,11 +1,15 @@
-// shader_source.cpp — from a scene's feature set to the #defines of its fragment shader.
+// shader_source.cpp — from a scene to its fragment shader: the feature set it needs, the
+// #defines made from it, and shaders/march.frag assembled behind them; the render modes' names.
 #include "marchbox/gl/shader_source.h"
 
 #include "marchbox/gl/glsl_conditionals.h"
 #include "marchbox/gl/gpu_scene.h"
 #include "marchbox/gl/shader.h"
 
+#include "marchbox/scene/sdf.h"
+
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <sstream>
 #include <utility>
@@ -25,6 +29,11 @@ bool parseRenderMode(const std::string& s, RenderMode* out) {
             return true;
         }
     return false;
+}
+
+int objectIdAt(const Image& ids, int x, int y) {
+    const uint8_t* p = ids.pixel(x, y);
+    return int(p[0]) + 256 * int(p[1]) + kHitNone;
 }
 
 static bool anyMirror(const Scene& s) {
@@ -144,9 +153,19 @@ std::vector<std::string> describeFeatures(const ShaderFeatures& f) {
     return lines;
 }
 
+// MODE_SHADED, MODE_NORMALS, ... MODE_ID: the names the shaders compare MODE with, made from
+// the command line's names so that RenderMode is the one list of modes.
+static std::string modeMacro(int mode) {
+    std::string name = "MODE_";
+    for (const char* c = kModeNames[mode]; *c; ++c)
+        name += char(std::toupper(static_cast<unsigned char>(*c)));
+    return name;
+}
+
 // The macros in the order the prefix lists them.
-static std::vector<std::pair<const char*, long>> featureDefines(const ShaderFeatures& f) {
-    std::vector<std::pair<const char*, long>> d = {{"UBER", f.uber}, {"MODE", long(f.mode)}};
+static std::vector<std::pair<std::string, long>> featureDefines(const ShaderFeatures& f) {
+    std::vector<std::pair<std::string, long>> d = {{"UBER", f.uber}, {"MODE", long(f.mode)}};
+    for (int m = 0; m < kRenderModeCount; ++m) d.push_back({modeMacro(m), m});
     static const char* shapeDefs[kShapeTypeCount] = {"HAS_SPHERE", "HAS_BOX", "HAS_TORUS",
                                                      "HAS_CAPSULE", "HAS_CYLINDER"};
     for (int i = 0; i < kShapeTypeCount; ++i) d.push_back({shapeDefs[i], (f.shapes >> i) & 1});
@@ -167,6 +186,9 @@ std::string shaderPrefix(const ShaderFeatures& f) {
     std::ostringstream o;
     o << (f.objectsInStorage ? "#version 430 core\n" : "#version 330 core\n");
     for (const auto& [name, value] : featureDefines(f)) o << "#define " << name << ' ' << value << '\n';
+    // A march's object id is a float: an object's index or one of these, sdf.h's own values.
+    o << "const float HIT_GROUND = " << kHitGround << ".0;\n"
+      << "const float HIT_NONE = " << kHitNone << ".0;\n";
     return o.str();
 }
 

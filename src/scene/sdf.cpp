@@ -1,4 +1,5 @@
-// sdf.cpp — signed distance functions and the scene's CSG chain. Twin of shaders/sdf.glsl.
+// sdf.cpp — signed distance functions and the scene's CSG chain: the CPU mirror of
+// shaders/sdf.glsl and shaders/scene_map.glsl (see sdf.h for where the two differ).
 #include "marchbox/scene/sdf.h"
 
 #include <glm/gtc/quaternion.hpp>

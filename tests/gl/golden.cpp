@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 #include <algorithm>
-#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -34,14 +33,6 @@ std::vector<std::string> sceneNames() {
         if (e.path().extension() == ".txt") names.push_back(e.path().stem().string());
     std::sort(names.begin(), names.end());
     return names;
-}
-
-double psnr(const Image& a, const Image& b) {
-    double se = 0;
-    for (size_t i = 0; i < a.rgba.size(); ++i)
-        if (i % 4 != 3) se += std::pow(double(a.rgba[i]) - double(b.rgba[i]), 2.0);
-    double mse = se / (3.0 * a.width * a.height);
-    return mse > 0 ? 10 * std::log10(255.0 * 255.0 / mse) : 99.0;
 }
 
 Scene loadSceneOrDie(const std::string& relative) {

@@ -27,7 +27,6 @@ Image renderOrDie(const Scene& scene, const RenderOptions& options = {},
                   int width = kGoldenWidth, int height = kGoldenHeight);
 
 std::vector<std::string> sceneNames();                // every scenes/*.txt, by stem, sorted
-double psnr(const Image& a, const Image& b);           // over RGB, in dB; 99 when identical
 
 // Compares with tests/golden/NAME.png. On a mismatch writes NAME.actual.png and NAME.diff.png
 // under build/test-output/. With MARCHBOX_UPDATE_GOLDEN=1 it rewrites the golden instead.

@@ -42,19 +42,14 @@ constexpr double kMaxDisagreement = 0.01;
 constexpr double kMinObjectShare = 0.25;
 constexpr int kMinTypePixels = 300;
 
-int gpuObjectAt(const Image& img, int x, int row) {
-    const uint8_t* p = img.pixel(x, row);
-    return int(p[0]) + 256 * int(p[1]) - 2;  // MODE 6 writes id + 2: 0 miss, 1 ground
-}
-
 // A silhouette pixel: its 3x3 neighbourhood in the GPU's view holds two ids. Counted apart in
 // the report only, to tell an edge disagreement from a wrong shape.
 bool silhouette(const Image& img, int x, int row) {
-    int id = gpuObjectAt(img, x, row);
+    int id = objectIdAt(img, x, row);
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
             int xx = std::clamp(x + dx, 0, img.width - 1), rr = std::clamp(row + dy, 0, img.height - 1);
-            if (gpuObjectAt(img, xx, rr) != id) return true;
+            if (objectIdAt(img, xx, rr) != id) return true;
         }
     return false;
 }
@@ -98,7 +93,7 @@ TEST_P(Agreement, CpuAndGpuHitTheSameObject) {
             glm::vec2 pixel(x + 0.5f, kHeight - 1 - row + 0.5f);
             glm::vec3 dir = cameraRay(basis, pixel, glm::vec2(kWidth, kHeight));
             int cpu = castRay(sdf, basis.pos, dir, scene.render.steps, scene.render.epsilon, far).object;
-            int gpu = gpuObjectAt(ids, x, row);
+            int gpu = objectIdAt(ids, x, row);
             if (cpu < 0 && gpu < 0) continue;  // floor or sky on both sides
             ++objectPixels;
             bool edge = silhouette(ids, x, row), agreed = cpu == gpu;

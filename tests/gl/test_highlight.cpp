@@ -40,7 +40,7 @@ std::vector<int> stepsToObject(const Image& ids, int object) {
     std::vector<int> d(size_t(kW) * kH, kFar);
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x)
-            if (ids.pixel(x, y)[0] == object + 2) d[size_t(y) * kW + size_t(x)] = 0;  // 0 miss, 1 ground
+            if (objectIdAt(ids, x, y) == object) d[size_t(y) * kW + size_t(x)] = 0;
     for (int pass = 0; pass < 2; ++pass)  // two sweeps give the exact city-block distance
         for (int k = 0; k < kW * kH; ++k) {
             int i = pass ? kW * kH - 1 - k : k, x = i % kW, dx = pass ? 1 : -1, dy = pass ? kW : -kW;

@@ -7,7 +7,6 @@
 #include "marchbox/gl/quality_preset.h"
 
 #include <gtest/gtest.h>
-#include <cmath>
 
 using namespace mb;
 
@@ -17,12 +16,6 @@ Image renderPreset(Scene scene, QualityPreset p, int w, int h) {
     RenderOptions o;
     applyQualityPreset(p, &scene.render, &o);
     return test::renderOrDie(scene, o, w, h);
-}
-
-Scene converged(Scene s) {
-    s.render.steps = 4096;
-    s.render.epsilon = 1e-5f;
-    return s;
 }
 
 }  // namespace
@@ -64,13 +57,13 @@ TEST(QualityPreset, ShadowsFromTheLightsAtLeastHalfAsBrightAsTheBrightest) {
 
 class DraftPreset : public ::testing::TestWithParam<std::string> {};
 
-// The bar is 28 dB against the converged render at 480x270, the size it is measured at
+// Draft's bar is 28 dB against the converged render at 480x270, the size it is measured at
 // (a stretched draft loses more at smaller sizes, where every pixel is an edge).
 TEST_P(DraftPreset, Within28dBOfConverged) {
     Scene scene = test::loadSceneOrDie("scenes/" + GetParam() + ".txt");
     Image draft = renderPreset(scene, QualityPreset::Draft, 480, 270);
     Image reference = test::renderOrDie(converged(scene), {}, 480, 270);
-    double db = test::psnr(draft, reference);
+    double db = psnr(draft, reference);
     std::printf("[ measured ] draft %-12s %.1f dB\n", GetParam().c_str(), db);
     EXPECT_GE(db, 28.0);
 }
@@ -86,8 +79,8 @@ TEST(QualityPreset, FinalIsNoWorseThanNormal) {
         Scene ref = converged(scene);
         ref.render.aa = 4;
         Image reference = test::renderOrDie(ref, {}, 240, 135);
-        double normal = test::psnr(renderPreset(scene, QualityPreset::Normal, 240, 135), reference);
-        double final = test::psnr(renderPreset(scene, QualityPreset::Final, 240, 135), reference);
+        double normal = psnr(renderPreset(scene, QualityPreset::Normal, 240, 135), reference);
+        double final = psnr(renderPreset(scene, QualityPreset::Final, 240, 135), reference);
         std::printf("[ measured ] %-12s normal %.1f dB, final %.1f dB\n", name, normal, final);
         EXPECT_GE(final, normal) << name;
     }

@@ -49,12 +49,6 @@ constexpr double kMaxOpen = 3.0;
 constexpr double kMaxPenumbraMean = 2.5;
 constexpr double kMaxPenumbra = 12.0;
 
-
-int gpuObjectAt(const Image& ids, int x, int row) {
-    const uint8_t* p = ids.pixel(x, row);
-    return int(p[0]) + 256 * int(p[1]) - 2;  // the id view writes id + 2: 0 miss, 1 ground
-}
-
 // Both sides see one object, and the reference sees one region (reference_render.h), in the
 // whole 3x3 block: no edge is near, so a sub-pixel shift between the two cannot show.
 bool interior(const Image& ids, const ReferenceImage& ref, int x, int row) {
@@ -62,7 +56,7 @@ bool interior(const Image& ids, const ReferenceImage& ref, int x, int row) {
     uint64_t region = ref.regionAt(x, row);
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx)
-            if (gpuObjectAt(ids, x + dx, row + dy) != id || ref.objectAt(x + dx, row + dy) != id ||
+            if (objectIdAt(ids, x + dx, row + dy) != id || ref.objectAt(x + dx, row + dy) != id ||
                 ref.regionAt(x + dx, row + dy) != region)
                 return false;
     return true;
@@ -92,7 +86,7 @@ Agreement compare(const Image& gpu, const Image& ids, const ReferenceImage& ref)
     Agreement a;
     int same = 0;
     for (int row = 0; row < kH; ++row)
-        for (int x = 0; x < kW; ++x) same += gpuObjectAt(ids, x, row) == ref.objectAt(x, row);
+        for (int x = 0; x < kW; ++x) same += objectIdAt(ids, x, row) == ref.objectAt(x, row);
     a.idShare = double(same) / (kW * kH);
     std::vector<double> perPixel;
     double sum = 0;

@@ -2,10 +2,13 @@
 // holds only the code the scene needs.
 #include "golden.h"
 
+#include "marchbox/gl/shader.h"
 #include "marchbox/gl/shader_source.h"
 
 #include <gtest/gtest.h>
 #include <filesystem>
+#include <fstream>
+#include <regex>
 #include <set>
 
 using namespace mb;
@@ -62,6 +65,21 @@ TEST(Specialised, KeepsOnlyTheShadowKindInUse) {
     EXPECT_NE(uber.find("uShadows"), std::string::npos);
 }
 
+// The conditionals read an unknown name as 0, so a misspelt mode would quietly be the shaded
+// view: every MODE_ name march.frag tests must be one the prefix defines from RenderMode.
+TEST(Specialised, EveryModeNameTheShaderTestsIsDefined) {
+    std::ifstream in(shaderDir() + "/march.frag");
+    std::string text((std::istreambuf_iterator<char>(in)), {}), prefix = shaderPrefix({});
+    const std::regex name("MODE_[A-Z]+");
+    const std::sregex_iterator end;
+    int tested = 0;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), name); it != end; ++it) {
+        EXPECT_NE(prefix.find("#define " + it->str() + " "), std::string::npos) << it->str();
+        ++tested;
+    }
+    EXPECT_GE(tested, kRenderModeCount - 1) << "march.frag names the views it draws";
+}
+
 // Past the uniform-block limit objects move to a storage buffer; nothing is capped silently.
 TEST(Specialised, FourThousandNinetySixSpheresRender) {
     Scene s;
@@ -80,7 +98,7 @@ TEST(Specialised, FourThousandNinetySixSpheresRender) {
     Image ids = test::renderOrDie(s, test::options(RenderMode::ObjectId), 320, 180);
     std::set<int> seen;
     for (int y = 0; y < ids.height; ++y)
-        for (int x = 0; x < ids.width; ++x) seen.insert(int(ids.pixel(x, y)[0]) + 256 * ids.pixel(x, y)[1] - 2);
+        for (int x = 0; x < ids.width; ++x) seen.insert(objectIdAt(ids, x, y));
     std::string error;
     if (seen.size() < 4050) savePng(test::outputPath("spheres4096.ids.png"), ids, &error);
     // About 2 pixels a sphere: a few at the edges may fall between pixel centres.

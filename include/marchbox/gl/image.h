@@ -1,4 +1,5 @@
-// marchbox/gl/image.h — RGBA8 images, PNG files and the comparisons golden tests use.
+// marchbox/gl/image.h — RGBA8 images, PNG files, and the comparisons the tests and the render
+// report use.
 #pragma once
 
 #include <cstdint>
@@ -30,5 +31,12 @@ struct ImageDiff {
 
 // Requires equal sizes; the caller checks.
 ImageDiff diffImages(const Image& a, const Image& b);
+
+// Root-mean-square difference over the RGB channels, in 0..255 units. Requires equal sizes.
+double rmse(const Image& a, const Image& b);
+// Peak signal-to-noise ratio over RGB in dB, 20·log10(255 / rmse). Identical pictures (rmse 0)
+// score +infinity, the true limit: no stand-in figure that a real difference could also reach.
+double psnrFromRmse(double rmse);
+double psnr(const Image& a, const Image& b);
 
 }  // namespace mb

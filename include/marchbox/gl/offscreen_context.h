@@ -1,4 +1,4 @@
-// marchbox/gl/offscreen_context.h — an OpenGL core context with no window, through OSMesa.
+// marchbox/gl/offscreen_context.h — an OpenGL core context with no window, through OSMesa or EGL.
 #pragma once
 
 #include <memory>

@@ -6,6 +6,7 @@
 // every feature and reads the counts and switches from uniforms instead.
 #pragma once
 
+#include "marchbox/gl/image.h"
 #include "marchbox/gl/scene_compiler.h"
 #include "marchbox/gl/shader_lines.h"
 #include "marchbox/scene/scene.h"
@@ -19,6 +20,10 @@ enum class RenderMode : int { Shaded = 0, Normals, Depth, Steps, Ao, Shadow, Obj
 constexpr int kRenderModeCount = 7;
 const char* renderModeName(RenderMode m);               // "shaded", "normals", ... "id"
 bool parseRenderMode(const std::string& s, RenderMode* out);
+// The id view (RenderMode::ObjectId) writes a pixel's object id minus kHitNone (0 nothing, 1 the
+// ground, 2 the first object) as red + 256·green; this reads it back: the object's index,
+// kHitGround or kHitNone.
+int objectIdAt(const Image& ids, int x, int y);
 
 // Renderer knobs beyond the scene's `render` record; defaults from docs/render-report.md.
 struct RenderQuality {
@@ -85,7 +90,8 @@ ShaderFeatures shaderFeatures(const Scene& scene, RenderMode mode, bool uber,
 // "fog, ambient occlusion, ground".
 std::vector<std::string> describeFeatures(const ShaderFeatures& f);
 
-// The #version line and the #define block for a feature set.
+// The #version line, the #define block for a feature set (with MODE_SHADED ... MODE_ID, the names
+// of RenderMode's values) and the constants HIT_GROUND and HIT_NONE (sdf.h's kHitGround, kHitNone).
 std::string shaderPrefix(const ShaderFeatures& f);
 
 // The complete fragment source: prefix plus shaders/march.frag with its includes expanded.

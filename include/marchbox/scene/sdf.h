@@ -1,10 +1,19 @@
-// marchbox/scene/sdf.h — the C++ twin of shaders/sdf.glsl and shaders/scene_map.glsl.
+// marchbox/scene/sdf.h — the CPU mirror of the shaders' distances (shaders/sdf.glsl and
+// shaders/scene_map.glsl), for picking, the simulator and the tests that hold the two together.
 //
 // [SECTION] Primitives: signed distance at the origin; the caller moves and turns the point
 // [SECTION] Operators
 // [SECTION] Scene map: the CSG chain of a whole scene, with per-object bounding spheres
 //
-// Every function here has a same-named GLSL function; tests check that both agree.
+// The primitives, the operators, sdObjectLocal and mapObjects have same-named GLSL functions
+// that compute the same distances; tests check that both agree. The rest are not twins:
+//   mapScene     is map() in GLSL;
+//   sceneNormal  takes central differences (six samples), the shader's calcNormal a tetrahedron
+//                (four), so the two agree only to within the difference of the estimates;
+//   castRay      marches the ground with the objects, where the shader's castRay meets the ground
+//                analytically and marches the objects only inside their bounds;
+//   objectBounds is computed here for the shader too (its uBoundLo and uBoundHi); the rest have
+//                no GLSL counterpart.
 #pragma once
 
 #include "marchbox/scene/scene.h"
@@ -96,8 +105,10 @@ struct RayHit {
     int steps = 0;
 };
 
-// Sphere tracing, as castRay in the shader: a hit where the distance drops below epsilon
-// (at once when the origin is inside a surface), a miss past maxDistance or maxSteps.
+// Sphere tracing of mapScene, the ground included: a hit where the distance drops below epsilon
+// (at once when the origin is inside a surface), a miss past maxDistance or maxSteps. The
+// shader's castRay meets the ground analytically instead and counts a ray out of steps as
+// grazing the object it is nearest to: the two agree where a march converges.
 RayHit castRay(const SceneSdf& sdf, glm::vec3 origin, glm::vec3 dir, int maxSteps, float epsilon,
                float maxDistance);
 

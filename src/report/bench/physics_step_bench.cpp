@@ -1,7 +1,7 @@
 // physics_step_bench.cpp — times PhysicsWorld::step on the report's pile, for profiling.
 //
 //   physics_step_bench COUNT STEPS [FROM [THREADS [RADIUS]]]   (pileScene(COUNT, 7, RADIUS), default
-//   settings; RADIUS 0.2 unless given, the report's pile)
+//   settings; RADIUS 0.2 unless given, the headline pile of the physics report)
 // Prints ms per step, the last step's contacts and awake bodies, and a state checksum so that
 // an optimisation can be checked to leave the results bit for bit alone. Small STEPS under
 // valgrind --tool=callgrind give deterministic instruction counts; with --instr-atstart=no only
