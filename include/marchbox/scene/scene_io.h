@@ -1,4 +1,4 @@
-// marchbox/scene/scene_io.h — reading and writing scene files (../shared/SCENE_FORMAT.md).
+// marchbox/scene/scene_io.h — reading and writing scene files (docs/scene-format.md).
 //
 // Loading parses into a fresh Scene and hands it over only when the whole file is valid, so a
 // failed load never touches the scene the caller already has. Saving is canonical: every key,
