@@ -14,51 +14,57 @@ SceneView::SceneView() : shaders_(shaderDir()) {}
 
 namespace {
 
-struct Viewed {  // a scene and the options it is drawn with, at a quality preset
-    Scene scene;
-    RenderOptions options;
-};
-
-Viewed atQuality(const Scene& scene, const RenderOptions& options, QualityPreset quality) {
-    Viewed v{scene, options};
-    applyQualityPreset(quality, &v.scene.render, &v.options);
-    return v;
-}
-
 std::unique_ptr<Renderer> newRenderer(std::string* error) {
     auto r = std::make_unique<Renderer>();
     return r->init(error) ? std::move(r) : nullptr;
 }
 
+// The scene and options at a quality preset, as `renderer` would draw them.
+SceneRequest requestAt(const Renderer& renderer, Scene scene, RenderOptions options,
+                       QualityPreset quality) {
+    applyQualityPreset(quality, &scene.render, &options);
+    return renderer.requestFor(std::move(scene), options);
+}
+
 }  // namespace
+
+std::optional<SceneRequest> SceneView::draftRequest(const Scene& scene,
+                                                    const RenderOptions& options,
+                                                    QualityPreset quality) const {
+    // Previews come from draft_ unless the view is at draft quality already.
+    if (!draft_ || quality == QualityPreset::Draft) return std::nullopt;
+    return requestAt(*draft_, scene, options, QualityPreset::Draft);
+}
+
+SceneView::Change SceneView::change(const Scene& scene, const RenderOptions& options,
+                                    QualityPreset quality) const {
+    return {requestAt(*renderer_, scene, options, quality), draftRequest(scene, options, quality)};
+}
 
 bool SceneView::init(const Scene& scene, std::string* error) {
     renderer_ = newRenderer(error);
     if (!renderer_) return false;
-    Viewed v = atQuality(scene, options_, quality_);
-    // A scene whose shader fails still opens: the log window says why.
-    if (!renderer_->setScene(v.scene, v.options, &log_)) emitEvent("shader-error");
-    renderer_->prepareUber(v.scene, v.options);  // the stand-in while later edits compile
-    aa_ = v.scene.render.aa;
     std::string ignored;
     draft_ = newRenderer(&ignored);
-    requestDraft(scene);
+    Change c = change(scene, options_, quality_);
+    // A scene whose shader fails still opens: the log window says why.
+    if (!renderer_->setScene(c.full, &log_)) emitEvent("shader-error");
+    renderer_->prepareUber(c.full);  // the stand-in while later edits compile
+    aa_ = c.full.scene.render.aa;
+    requestDraft(std::move(c.draft));
     return true;
 }
 
 // Compiles on the driver's threads like the scene's own program; until it is built, or where
 // it fails, renderer_ draws the previews.
-void SceneView::requestDraft(const Scene& scene) {
-    if (!draft_ || quality_ == QualityPreset::Draft) return;
-    Viewed d = atQuality(scene, options_, QualityPreset::Draft);
+void SceneView::requestDraft(std::optional<SceneRequest> draft) {
+    if (!draft) return;
     std::string ignored;
-    draftCurrent_ = draft_->requestScene(d.scene, d.options, &ignored);
+    draftCurrent_ = draft_->requestScene(std::move(*draft), &ignored);
 }
 
-bool SceneView::draftWouldCompile(const Scene& scene, const RenderOptions& options, QualityPreset quality) const {
-    if (!draft_ || quality == QualityPreset::Draft) return false;
-    Viewed d = atQuality(scene, options, QualityPreset::Draft);
-    return draft_->wouldCompile(d.scene, d.options);
+bool SceneView::wouldCompile(const Change& c) const {
+    return renderer_->wouldCompile(c.full) || (c.draft && draft_->wouldCompile(*c.draft));
 }
 
 Renderer* SceneView::draftRenderer() const {
@@ -73,10 +79,10 @@ void SceneView::sync(const Scene& scene, uint64_t version, const RenderOptions& 
     // After a failure, a scene that changes every frame (a running simulation) would recompile
     // the broken shader every frame: try again at most once a second.
     if (now < retryAt_ && sameView) return;
-    Viewed v = atQuality(scene, options, quality);
+    Change c = change(scene, options, quality);
     // A driver without background compiles blocks while it builds, the draft program too: the
     // UI draws its note first.
-    if (!announced_ && (renderer_->wouldCompile(v.scene, v.options) || draftWouldCompile(scene, options, quality))) {
+    if (!announced_ && wouldCompile(c)) {
         announced_ = true;
         return;
     }
@@ -84,10 +90,11 @@ void SceneView::sync(const Scene& scene, uint64_t version, const RenderOptions& 
     options_ = options;
     quality_ = quality;
     version_ = version;
-    requestDraft(scene);
+    requestDraft(std::move(c.draft));
+    const int aa = c.full.scene.render.aa;
     std::string error;
-    if (renderer_->requestScene(v.scene, v.options, &error)) {
-        aa_ = v.scene.render.aa;
+    if (renderer_->requestScene(std::move(c.full), &error)) {
+        aa_ = aa;
         ++content_;
         return;
     }
@@ -118,12 +125,12 @@ void SceneView::pollShaders(const Scene& scene, double now) {
 bool SceneView::reload(const Scene& scene) {
     auto fresh = std::make_unique<Renderer>();
     std::string error;
-    Viewed v = atQuality(scene, options_, quality_);
-    if (fresh->init(&error) && fresh->setScene(v.scene, v.options, &error)) {
+    if (fresh->init(&error) &&
+        fresh->setScene(requestAt(*fresh, scene, options_, quality_), &error)) {
         renderer_ = std::move(fresh);
         std::string ignored;
         draft_ = newRenderer(&ignored);  // the old one's program has the old shaders
-        requestDraft(scene);
+        requestDraft(draftRequest(scene, options_, quality_));
         ++content_;
         log_.clear();
         retryAt_ = 0.0;

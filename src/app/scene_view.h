@@ -11,6 +11,7 @@
 #include "scene_image.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace mb {
@@ -39,10 +40,18 @@ public:
     const ShaderFeatures* features() const { return renderer_->features(); }  // of the one drawing
 
 private:
+    // One change as the two renderers draw it, each request looked at once.
+    struct Change {
+        SceneRequest full;                  // renderer_'s, at the view's quality
+        std::optional<SceneRequest> draft;  // draft_'s previews; none at draft quality
+    };
+    Change change(const Scene& scene, const RenderOptions& options, QualityPreset quality) const;
+    std::optional<SceneRequest> draftRequest(const Scene& scene, const RenderOptions& options,
+                                             QualityPreset quality) const;
+    bool wouldCompile(const Change& c) const;  // either program would have to be built
     bool reload(const Scene& scene);
-    void requestDraft(const Scene& scene);
+    void requestDraft(std::optional<SceneRequest> draft);
     Renderer* draftRenderer() const;  // null when previews draw with renderer_
-    bool draftWouldCompile(const Scene& scene, const RenderOptions& options, QualityPreset quality) const;
 
     std::unique_ptr<Renderer> renderer_;  // at quality_
     std::unique_ptr<Renderer> draft_;     // previews; its failures only leave them to renderer_

@@ -149,55 +149,57 @@ void Renderer::setUniforms(const Scene& scene, const GpuScene& g, const ShaderFe
     p.set("uAo", int(scene.render.ao));
 }
 
-// The scene as drawn: the editor's F key hides fog without touching the file's value.
-// Copies only when fog is hidden: a running simulation asks for a scene every frame.
-static const Scene& viewedScene(const Scene& scene, const RenderOptions& options, Scene* fogless) {
-    if (options.fog) return scene;
-    *fogless = scene;
-    fogless->render.fog = 0.0f;
-    return *fogless;
+bool SceneRequest::fits(const ShaderFeatures& f) const {
+    return !f.uber || int(scene.objects.size()) <= f.objects;
 }
 
-bool Renderer::featuresFor(const Scene& scene, const RenderOptions& options, ShaderFeatures* f,
-                           std::string* error) const {
-    *f = shaderFeatures(scene, options.mode, options.uber, maxUniformBlock_, options.quality);
-    f->outline = options.outline && options.mode == RenderMode::Shaded;
-    if (f->uber && int(scene.objects.size()) > f->objects) {
-        *error = "the uber shader holds at most " + std::to_string(f->objects) + " objects";
-        return false;
-    }
-    return true;
+ShaderFeatures Renderer::featuresFor(const Scene& scene, const RenderOptions& options) const {
+    ShaderFeatures f =
+        shaderFeatures(scene, options.mode, options.uber, maxUniformBlock_, options.quality);
+    f.outline = options.outline && options.mode == RenderMode::Shaded;
+    return f;
 }
 
-void Renderer::use(Program* p, const ShaderFeatures& f, const Scene& scene, const RenderOptions& options) {
+// The editor's F key hides fog without touching the file's value.
+SceneRequest Renderer::requestFor(Scene scene, const RenderOptions& options) const {
+    if (!options.fog) scene.render.fog = 0.0f;
+    RenderOptions uber = options;
+    uber.uber = true;
+    ShaderFeatures features = featuresFor(scene, options), standIn = featuresFor(scene, uber);
+    return {std::move(scene), options, std::move(features), std::move(standIn)};
+}
+
+static bool fitsOrSays(const SceneRequest& r, std::string* error) {
+    if (r.fits(r.features)) return true;
+    *error = "the uber shader holds at most " + std::to_string(r.features.objects) + " objects";
+    return false;
+}
+
+void Renderer::use(Program* p, const ShaderFeatures& f, const SceneRequest& r) {
     current_ = p;
-    samples_ = options.mode == RenderMode::ObjectId ? 1 : scene.render.aa;  // ids do not average
-    post_ = options.mode == RenderMode::ObjectId ? PostMode::None : options.post;
+    const bool ids = r.options.mode == RenderMode::ObjectId;
+    samples_ = ids ? 1 : r.scene.render.aa;  // ids do not average
+    post_ = ids ? PostMode::None : r.options.post;
     checkerboard_ = f.checkerboard;
-    GpuScene g = packScene(scene);
+    GpuScene g = packScene(r.scene);
     upload(g, f);
-    setUniforms(scene, g, f, options.quality);
+    setUniforms(r.scene, g, f, r.options.quality);
 }
 
-bool Renderer::setScene(const Scene& original, const RenderOptions& options, std::string* error) {
-    Scene fogless;
-    const Scene& scene = viewedScene(original, options, &fogless);
-    ShaderFeatures f;
-    if (!featuresFor(scene, options, &f, error)) return false;
-    Program* p = programFor(f, error);
+bool Renderer::setScene(const SceneRequest& request, std::string* error) {
+    if (!fitsOrSays(request, error)) return false;
+    Program* p = programFor(request.features, error);
     if (!p) return false;
-    use(p, f, scene, options);
+    use(p, request.features, request);
     return true;
 }
 
-bool Renderer::requestScene(const Scene& original, const RenderOptions& options, std::string* error) {
-    Scene fogless;
-    const Scene& scene = viewedScene(original, options, &fogless);
-    ShaderFeatures f;
-    if (!featuresFor(scene, options, &f, error)) return false;
+bool Renderer::requestScene(SceneRequest request, std::string* error) {
+    if (!fitsOrSays(request, error)) return false;
+    const ShaderFeatures& f = request.features;
     if (Cached* c = cached(f)) {
         pending_.reset();
-        use(c->program.get(), f, scene, options);
+        use(c->program.get(), f, request);
         return true;
     }
     if (failed_ && failed_->features == f) {  // a running simulation asks every frame
@@ -209,16 +211,11 @@ bool Renderer::requestScene(const Scene& original, const RenderOptions& options,
         if (!startBuild(f, build.get(), error)) return false;
         pending_ = std::move(build);
     }
-    pending_->scene = scene;
-    pending_->options = options;
-    // Meanwhile the uber shader, if it is built, draws the new scene; else the old program
+    // Meanwhile the uber program, if it is built, draws the new scene; else the old program
     // keeps drawing the old one.
-    RenderOptions uber = options;
-    uber.uber = true;
-    ShaderFeatures u;
-    std::string ignored;
-    if (featuresFor(scene, uber, &u, &ignored))
-        if (Cached* c = cached(u)) use(c->program.get(), u, scene, uber);
+    if (request.fits(request.standIn))
+        if (Cached* c = cached(request.standIn)) use(c->program.get(), request.standIn, request);
+    pending_->request = std::move(request);
     return true;
 }
 
@@ -235,28 +232,22 @@ bool Renderer::poll(std::string* error) {
         failed_ = Failure{b->features, *error};
         return false;
     }
-    use(p, b->features, b->scene, b->options);
+    use(p, b->features, b->request);
     return true;
 }
 
-bool Renderer::wouldCompile(const Scene& original, const RenderOptions& options) const {
-    Scene fogless;
-    ShaderFeatures f;
-    std::string ignored;
-    if (!featuresFor(viewedScene(original, options, &fogless), options, &f, &ignored)) return false;
-    auto same = [&](const auto& held) { return held.features == f; };
+bool Renderer::wouldCompile(const SceneRequest& request) const {
+    if (!request.fits(request.features)) return false;
+    auto same = [&](const auto& held) { return held.features == request.features; };
     return std::none_of(cache_.begin(), cache_.end(), same) && !(pending_ && same(*pending_)) &&
            !(failed_ && same(*failed_));
 }
 
-void Renderer::prepareUber(const Scene& scene, const RenderOptions& options) {
-    RenderOptions uber = options;
-    uber.uber = true;
-    ShaderFeatures u;
-    std::string ignored;
-    Scene fogless;
-    if (uberBuild_ || !featuresFor(viewedScene(scene, uber, &fogless), uber, &u, &ignored) || cached(u)) return;
+void Renderer::prepareUber(const SceneRequest& request) {
+    const ShaderFeatures& u = request.standIn;
+    if (uberBuild_ || !request.fits(u) || cached(u)) return;
     auto build = std::make_unique<Build>();
+    std::string ignored;
     if (startBuild(u, build.get(), &ignored)) uberBuild_ = std::move(build);
 }
 

@@ -3,6 +3,7 @@
 
 #include "physics_report_cases.h"
 #include "report_plot.h"
+#include "report_template.h"
 
 #include <cctype>
 #include <cstdio>
@@ -24,6 +25,8 @@ std::string fmt(const char* format, double v) {
     return buf;
 }
 
+constexpr double kZeroErrorDrawnAt = 1e-16;  // a log plot has no 0
+
 std::string slug(const std::string& name) {
     std::string s;
     for (char c : name) s += std::isalnum(static_cast<unsigned char>(c)) ? char(std::tolower(c)) : '-';
@@ -43,7 +46,8 @@ std::string workPrecision(const AnalyticCase& c, const std::string& docs) {
            << " | " << fmt("%.3g", p.error) << " |\n";
         if (!series.count(v.series)) order.push_back(v.series);
         series[v.series].name = v.series;
-        series[v.series].points.emplace_back(p.secondsPerSimSecond, std::max(p.error, 1e-16));
+        const double drawn = std::max(p.error, kZeroErrorDrawnAt);
+        series[v.series].points.emplace_back(p.secondsPerSimSecond, drawn);
     }
     std::vector<PlotSeries> plot;
     for (const std::string& name : order) plot.push_back(series[name]);
@@ -82,34 +86,45 @@ std::string bulletSection() {
     return out;
 }
 
+std::string counted(int n, const char* what) {
+    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+}
+
+// The defaults the prose describes, from the settings themselves.
+void describeSettings(TemplateValues* v) {
+    const PhysicsSettings defaults;
+    (*v)["dt"] = "1/" + fmt("%.0f", 1.0 / defaults.dt);
+    (*v)["substeps"] = counted(defaults.substeps, "substep");
+    (*v)["iterations"] = counted(defaults.iterations, "iteration");
+    (*v)["slop"] = fmt("%g mm", 1000 * defaults.linearSlop);
+    (*v)["zero_error"] = fmt("%g", kZeroErrorDrawnAt);
+}
+
 }  // namespace
 
 int runPhysicsReport(const std::string& repoRoot) {
     const std::string docs = repoRoot + "/docs";
+    std::string text, md, error;
+    if (!readReportTemplate(repoRoot, "physics-report.md", &text, &error)) {
+        std::cerr << error << '\n';
+        return 1;
+    }
     std::error_code ec;
     std::filesystem::create_directories(docs, ec);
-    std::ostringstream md;
-    md << "# Physics report\n\nReproduce: `build/marchbox report physics` (RelWithDebInfo build). "
-          "Every number below was measured in one run, on one core unless a row says 2 threads.\n\n"
-       << "Machine: " << machineDescription() << "; "
-       << "compiler " << __VERSION__ << ".\n\n"
-       << "## Work precision\n\nEach analytic case runs under every step size (4 substeps, 1 iteration), "
-          "every substep count and iteration count (at dt = 1/120), and both integrators: "
-          "*exact gravity* (the default, x += v·h − ½·g·h² in free flight) and *symplectic Euler* "
-          "(Box2D's). Defaults: dt = 1/120 s, 4 substeps, 1 iteration. Errors of 0 are drawn at 1e-16. "
-          "The *old* series is the method before impacts were resolved at their time of impact "
-          "(src/physics/impacts.cpp) and curved static surfaces followed every substep: Box2D's "
-          "end-of-step restitution and each contact's normal fixed for the step.\n\n";
+    TemplateValues v = {{"machine", machineDescription()}, {"compiler", __VERSION__}};
+    describeSettings(&v);
     std::cerr << "physics report: work precision\n";
-    for (const AnalyticCase& c : analyticCases()) md << workPrecision(c, docs);
+    std::string& cases = v["work_precision"];
+    for (const AnalyticCase& c : analyticCases()) cases += workPrecision(c, docs);
     std::cerr << "physics report: stiff and extreme suite\n";
-    md << "## Stiff and extreme suite\n\nDefault settings unless the case says otherwise. Max penetration "
-          "is the deepest contact overlap seen at the end of any step (the slop, 5 mm or r/20, is "
-          "allowed); energy drift is (E_end − E_0)/|E_0| of kinetic plus potential energy.\n\n"
-       << extremeTable() << "\n## Bullet\n\n";
+    v["extreme_table"] = extremeTable();
     std::cerr << "physics report: Bullet\n";
-    md << bulletSection();
-    if (!writeTextFile(docs + "/physics-report.md", md.str())) {
+    v["bullet"] = bulletSection();
+    if (!fillTemplate(text, v, &md, &error)) {
+        std::cerr << "physics-report.md: " << error << '\n';
+        return 1;
+    }
+    if (!writeTextFile(docs + "/physics-report.md", md)) {
         std::cerr << "cannot write " << docs << "/physics-report.md\n";
         return 1;
     }

@@ -4,6 +4,7 @@
 #include "marchbox/report/render_report.h"
 
 #include "report_plot.h"
+#include "report_template.h"
 
 #include "marchbox/gl/offscreen_context.h"
 #include "marchbox/gl/quality_preset.h"
@@ -22,8 +23,10 @@ namespace mb {
 
 namespace {
 
-constexpr int kWidth = 480, kHeight = 270;  // the size draft's 2x-at-28-dB bar is set at
+constexpr int kWidth = 480, kHeight = 270;  // the size draft's bar is set at
 constexpr int kFrames = 9;  // a median of 5 still moved a row by a third when the machine stirred
+// Draft's bar on every example scene: this much faster than the scene as written, at this PSNR.
+constexpr double kDraftSpeedUp = 2.0, kDraftDb = 28.0;
 
 std::string fmt(const char* format, double v) {
     char buf[64];
@@ -119,14 +122,10 @@ Scene sphereField(int n) {
     return s;
 }
 
-std::string scalingSection(Renderer& r, const std::string& docs) {
+std::string scalingTable(Renderer& r, const std::string& docs) {
     std::ostringstream md;
-    md << "Uber holds at most the uniform block's worth of objects (n/a past it). Without the grid, "
-          "up to " << kGridMinObjects << " objects are compiled straight-line and more are a loop "
-          "over every object at every step; llvmpipe ends any shader invocation after 65,535 loop "
-          "iterations, so those frames are also wrong, not only slow. Where the compiled column "
-          "stops beating the grid is kGridMinObjects.\n\n"
-       << "| spheres | uber ms | specialised, no grid ms | specialised + grid ms |\n| ---: | ---: | ---: | ---: |\n";
+    md << "| spheres | uber ms | specialised, no grid ms | specialised + grid ms |\n"
+          "| ---: | ---: | ---: | ---: |\n";
     PlotSeries seriesUber{"uber", {}, true, {}}, seriesFlat{"specialised", {}, true, {}}, seriesGrid{"specialised + grid", {}, true, {}};
     // A variant past 20 s a frame is not timed at larger counts: it only gets slower.
     double lastFlat = 0;
@@ -155,6 +154,8 @@ std::string scalingSection(Renderer& r, const std::string& docs) {
 // them alike; the spread is the fastest and the slowest frame.
 
 constexpr int kAliasWidth = 240, kAliasHeight = 135;  // the aliasing sweep draws up to 8x8 samples
+// The aliasing reference: aa 4 drawn at twice the size and box-filtered down, 8x8 samples a pixel.
+constexpr int kAliasReferenceAa = 4, kAliasReferenceScale = 2;
 
 struct Timing {
     double median = 0, min = 0, max = 0;
@@ -348,8 +349,9 @@ std::string aliasingSection(Renderer& r, const std::string& name, const Scene& s
     std::cerr << "render report: aliasing, " << name << '\n';
     const int w = kAliasWidth, h = kAliasHeight;
     Scene ref = scene;
-    ref.render.aa = 4;
-    Image reference = downsample(renderImage(r, ref, {}, 2 * w, 2 * h), 2);  // 8x8 samples a pixel
+    ref.render.aa = kAliasReferenceAa;
+    const int n = kAliasReferenceScale;
+    Image reference = downsample(renderImage(r, ref, {}, n * w, n * h), n);
     std::vector<Variant> variants;
     for (int aa = 1; aa <= 4; ++aa) {
         Variant v{"aa", std::to_string(aa) + "x" + std::to_string(aa), scene, {}};
@@ -398,7 +400,7 @@ std::string presetSection(Renderer& r, const std::vector<std::string>& names, co
     return md.str();
 }
 
-// Draft's bar (2x faster at 28 dB) on every example scene: its frames and the scene's as written
+// Draft's bar on every example scene: its frames and the scene's as written
 // interleaved, its error against the scene as written converged (at the scene's own aa, so an
 // aa cap counts as error).
 std::string draftSection(Renderer& r, const std::string& root, int* passing, int* scenes) {
@@ -414,7 +416,7 @@ std::string draftSection(Renderer& r, const std::string& root, int* passing, int
         Image reference = renderImage(r, converged(scene), {}, kWidth, kHeight);
         std::vector<Result> all = measure(r, {asWritten, draft}, reference, kWidth, kHeight);
         double speedUp = all[0].time.median / all[1].time.median, db = psnrFromRmse(all[1].error);
-        *passing += speedUp >= 2.0 && db >= 28.0;
+        *passing += speedUp >= kDraftSpeedUp && db >= kDraftDb;
         ++*scenes;
         md << "| " << path.stem().string() << " | " << fmt("%.1f", all[0].time.median) << " | "
            << timeCells(all[1].time) << " | " << fmt("%.2fx", speedUp) << " | " << fmt("%.1f", db) << " |\n";
@@ -447,87 +449,68 @@ std::string presetSettingsTable() {
     return md.str();
 }
 
-std::string workPrecision(Renderer& r, const std::string& root, const std::string& docs) {
-    std::ostringstream md, verdicts;
-    const std::vector<std::string> marched = {"default", "csg", "reflections", "pile"};
-    md << "\n## Where a frame's time goes\n\nMedian ms of " << kFrames << " interleaved frames, " << kWidth << "x"
-       << kHeight << ", and each column's share of the scene as written. The id and normals debug views draw "
-          "the primary march alone and with the normal; the other columns leave one part out. llvmpipe runs "
-          "a shader on SIMD groups of pixels and, at a branch, runs both sides for the whole group, masking "
-          "the lanes that did not take it; only a loop ends early, once every lane has left it. So a pixel "
-          "of sky pays for the shading code too, the primary march with its normal is a third to a half of "
-          "every frame, and only work left out when the shader is compiled (a light that casts no shadow, "
-          "fewer bounces, fewer samples) or fewer pixels save time in proportion.\n\n"
-       << costSection(r, marched, root);
-    md << "\n## Marching error against frame time\n\nEach scene as written, and each row changing one "
-          "setting of it, against the same scene converged (4096 steps, epsilon 1e-5) at the same "
-          "sampling (aa 1), so only marching error counts. " << kWidth << "x" << kHeight << "; each time "
-          "is the median of " << kFrames << " frames, the frames of all rows interleaved, with the fastest "
-          "and slowest frame as min–max (the plot's whiskers). Speed-up is against the scene as written. "
-          "Pareto marks a setting only when every setting at least as accurate (within 0.1 dB) has its "
-          "fastest frame slower than this one's slowest. The preset rows apply draft's and final's "
-          "marching, without final's supersampling.\n\n";
-    for (const std::string& name : marched) {
+// The marching sweeps of each scene, and the summary of draft's marching against each.
+void marchingSections(Renderer& r, const std::vector<std::string>& names, const std::string& root,
+                      const std::string& docs, TemplateValues* v) {
+    std::string sections, verdicts;
+    for (const std::string& name : names) {
         Scene scene;
         if (!loadExample(root, name, &scene)) continue;
         std::string verdict;
-        md << marchingSection(r, name, scene, docs, &verdict) << "\n";
-        verdicts << verdict;
+        sections += marchingSection(r, name, scene, docs, &verdict) + "\n";
+        verdicts += verdict;
     }
-    md << "Summary, draft's marching against the scene as written:\n\n| scene | as written dB | "
-          "draft speed-up | draft dB |\n| --- | ---: | ---: | ---: |\n" << verdicts.str();
-    md << "\n## Aliasing\n\nSupersampling (aa per axis) and FXAA, at the scene's own marching, against "
-          "8x8 samples a pixel (aa 4 at twice the size, box-filtered down; a 4x4 reference would be aa 4 "
-          "itself) at " << kAliasWidth << "x" << kAliasHeight << ". Speed-up is against aa 1.\n\n";
-    for (const std::string& name : marched) {
+    (*v)["marching_sections"] = sections;
+    (*v)["marching_summary"] = "| scene | as written dB | draft speed-up | draft dB |\n"
+                               "| --- | ---: | ---: | ---: |\n" + verdicts;
+}
+
+std::string aliasingSections(Renderer& r, const std::vector<std::string>& names,
+                             const std::string& root) {
+    std::string md;
+    for (const std::string& name : names) {
         Scene scene;
-        if (loadExample(root, name, &scene)) md << aliasingSection(r, name, scene) << "\n";
+        if (loadExample(root, name, &scene)) md += aliasingSection(r, name, scene) + "\n";
     }
-    md << "## Quality presets\n\n`--quality draft|normal|final` on `render` and `bench` (table in "
-          "`src/gl/quality_preset.cpp`). A cap lowers the scene's own value only, a floor raises it only:\n\n"
-       << presetSettingsTable()
-       << "\nEach of these example scenes, " << kWidth << "x" << kHeight << ", the three presets' frames "
-          "interleaved; speed-up against normal. The first PSNR column is marching error (reference "
-          "converged at the preset's own aa), the second everything the eye sees (reference converged "
-          "at 4x4).\n\n"
-       << presetSection(r, {"default", "csg", "reflections", "pile", "primitives", "fog"}, root);
+    return md;
+}
+
+std::string sizeText(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+// The settings and sizes the prose names, from the constants the measurements use.
+void describeMethod(TemplateValues* v) {
+    const RenderSettings reference = converged(Scene{}).render;
+    const int samples = kAliasReferenceAa * kAliasReferenceScale;
+    (*v)["size"] = sizeText(kWidth, kHeight);
+    (*v)["frames"] = std::to_string(kFrames);
+    (*v)["grid_min_objects"] = std::to_string(kGridMinObjects);
+    (*v)["converged"] =
+        std::to_string(reference.steps) + " steps, epsilon " + fmt("%g", reference.epsilon);
+    (*v)["alias_reference"] = sizeText(samples, samples) + " samples a pixel (aa " +
+                              std::to_string(kAliasReferenceAa) + " at " +
+                              std::to_string(kAliasReferenceScale) + "x the size, box-filtered)";
+    (*v)["alias_size"] = sizeText(kAliasWidth, kAliasHeight);
+    (*v)["draft_speedup"] = fmt("%gx", kDraftSpeedUp);
+    (*v)["draft_db"] = fmt("%g dB", kDraftDb);
+}
+
+// Every measured section, in the order the report prints them.
+void measureAll(Renderer& r, const std::string& root, const std::string& docs, TemplateValues* v) {
+    std::cerr << "render report: uber against specialised\n";
+    (*v)["uber_table"] = uberTable(r, root);
+    std::cerr << "render report: object count\n";
+    (*v)["scaling_table"] = scalingTable(r, docs);
+    const std::vector<std::string> marched = {"default", "csg", "reflections", "pile"};
+    (*v)["cost_table"] = costSection(r, marched, root);
+    marchingSections(r, marched, root, docs, v);
+    (*v)["aliasing_sections"] = aliasingSections(r, marched, root);
+    (*v)["preset_settings"] = presetSettingsTable();
+    (*v)["preset_table"] =
+        presetSection(r, {"default", "csg", "reflections", "pile", "primitives", "fog"}, root);
     int passing = 0, scenes = 0;
-    const std::string draft = draftSection(r, root, &passing, &scenes);
-    md << "\n### Draft against the scene as written\n\nDraft's bar: at least 2x faster than the scene "
-          "as written at 28 dB or more, on every example scene. Frames of the two interleaved; PSNR against "
-          "the scene as written converged at its own aa, so draft's aa cap counts as error. "
-       << passing << " of " << scenes << " scenes meet it. Draft takes every cut that holds 28 dB on all of "
-          "them: shadows only from lights at least half as bright as the brightest, aa at most 2x2, the "
-          "marching cuts (128 steps, 64 shadow steps, cone epsilon), and half the pixels: the march shades "
-          "a checkerboard into a half-width target, and a pass fills in each missing pixel with the mean of "
-          "the pair of its neighbours, left and right or above and below, that differ less, so an edge "
-          "carries on along itself (the \"pixels shaded\" rows of the marching sweeps give its cost alone). "
-          "On default, measured once (2026-11-23), draft with the checkerboard is 31.8 dB from draft with "
-          "every pixel shaded, 43% of the difference in the rows from just below the horizon to the "
-          "objects, where the floor's checker is finer than the missing pixels and the fill cannot know "
-          "it; far less than drawing a quarter of the pixels and stretching them (22 to 27 dB, measured "
-          "2026-11-22). Half the fragments is not half the frame. The march of the half-width target costs "
-          "half the full one's, since a frame of one sample writes it in 8 bits, neither cleared nor blended "
-          "(blended into half floats it cost 5% more a fragment); but the fill runs over every pixel, about "
-          "an eighth of the frame as written on the simple scenes (0.8 of 5.9 ms on shadows_hard, one "
-          "llvmpipe thread, CPU time, measured 2026-11-23): half the pixels alone is at most 1.6x. "
-          "Scenes with one light and aa 1 have nothing else to cut "
-          "but the shadows themselves (24 to 27 dB, the shadows rows above) or reflections (18 to 22 dB "
-          "on reflections), and a quarter of the pixels fell to 22 to 27 dB (above), so there draft "
-          "stays short of 2x. Adaptive sampling does not help here either. Simulated on each scene's own "
-          "480x270 picture (2026-11-23): shade a quarter of the pixels, then march the others only where "
-          "their shaded neighbours differ. For about the checkerboard's PSNR that leaves 0.4 to 0.6 of the "
-          "shading work on most one-light scenes, because llvmpipe marches a group of 8 pixels whenever one "
-          "of them must, and the second pass would still run its straight-line shading, masked, on every "
-          "group.\n\n"
-       << draft;
-    md << "\nWhat to pick: `normal`, the scene as written, for stills you judge by eye and for the editor's "
-          "refined picture, because it is already converged (37 dB or more against 4096 steps); `draft` for "
-          "quick looks and the editor's previews: 1.5 to 2x faster than the scene as written, 3 to 4x with "
-          "many objects or supersampling, at 28 dB or more; `final` for stills, because what normal still gets "
-          "wrong is aliasing, which only supersampling removes (see the aliasing tables) at about 10 times "
-          "the frame time, with FXAA the cheap step between.\n";
-    return md.str();
+    (*v)["draft_table"] = draftSection(r, root, &passing, &scenes);
+    (*v)["draft_passing"] = std::to_string(passing);
+    (*v)["draft_scenes"] = std::to_string(scenes);
 }
 
 }  // namespace
@@ -536,7 +519,11 @@ int runRenderReport(const std::string& root, OffscreenBackend backend) {
     OffscreenContext context;
     Renderer renderer;
     ColorTarget target;  // big enough for the 4x reference; EGL has no default framebuffer
-    std::string error, docs = root + "/docs";
+    std::string error, text, md, docs = root + "/docs";
+    if (!readReportTemplate(root, "render-report.md", &text, &error)) {
+        std::cerr << error << '\n';
+        return 1;
+    }
     if (!context.create(1, 1, &error, backend) || !renderer.init(&error) ||
         !target.resize(4 * kWidth, 4 * kHeight, GL_RGBA8)) {
         std::cerr << "cannot render: " << error << '\n';
@@ -544,24 +531,16 @@ int runRenderReport(const std::string& root, OffscreenBackend backend) {
     }
     target.bind();
     std::filesystem::create_directories(docs);
-    std::ostringstream md;
-    md << "# Render report\n\nReproduce: `build/marchbox report render` (writes this file and "
-          "`docs/render-*.svg`). Measured in one run on " << context.platform() << ", "
-       << reinterpret_cast<const char*>(glGetString(GL_RENDERER)) << ", " << machineDescription()
-       << ", at " << kWidth << "x" << kHeight << ". In the first two sections each figure is the fastest of " << kFrames
-       << " frames after a warm-up frame (one frame when a frame takes over a second); the work-precision "
-          "sections give medians with their spread. Compare ratios, not absolute times: other work "
-          "shared the two cores.\n\n";
-    std::cerr << "render report: uber against specialised\n";
-    md << "## Compiled against the general (uber) program\n\n" << uberTable(renderer, root);
-    std::cerr << "render report: object count\n";
-    md << "\n## Cost against object count\n\n![scaling](render-scaling.svg)\n\n" << scalingSection(renderer, docs);
-    md << workPrecision(renderer, root, docs);
-    // The editor's latency needs a window and a person's input: e2e.live measures it.
-    md << "\n## Editor latency\n\nInput to picture in the editor at 1280x720, and the compiled "
-          "renderer against the looping one before it: `docs/render-compiled.md` (measured by "
-          "`e2e.live`, which holds the menu to 0.5 s and an orbit drag to 1 s).\n";
-    if (!writeTextFile(docs + "/render-report.md", md.str())) {
+    TemplateValues v = {{"platform", context.platform()},
+                        {"gl_renderer", reinterpret_cast<const char*>(glGetString(GL_RENDERER))},
+                        {"machine", machineDescription()}};
+    describeMethod(&v);
+    measureAll(renderer, root, docs, &v);
+    if (!fillTemplate(text, v, &md, &error)) {
+        std::cerr << "render-report.md: " << error << '\n';
+        return 1;
+    }
+    if (!writeTextFile(docs + "/render-report.md", md)) {
         std::cerr << "cannot write " << docs << "/render-report.md\n";
         return 1;
     }

@@ -39,7 +39,7 @@ TEST(AsyncCompile, UberStandsInUntilTheNewProgramLinks) {
     Renderer& r = d.r;
     Scene& s = d.s;
     std::string& error = d.error;
-    r.prepareUber(s, {});
+    r.prepareUber(r.requestFor(s, {}));
     for (int i = 0; i < 6000 && r.compiling(); ++i) {  // up to a minute on a loaded llvmpipe
         ASSERT_TRUE(r.poll(&error)) << error;
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -47,7 +47,7 @@ TEST(AsyncCompile, UberStandsInUntilTheNewProgramLinks) {
     const Program* first = r.program();
 
     s.render.shadows = 2;  // a new feature set: soft shadows
-    ASSERT_TRUE(r.requestScene(s, {}, &error)) << error;
+    ASSERT_TRUE(r.requestScene(r.requestFor(s, {}), &error)) << error;
     const Program* standIn = r.program();
     EXPECT_NE(standIn, first) << "the old program cannot draw soft shadows";
     bool linked = false;
@@ -84,7 +84,7 @@ TEST(AsyncCompile, ABrokenShaderKeepsTheLastGoodProgramAndSaysWhy) {
     int line = 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
 
     s.render.shadows = 2;
-    bool started = r.requestScene(s, {}, &error), failed = false;
+    bool started = r.requestScene(r.requestFor(s, {}), &error), failed = false;
     for (int i = 0; started && i < 6000 && r.compiling(); ++i) failed = !r.poll(&error);
     EXPECT_TRUE(failed || !started) << "the broken shader must be reported";
     EXPECT_NE(error.find("error"), std::string::npos) << error;
@@ -92,6 +92,7 @@ TEST(AsyncCompile, ABrokenShaderKeepsTheLastGoodProgramAndSaysWhy) {
     EXPECT_NE(error.find(where), std::string::npos) << "names " << where << ": " << error;
     EXPECT_EQ(r.program(), good) << "the last good program keeps drawing";
     std::string again;
-    EXPECT_FALSE(r.requestScene(s, {}, &again)) << "the same broken features are not rebuilt";
+    EXPECT_FALSE(r.requestScene(r.requestFor(s, {}), &again))
+        << "the same broken features are not rebuilt";
     EXPECT_EQ(again, error);
 }

@@ -37,28 +37,48 @@ struct RenderOptions {
     bool operator==(const RenderOptions&) const = default;
 };
 
+// A scene as a renderer draws it, looked at once (Renderer::requestFor): the options' fog switch
+// applied, and the feature sets, object layout included, of the program that draws it and of
+// the uber program that stands in while that one compiles. Every way to a program starts here,
+// so a change is copied and examined once, however many questions are asked of it.
+struct SceneRequest {
+    Scene scene;              // as drawn: fog 0 where options.fog is off
+    RenderOptions options;
+    ShaderFeatures features;  // the program's
+    ShaderFeatures standIn;   // the uber program's
+
+    // Whether a program of features f holds every object: the uber shader's array is capped.
+    bool fits(const ShaderFeatures& f) const;
+};
+
 class Renderer {
 public:
     // Needs a current context with GL loaded. Builds the quad and reads the driver's limits.
     bool init(std::string* error);
 
-    // Picks (compiling on first use) the program for the scene's feature set and uploads the
-    // scene. On a compile or link failure the previous program stays in use and *error holds
-    // the log.
-    bool setScene(const Scene& scene, const RenderOptions& options, std::string* error);
+    // The scene and options as this renderer would draw them (its uniform-block limit decides
+    // where objects go): a copy of the scene, with the feature sets worked out.
+    SceneRequest requestFor(Scene scene, const RenderOptions& options) const;
+
+    // Picks (compiling on first use) the request's program and uploads its scene. On a compile
+    // or link failure the previous program stays in use and *error holds the log.
+    bool setScene(const SceneRequest& request, std::string* error);
+    bool setScene(const Scene& scene, const RenderOptions& options, std::string* error) {
+        return setScene(requestFor(scene, options), error);
+    }
 
     // The same without waiting for a compile: a program not yet built starts compiling (on the
     // driver's threads where it offers GL_KHR_parallel_shader_compile) and the uber program, if
     // built, draws the scene meanwhile; else the old program keeps drawing the old scene.
     // poll() swaps the new program in once linked; false with the log if it failed.
-    bool requestScene(const Scene& scene, const RenderOptions& options, std::string* error);
+    bool requestScene(SceneRequest request, std::string* error);
     bool poll(std::string* error);
     bool compiling() const { return pending_ || uberBuild_; }  // poll() has work left
     bool compilingScene() const { return pending_ != nullptr; }  // the scene's own program is on its way
     // True when requestScene would start building a program: none is built or on its way for
-    // what the scene and options need (a driver without background compiles then blocks).
-    bool wouldCompile(const Scene& scene, const RenderOptions& options) const;
-    void prepareUber(const Scene& scene, const RenderOptions& options);  // builds the stand-in
+    // the request's features (a driver without background compiles then blocks).
+    bool wouldCompile(const SceneRequest& request) const;
+    void prepareUber(const SceneRequest& request);  // builds the stand-in
 
     // Draws the whole width × height image, every supersample, into the framebuffer bound now.
     void draw(int width, int height);
@@ -102,16 +122,14 @@ private:
         std::string vertexSource;
         Shader vs, fs;
         std::unique_ptr<Program> program;
-        Scene scene;               // what to draw once it links
-        RenderOptions options;
+        SceneRequest request;      // what the scene's own program draws once it links
     };
     Cached* cached(const ShaderFeatures& f);
     bool startBuild(const ShaderFeatures& f, Build* b, std::string* error);
     Program* finishBuild(Build* b, std::string* error);
     Program* programFor(const ShaderFeatures& f, std::string* error);
-    bool featuresFor(const Scene& scene, const RenderOptions& options, ShaderFeatures* f,
-                     std::string* error) const;
-    void use(Program* p, const ShaderFeatures& f, const Scene& scene, const RenderOptions& options);
+    ShaderFeatures featuresFor(const Scene& scene, const RenderOptions& options) const;
+    void use(Program* p, const ShaderFeatures& f, const SceneRequest& request);
     void upload(const GpuScene& g, const ShaderFeatures& f);
     void setUniforms(const Scene& scene, const GpuScene& g, const ShaderFeatures& f, const RenderQuality& q);
     void uploadGrid(const SceneSdf& sdf);
