@@ -64,7 +64,8 @@ static bool applyValue(const std::string& opt, const std::string& v, Args* a, st
             {"--frames", "a whole number from 1 to 100000"},
             {"--threads", "1 or 2"}};
         for (auto& e : expected)
-            if (opt == e[0]) *error = "bad value " + quoteArg(v) + " for " + opt + ": expected " + e[1];
+            if (opt == e[0])
+                *error = "bad value " + quoteArg(v) + " for " + opt + ": expected " + e[1];
     }
     return ok;
 }
@@ -74,8 +75,9 @@ bool parseArgs(int argc, char** argv, int first, Args* out, std::string* error) 
         std::string arg = argv[i];
         if (arg == "--uber") {
             out->uber = true;
-        } else if (arg == "-o" || arg == "--size" || arg == "--seconds" || arg == "--frames" || arg == "--threads" ||
-                   arg == "--mode" || arg == "--post" || arg == "--backend" || arg == "--quality") {
+        } else if (arg == "-o" || arg == "--size" || arg == "--seconds" || arg == "--frames" ||
+                   arg == "--threads" || arg == "--mode" || arg == "--post" || arg == "--backend" ||
+                   arg == "--quality") {
             if (i + 1 >= argc) {
                 *error = "missing value after " + arg;
                 return false;

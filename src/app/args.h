@@ -10,16 +10,16 @@ enum ExitCode : int { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2, kExitNoGl 
 
 struct Args {
     std::vector<std::string> positional;
-    std::string output;               // -o
-    int width = 640, height = 360;    // --size WxH
-    double seconds = 0;               // --seconds
-    int frames = 20;                  // --frames
-    int threads = 1;                  // --threads 1|2: the simulator's (same bytes either way)
-    bool uber = false;                // --uber
-    std::string mode = "shaded";      // --mode
-    std::string post = "none";        // --post none|fxaa|fxaa-edges|fxaa-direction
-    std::string backend = "osmesa";   // --backend osmesa|egl
-    std::string quality = "normal";   // --quality draft|normal|final
+    std::string output;              // -o
+    int width = 640, height = 360;   // --size WxH
+    double seconds = 0;              // --seconds
+    int frames = 20;                 // --frames
+    int threads = 1;                 // --threads 1|2: the simulator's (same bytes either way)
+    bool uber = false;               // --uber
+    std::string mode = "shaded";     // --mode
+    std::string post = "none";       // --post none|fxaa|fxaa-edges|fxaa-direction
+    std::string backend = "osmesa";  // --backend osmesa|egl
+    std::string quality = "normal";  // --quality draft|normal|final
 };
 
 // Parses argv[first..argc). Returns false with *error set on an unknown option, a missing or

@@ -91,11 +91,13 @@ static bool qualityPreset(const Args& a, QualityPreset* out) {
 static bool renderOptions(const Args& a, RenderOptions* o) {
     o->uber = a.uber;
     if (!parsePost(a.post, &o->post)) {
-        std::cerr << "unknown post pass " << quoteArg(a.post) << ": expected none, fxaa, fxaa-edges or fxaa-direction\n";
+        std::cerr << "unknown post pass " << quoteArg(a.post)
+                  << ": expected none, fxaa, fxaa-edges or fxaa-direction\n";
         return false;
     }
     if (parseRenderMode(a.mode, &o->mode)) return true;
-    std::cerr << "unknown mode " << quoteArg(a.mode) << ": expected shaded, normals, depth, steps, ao, shadow or id\n";
+    std::cerr << "unknown mode " << quoteArg(a.mode)
+              << ": expected shaded, normals, depth, steps, ao, shadow or id\n";
     return false;
 }
 
@@ -128,30 +130,39 @@ static PhysicsSettings physicsSettings(const Args& a) {
 int runRender(const Args& a) {
     RenderOptions options;
     QualityPreset preset;
-    if (!needOne(a, "marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M] [--post P] [--quality Q] [--backend B] [--threads N]") ||
-        !needOutput(a, "render", "OUT.png") || !renderOptions(a, &options) || !qualityPreset(a, &preset))
+    if (!needOne(a,
+                 "marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M] "
+                 "[--post P] [--quality Q] [--backend B] [--threads N]") ||
+        !needOutput(a, "render", "OUT.png") || !renderOptions(a, &options) ||
+        !qualityPreset(a, &preset))
         return kExitUsage;
     Scene scene;
     std::string error;
-    if (!loadOrReport(a.positional[0], &scene) || !reported(checkSavePng(a.output, &error), error)) return kExitBadInput;
+    if (!loadOrReport(a.positional[0], &scene) || !reported(checkSavePng(a.output, &error), error))
+        return kExitBadInput;
     simulate(scene, a.seconds, physicsSettings(a));
     applyQualityPreset(preset, &scene.render, &options);
     Image img;
     OffscreenRun run;
     if (!offscreenBackend(a, &run.backend)) return kExitUsage;
-    if (a.width * a.height > 1024 * 1024 && isatty(STDERR_FILENO)) run.progress = printRenderProgress;
-    if (!renderOffscreen(scene, options, a.width, a.height, &img, &error, run)) return glFailure("render", error);
+    if (a.width * a.height > 1024 * 1024 && isatty(STDERR_FILENO))
+        run.progress = printRenderProgress;
+    if (!renderOffscreen(scene, options, a.width, a.height, &img, &error, run))
+        return glFailure("render", error);
     return reported(savePng(a.output, img, &error), error) ? kExitOk : kExitBadInput;
 }
 
 int runSimulate(const Args& a) {
-    if (!needOne(a, "marchbox simulate SCENE --seconds T [-o OUT.txt] [--threads N]")) return kExitUsage;
+    if (!needOne(a, "marchbox simulate SCENE --seconds T [-o OUT.txt] [--threads N]"))
+        return kExitUsage;
     Scene scene;
     std::string error;
-    if (!loadOrReport(a.positional[0], &scene) || (!a.output.empty() && !reported(checkSaveScene(a.output, &error), error)))
+    if (!loadOrReport(a.positional[0], &scene) ||
+        (!a.output.empty() && !reported(checkSaveScene(a.output, &error), error)))
         return kExitBadInput;
     // Ctrl-C keeps its default: the process ends at once, before anything is written.
-    simulate(scene, a.seconds, physicsSettings(a), isatty(STDERR_FILENO) ? printSimulateProgress : nullptr);
+    simulate(scene, a.seconds, physicsSettings(a),
+             isatty(STDERR_FILENO) ? printSimulateProgress : nullptr);
     if (a.output.empty()) {
         std::cout << formatScene(scene);
         return flushStdout();
@@ -183,7 +194,8 @@ static int driverUniformBlockBytes() {
 
 int runShader(const Args& a) {
     RenderOptions options;
-    if (!needOne(a, "marchbox shader SCENE [--uber]") || !renderOptions(a, &options)) return kExitUsage;
+    if (!needOne(a, "marchbox shader SCENE [--uber]") || !renderOptions(a, &options))
+        return kExitUsage;
     Scene scene;
     if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
     ShaderFeatures f = shaderFeatures(scene, options.mode, options.uber, driverUniformBlockBytes());
@@ -197,7 +209,9 @@ int runBench(const Args& a) {
     RenderOptions options;
     OffscreenBackend backend;
     QualityPreset preset;
-    if (!needOne(a, "marchbox bench SCENE [--uber] [--size WxH] [--frames N] [--quality Q] [--backend osmesa|egl]") ||
+    if (!needOne(a,
+                 "marchbox bench SCENE [--uber] [--size WxH] [--frames N] [--quality Q] [--backend "
+                 "osmesa|egl]") ||
         !renderOptions(a, &options) || !offscreenBackend(a, &backend) || !qualityPreset(a, &preset))
         return kExitUsage;
     Scene scene;
@@ -210,15 +224,19 @@ int runBench(const Args& a) {
     if (!context.create(1, 1, &error, backend) || !renderer.init(&error) ||
         !renderer.setScene(scene, options, &error))
         return glFailure("render", error);
-    if (!target.resize(a.width, a.height, GL_RGBA8)) return glFailure("render", "cannot create the target");
+    if (!target.resize(a.width, a.height, GL_RGBA8))
+        return glFailure("render", "cannot create the target");
     target.bind();
-    std::printf("device: %s, %s\n", context.platform().c_str(), reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+    std::printf("device: %s, %s\n", context.platform().c_str(),
+                reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
     std::vector<double> ms;
     for (int i = 0; i <= a.frames; ++i) {  // frame 0 warms up: shader JIT, caches
         auto t0 = std::chrono::steady_clock::now();
         renderer.draw(a.width, a.height);
         glFinish();
-        double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        double elapsed =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                .count();
         if (i > 0) std::printf("frame %d: %.3f ms\n", i, elapsed), ms.push_back(elapsed);
     }
     std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());

@@ -16,6 +16,6 @@ int runReport(const Args& a);
 int runEditor(const Args& a);
 
 bool offscreenBackend(const Args& a, OffscreenBackend* out);  // --backend, or a usage error
-int glFailure(const char* doing, const std::string& error);  // one line on stderr, exit 3
+int glFailure(const char* doing, const std::string& error);   // one line on stderr, exit 3
 
 }  // namespace mb

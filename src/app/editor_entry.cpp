@@ -34,11 +34,13 @@ static int renderPreview(const std::string& scenePath) {
     }
     // Beside the executable (build/), so a preview never litters the scene's folder.
     std::filesystem::path dir = std::filesystem::read_symlink("/proc/self/exe").parent_path();
-    std::string out = (dir / (std::filesystem::path(scenePath).stem().string() + "-preview.png")).string();
+    std::string out =
+        (dir / (std::filesystem::path(scenePath).stem().string() + "-preview.png")).string();
     std::string error;
     std::cout << "no display: rendering " << scenePath << " to " << out << " instead\n";
     Image img;
-    if (!renderOffscreen(scene, RenderOptions{}, 640, 360, &img, &error)) return glFailure("render", error);
+    if (!renderOffscreen(scene, RenderOptions{}, 640, 360, &img, &error))
+        return glFailure("render", error);
     if (!savePng(out, img, &error)) {
         std::cerr << error << '\n';
         return kExitBadInput;
@@ -48,7 +50,8 @@ static int renderPreview(const std::string& scenePath) {
 
 int runEditor(const Args& a) {
     if (a.positional.size() > 1) {
-        std::cerr << "marchbox: unknown command '" << a.positional[0] << "' (see marchbox --help)\n";
+        std::cerr << "marchbox: unknown command '" << a.positional[0]
+                  << "' (see marchbox --help)\n";
         return kExitUsage;
     }
     std::string path = a.positional.empty() ? defaultScenePath() : a.positional[0];

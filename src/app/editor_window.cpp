@@ -187,7 +187,8 @@ void App::present(int width, int height) {
     // A changed scene draws its preview first, so this frame shows the change; bands of
     // refinement wait until after the swap, so the UI never waits for them.
     const int selected = editor_.selection().object();
-    double sceneMs = timed([&] { return view_.update(width, height, selected, StepKind::Preview); });
+    double sceneMs =
+        timed([&] { return view_.update(width, height, selected, StepKind::Preview); });
     glViewport(0, 0, width, height);
     glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
@@ -195,7 +196,8 @@ void App::present(int width, int height) {
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     if (ui_.wantScreenshot) screenshot(width, height);
     window_.swap();
-    if (sceneMs == 0.0) sceneMs = timed([&] { return view_.update(width, height, selected, StepKind::Band); });
+    if (sceneMs == 0.0)
+        sceneMs = timed([&] { return view_.update(width, height, selected, StepKind::Band); });
     view_.otherWork((glfwGetTime() - frameStart_) * 1000.0 - sceneMs);
 }
 
@@ -204,8 +206,7 @@ void App::screenshot(int width, int height) {
     std::string path, error;
     if (saveScreenshot(width, height, envOr("MARCHBOX_SCREENSHOT_DIR", "."), &path, &error))
         emitEvent("screenshot " + path);
-    else
-        ui_.messages.say(Place::Status, error);
+    else ui_.messages.say(Place::Status, error);
 }
 
 std::string App::title() const {

@@ -9,7 +9,8 @@
 
 static const char* kUsage =
     "usage: marchbox [SCENE]                      open the editor (default scenes/default.txt)\n"
-    "       marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M] [--post P]\n"
+    "       marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M] "
+    "[--post P]\n"
     "                [--quality Q] [--threads N]\n"
     "       marchbox simulate SCENE --seconds T [-o OUT.txt] [--threads N]\n"
     "       marchbox check SCENE...\n"
@@ -17,7 +18,8 @@ static const char* kUsage =
     "       marchbox bench SCENE [--uber] [--size WxH] [--frames N] [--quality Q]\n"
     "       marchbox report physics|render\n"
     "       marchbox --help | --version\n"
-    "modes: shaded normals depth steps ao shadow id; post passes: none fxaa fxaa-edges fxaa-direction\n"
+    "modes: shaded normals depth steps ao shadow id; post passes: none fxaa fxaa-edges "
+    "fxaa-direction\n"
     "quality presets: draft normal (the scene as written) final\n"
     "threads: the simulator's, 1 (default) or 2; the same result either way\n";
 
@@ -51,7 +53,8 @@ int main(int argc, char** argv) {
     for (const Command& c : commands)
         if (argc > 1 && !std::strcmp(argv[1], c.name)) command = &c;
     if (!command && argc > 1 && looksLikeCommand(argv[1])) {
-        std::cerr << "marchbox: unknown command " << quoteArg(argv[1]) << " (see marchbox --help)\n";
+        std::cerr << "marchbox: unknown command " << quoteArg(argv[1])
+                  << " (see marchbox --help)\n";
         return kExitUsage;
     }
     Args args;

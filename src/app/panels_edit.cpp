@@ -23,7 +23,8 @@ static ImVec4 swatchColour(const Material& m) {
 }
 
 static void swatch(const Material& m, float size = 0.0f) {
-    ImGui::ColorButton("##swatch", swatchColour(m), ImGuiColorEditFlags_NoTooltip, ImVec2(size, size));
+    ImGui::ColorButton("##swatch", swatchColour(m), ImGuiColorEditFlags_NoTooltip,
+                       ImVec2(size, size));
 }
 
 static std::string itemName(const Scene& s, ItemKind k, int i) {
@@ -35,8 +36,10 @@ static std::string itemName(const Scene& s, ItemKind k, int i) {
             if (o.dynamic()) n += " (dynamic)";
             return n;
         }
-        case ItemKind::Material: return n + s.materials[size_t(i)].name;
-        case ItemKind::Light: return n + (s.lights[size_t(i)].directional ? "directional" : "point");
+        case ItemKind::Material:
+            return n + s.materials[size_t(i)].name;
+        case ItemKind::Light:
+            return n + (s.lights[size_t(i)].directional ? "directional" : "point");
     }
     return n;
 }
@@ -66,7 +69,8 @@ static void materialCombo(const Scene& s, int* material, FieldEdit& e) {
 
 static void shapeFields(Object& o, FieldEdit& e) {
     int type = int(o.type);
-    fieldCombo("type", &type, kShapeNames, kShapeTypeCount, e, "The shape; its size fields follow.");
+    fieldCombo("type", &type, kShapeNames, kShapeTypeCount, e,
+               "The shape; its size fields follow.");
     o.type = ShapeType(type);
     fieldVec3("pos", Field::Position, &o.pos, e);
     if (o.type == ShapeType::Box) fieldVec3("size", Field::HalfExtent, &o.size, e);
@@ -86,7 +90,8 @@ static void shapeFields(Object& o, FieldEdit& e) {
 }
 
 // Friction and restitution show the world's value until the object is given its own.
-static void ownFloat(const char* label, Field f, std::optional<float>* own, float world, FieldEdit& e) {
+static void ownFloat(const char* label, Field f, std::optional<float>* own, float world,
+                     FieldEdit& e) {
     float value = own->value_or(world);
     fieldFloat(label, f, &value, e);
     if (value != own->value_or(world)) *own = value;
@@ -116,7 +121,9 @@ static void objectFields(UiContext& c, int i, Place place) {
     materialCombo(s, &o.material, e);
     motionFields(o, s.world, e);
     ImGui::PopID();
-    if (e.changed) c.editor.edit("Edit object", [&](Scene& sc) { sc.objects[size_t(i)] = o; }, e.key);
+    if (e.changed)
+        c.editor.edit(
+            "Edit object", [&](Scene& sc) { sc.objects[size_t(i)] = o; }, e.key);
 }
 
 static void materialFields(UiContext& c, int i) {
@@ -144,7 +151,9 @@ static void materialFields(UiContext& c, int i) {
     fieldFloat("C shininess", Field::Shininess, &m.C, e);
     fieldFloat("Kr mirror", Field::Reflectivity, &m.Kr, e);
     ImGui::PopID();
-    if (e.changed) c.editor.edit("Edit material", [&](Scene& s) { s.materials[size_t(i)] = m; }, e.key);
+    if (e.changed)
+        c.editor.edit(
+            "Edit material", [&](Scene& s) { s.materials[size_t(i)] = m; }, e.key);
 }
 
 static void lightFields(UiContext& c, int i) {
@@ -164,14 +173,19 @@ static void lightFields(UiContext& c, int i) {
     fieldColor("colour", Field::LightColor, &l.color, e);
     fieldFloat("intensity", Field::Intensity, &l.intensity, e);
     ImGui::PopID();
-    if (e.changed) c.editor.edit("Edit light", [&](Scene& s) { s.lights[size_t(i)] = l; }, e.key);
+    if (e.changed)
+        c.editor.edit(
+            "Edit light", [&](Scene& s) { s.lights[size_t(i)] = l; }, e.key);
 }
 
 static void itemFields(UiContext& c, ItemKind k, int i) {
     switch (k) {
-        case ItemKind::Object: return objectFields(c, i, Place::Objects);
-        case ItemKind::Material: return materialFields(c, i);
-        case ItemKind::Light: return lightFields(c, i);
+        case ItemKind::Object:
+            return objectFields(c, i, Place::Objects);
+        case ItemKind::Material:
+            return materialFields(c, i);
+        case ItemKind::Light:
+            return lightFields(c, i);
     }
 }
 
@@ -202,7 +216,9 @@ static void itemList(UiContext& c, ItemKind k, const char* title) {
     ImGui::BeginChild("list", ImVec2(0, 150), true);
     for (int i = 0; i < itemCount(s, k); ++i) {
         ImGui::PushID(i);
-        int m = k == ItemKind::Material ? i : k == ItemKind::Object ? s.objects[size_t(i)].material : -1;
+        int m = k == ItemKind::Material ? i
+                : k == ItemKind::Object ? s.objects[size_t(i)].material
+                                        : -1;
         if (m >= 0 && m < int(s.materials.size())) {
             swatch(s.materials[size_t(m)]);
             ImGui::SameLine();

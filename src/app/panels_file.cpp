@@ -67,8 +67,10 @@ static bool pathField(const char* popup, std::string* path, bool refocus = false
     if (ImGui::IsWindowAppearing() || refocus) ImGui::SetKeyboardFocusHere();
     const float pad = 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetFontSize();
     const float room = ImGui::GetIO().DisplaySize.x - 120.0f;  // the label and the window's edges
-    ImGui::SetNextItemWidth(std::max(480.0f, std::min(ImGui::CalcTextSize(path->c_str()).x + pad, room)));
-    const ImGuiInputTextFlags flags = ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll;
+    ImGui::SetNextItemWidth(
+        std::max(480.0f, std::min(ImGui::CalcTextSize(path->c_str()).x + pad, room)));
+    const ImGuiInputTextFlags flags =
+        ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll;
     bool enter = ImGui::InputText("path", path, flags);  // typing replaces the suggestion
     markItem(std::string(popup) + "/path");
     markTyping(std::string(popup) + "/path");
@@ -83,7 +85,8 @@ static void openDialog(UiContext& c) {
     bool go = false;
     ImGui::BeginChild("files", ImVec2(480, 220), true);
     for (const std::string& f : files) {
-        if (ImGui::Selectable(f.c_str(), f == c.ui.pathField, ImGuiSelectableFlags_AllowDoubleClick)) {
+        if (ImGui::Selectable(f.c_str(), f == c.ui.pathField,
+                              ImGuiSelectableFlags_AllowDoubleClick)) {
             c.ui.pathField = f;
             go = ImGui::IsMouseDoubleClicked(0);
         }
@@ -121,7 +124,8 @@ static bool confirmedTarget(UiContext& c, bool go) {
         return false;
     }
     if (other && c.ui.replacePath == path)
-        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s exists: Save again to replace it.", path.c_str());
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s exists: Save again to replace it.",
+                           path.c_str());
     return go;
 }
 
@@ -161,7 +165,8 @@ static void unsavedPrompt(UiContext& c) {
     ImGui::EndPopup();
     if (cancel) c.editor.cancelLeave();
     if (discard) c.editor.confirmLeave();
-    if (save && !c.editor.document().path().empty() && c.editor.save(c.ui.messages.at(Place::SaveAs)))
+    if (save && !c.editor.document().path().empty() &&
+        c.editor.save(c.ui.messages.at(Place::SaveAs)))
         c.editor.confirmLeave();
     else if (save) {  // no file yet, or it could not be written: ask where
         c.ui.saveThenLeave = true;
@@ -176,10 +181,12 @@ static void errorsPopup(UiContext& c) {
     // many there are (up to 100).
     const ImVec2 screen = ImGui::GetIO().DisplaySize;
     float width = 0.0f;
-    for (const std::string& e : c.ui.openErrors) width = std::max(width, ImGui::CalcTextSize(e.c_str()).x);
+    for (const std::string& e : c.ui.openErrors)
+        width = std::max(width, ImGui::CalcTextSize(e.c_str()).x);
     const float height = ImGui::GetTextLineHeightWithSpacing() * float(c.ui.openErrors.size());
     const float bar = ImGui::GetStyle().ScrollbarSize;
-    ImGui::BeginChild("errors", ImVec2(std::min(width + bar, screen.x * 0.9f), std::min(height, screen.y * 0.5f)));
+    ImGui::BeginChild("errors", ImVec2(std::min(width + bar, screen.x * 0.9f),
+                                       std::min(height, screen.y * 0.5f)));
     for (const std::string& e : c.ui.openErrors) fieldErrorLine(e);
     ImGui::EndChild();
     if (button(kErrorsPopup, "OK") || returnPressed() || escaped(c)) {
@@ -194,10 +201,12 @@ void drawDialogs(UiContext& c) {
     UiState& ui = c.ui;
     if (ui.wantOpen || ui.wantSaveAs) {
         ImGui::OpenPopup(ui.wantOpen ? kOpenPopup : kSaveAsPopup);
-        ui.pathField = ui.wantOpen ? c.editor.document().path()
-                                   : proposeSavePath(c.editor.document().path(), c.editor.lastFile());
+        ui.pathField = ui.wantOpen
+                           ? c.editor.document().path()
+                           : proposeSavePath(c.editor.document().path(), c.editor.lastFile());
     }
-    if (c.editor.pendingLeave() != Leave::None && !ui.saveThenLeave) ImGui::OpenPopup(kUnsavedPopup);
+    if (c.editor.pendingLeave() != Leave::None && !ui.saveThenLeave)
+        ImGui::OpenPopup(kUnsavedPopup);
     if (!ui.openErrors.empty()) ImGui::OpenPopup(kErrorsPopup);
     ui.wantOpen = ui.wantSaveAs = false;
     openDialog(c);

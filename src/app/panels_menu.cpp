@@ -40,7 +40,8 @@ static void recentMenu(UiContext& c) {
     for (size_t i = 0; i < paths.size(); ++i) {
         std::filesystem::path p(paths[i]);
         ImGui::PushID(int(i));
-        bool clicked = ImGui::MenuItem(p.filename().string().c_str(), p.parent_path().string().c_str());
+        bool clicked =
+            ImGui::MenuItem(p.filename().string().c_str(), p.parent_path().string().c_str());
         markItem("Open Recent/" + paths[i]);
         ImGui::PopID();
         if (clicked) openFile(c, paths[i]);
@@ -81,8 +82,10 @@ static void editMenu(UiContext& c) {
     if (menuItem("Edit", ("Undo " + h.undoLabel()).c_str(), "Ctrl+Z", false, h.canUndo())) e.undo();
     if (menuItem("Edit", ("Redo " + h.redoLabel()).c_str(), "Ctrl+Y", false, h.canRedo())) e.redo();
     ImGui::Separator();
-    if (menuItem("Edit", "Objects", nullptr, c.ui.showObjects)) c.ui.showObjects = !c.ui.showObjects;
-    if (menuItem("Edit", "Materials", nullptr, c.ui.showMaterials)) c.ui.showMaterials = !c.ui.showMaterials;
+    if (menuItem("Edit", "Objects", nullptr, c.ui.showObjects))
+        c.ui.showObjects = !c.ui.showObjects;
+    if (menuItem("Edit", "Materials", nullptr, c.ui.showMaterials))
+        c.ui.showMaterials = !c.ui.showMaterials;
     if (menuItem("Edit", "Lights", nullptr, c.ui.showLights)) c.ui.showLights = !c.ui.showLights;
     ImGui::Separator();
     if (menuItem("Edit", "Delete selected", "Del", false, !e.selection().empty()))
@@ -92,9 +95,11 @@ static void editMenu(UiContext& c) {
 
 static void simulationMenu(UiContext& c) {
     Editor& e = c.editor;
-    if (menuItem("Simulation", e.simulation().playing() ? "Pause" : "Play", "Space")) e.togglePlay();
+    if (menuItem("Simulation", e.simulation().playing() ? "Pause" : "Play", "Space"))
+        e.togglePlay();
     if (menuItem("Simulation", "Step")) e.step();
-    if (menuItem("Simulation", "Reset", nullptr, false, e.simulation().canReset())) e.resetSimulation();
+    if (menuItem("Simulation", "Reset", nullptr, false, e.simulation().canReset()))
+        e.resetSimulation();
     ImGui::Separator();
     if (menuItem("Simulation", "Settings", nullptr, c.ui.showSimulation))
         c.ui.showSimulation = !c.ui.showSimulation;
@@ -128,14 +133,16 @@ static void viewMenu(UiContext& c) {
     }
     if (ImGui::BeginMenu("Quality")) {  // what the view refines to; previews are drafts
         for (int p = 0; p < kQualityPresetCount; ++p)
-            if (menuItem("View", qualityPresetName(QualityPreset(p)), nullptr, int(ui.quality) == p))
+            if (menuItem("View", qualityPresetName(QualityPreset(p)), nullptr,
+                         int(ui.quality) == p))
                 ui.quality = QualityPreset(p);
         ImGui::EndMenu();
     }
     const bool fog = c.editor.scene().render.fog > 0.0f;
     if (menuItem("View", "Fog", "F", fog && ui.render.fog, fog)) toggleFog(c);
     if (!fog) itemTooltip("View/Fog", kNoFog);
-    if (menuItem("View", "FXAA", "P", ui.render.post != PostMode::None)) togglePost(ui.render, PostMode::Fxaa);
+    if (menuItem("View", "FXAA", "P", ui.render.post != PostMode::None))
+        togglePost(ui.render, PostMode::Fxaa);
     if (menuItem("View", "Orbit preview", "1", ui.previewOrbit)) ui.previewOrbit = !ui.previewOrbit;
     if (menuItem("View", "Statistics", nullptr, ui.showStats)) ui.showStats = !ui.showStats;
     if (menuItem("View", "Screenshot", "F12")) ui.wantScreenshot = true;
@@ -147,12 +154,14 @@ static void aboutWindow(UiState& ui) {
     if (!ui.showAbout) return;
     // Centred, as dialogs are, rather than wherever ImGui's default puts it (over Objects).
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing,
+                            ImVec2(0.5f, 0.5f));
     if (ImGui::Begin("About Marchbox", &ui.showAbout, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::Text("Marchbox %s", MARCHBOX_VERSION);
         markItem("About/version " MARCHBOX_VERSION);
-        ImGui::TextUnformatted("A desktop editor for scenes made of signed distance functions:\n"
-                               "raymarched on the GPU, simulated on the CPU.");
+        ImGui::TextUnformatted(
+            "A desktop editor for scenes made of signed distance functions:\n"
+            "raymarched on the GPU, simulated on the CPU.");
         ImGui::Separator();
         ImGui::Text("Scene files: version 1 (SCENE_FORMAT.md)   Dear ImGui %s", IMGUI_VERSION);
         ImGui::TextDisabled("build/marchbox --help lists the command line.");
@@ -178,7 +187,8 @@ static void fileStatus(const Document& d) {
     const ImGuiStyle& style = ImGui::GetStyle();
     float width = ImGui::CalcTextSize(name.c_str()).x + style.FramePadding.x;
     if (d.dirty()) width += ImGui::CalcTextSize(unsaved).x + style.ItemSpacing.x;
-    ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowWidth() - width - style.WindowPadding.x));
+    ImGui::SameLine(
+        std::max(ImGui::GetCursorPosX(), ImGui::GetWindowWidth() - width - style.WindowPadding.x));
     if (d.dirty()) {
         ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", unsaved);
         markItem("menu/unsaved");
@@ -190,13 +200,26 @@ static void fileStatus(const Document& d) {
 void drawMenuBar(UiContext& c) {
     noteRecentFile(c);
     if (!ImGui::BeginMainMenuBar()) return;
-    if (beginMenu("File")) { fileMenu(c); ImGui::EndMenu(); }
-    if (beginMenu("Edit")) { editMenu(c); ImGui::EndMenu(); }
-    if (beginMenu("Simulation")) { simulationMenu(c); ImGui::EndMenu(); }
-    if (beginMenu("View")) { viewMenu(c); ImGui::EndMenu(); }
+    if (beginMenu("File")) {
+        fileMenu(c);
+        ImGui::EndMenu();
+    }
+    if (beginMenu("Edit")) {
+        editMenu(c);
+        ImGui::EndMenu();
+    }
+    if (beginMenu("Simulation")) {
+        simulationMenu(c);
+        ImGui::EndMenu();
+    }
+    if (beginMenu("View")) {
+        viewMenu(c);
+        ImGui::EndMenu();
+    }
     if (beginMenu("Help")) {
         if (menuItem("Help", "Controls", nullptr, c.ui.showHelp)) c.ui.showHelp = !c.ui.showHelp;
-        if (menuItem("Help", "About Marchbox", nullptr, c.ui.showAbout)) c.ui.showAbout = !c.ui.showAbout;
+        if (menuItem("Help", "About Marchbox", nullptr, c.ui.showAbout))
+            c.ui.showAbout = !c.ui.showAbout;
         ImGui::EndMenu();
     }
     fileStatus(c.editor.document());
@@ -207,26 +230,52 @@ void drawMenuBar(UiContext& c) {
 static void ctrlShortcut(UiContext& c, const KeyPress& k) {
     const bool shift = k.mods & GLFW_MOD_SHIFT;
     switch (k.key) {
-        case GLFW_KEY_N: request(c, Leave::NewScene); break;
-        case GLFW_KEY_O: c.ui.wantOpen = true; break;
-        case GLFW_KEY_S: shift ? void(c.ui.wantSaveAs = true) : saveFile(c); break;
-        case GLFW_KEY_Z: shift ? void(c.editor.redo()) : void(c.editor.undo()); break;
-        case GLFW_KEY_Y: c.editor.redo(); break;
-        default: break;
+        case GLFW_KEY_N:
+            request(c, Leave::NewScene);
+            break;
+        case GLFW_KEY_O:
+            c.ui.wantOpen = true;
+            break;
+        case GLFW_KEY_S:
+            shift ? void(c.ui.wantSaveAs = true) : saveFile(c);
+            break;
+        case GLFW_KEY_Z:
+            shift ? void(c.editor.redo()) : void(c.editor.undo());
+            break;
+        case GLFW_KEY_Y:
+            c.editor.redo();
+            break;
+        default:
+            break;
     }
 }
 
 static void plainShortcut(UiContext& c, const KeyPress& k) {
     Editor& e = c.editor;
     switch (k.key) {
-        case GLFW_KEY_SPACE: e.togglePlay(); break;
-        case GLFW_KEY_DELETE: e.removeSelected(deleteMessage(c)); break;
-        case GLFW_KEY_J: e.kick(); break;
-        case GLFW_KEY_1: c.ui.previewOrbit = !c.ui.previewOrbit; break;
-        case GLFW_KEY_F: toggleFog(c); break;
-        case GLFW_KEY_P: togglePost(c.ui.render, PostMode::Fxaa); break;
-        case GLFW_KEY_ESCAPE: request(c, Leave::Exit); break;
-        default: break;
+        case GLFW_KEY_SPACE:
+            e.togglePlay();
+            break;
+        case GLFW_KEY_DELETE:
+            e.removeSelected(deleteMessage(c));
+            break;
+        case GLFW_KEY_J:
+            e.kick();
+            break;
+        case GLFW_KEY_1:
+            c.ui.previewOrbit = !c.ui.previewOrbit;
+            break;
+        case GLFW_KEY_F:
+            toggleFog(c);
+            break;
+        case GLFW_KEY_P:
+            togglePost(c.ui.render, PostMode::Fxaa);
+            break;
+        case GLFW_KEY_ESCAPE:
+            request(c, Leave::Exit);
+            break;
+        default:
+            break;
     }
 }
 

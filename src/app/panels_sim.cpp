@@ -26,8 +26,11 @@ static void worldFields(UiContext& c) {
     fieldFloat("friction", Field::Friction, &w.friction, e);
     fieldFloat("rolling", Field::Rolling, &w.rolling, e);
     fieldFloat("floor", Field::Floor, &w.floor, e);
-    fieldFlag("ground", &w.ground, e, "The checkered ground plane at the floor height; off removes it.");
-    if (e.changed) c.editor.edit("Edit world", [&](Scene& s) { s.world = w; }, e.key);
+    fieldFlag("ground", &w.ground, e,
+              "The checkered ground plane at the floor height; off removes it.");
+    if (e.changed)
+        c.editor.edit(
+            "Edit world", [&](Scene& s) { s.world = w; }, e.key);
 }
 
 static void statistics(const Simulation& sim) {
@@ -36,8 +39,10 @@ static void statistics(const Simulation& sim) {
         ImGui::TextDisabled("not started");
         return;
     }
-    ImGui::Text("steps %lld   bodies %d   awake %d", w->stepCount(), w->bodyCount(), w->stats().awake);
-    ImGui::Text("contacts %d   deepest overlap %.4f m", w->stats().contacts, w->stats().maxPenetration);
+    ImGui::Text("steps %lld   bodies %d   awake %d", w->stepCount(), w->bodyCount(),
+                w->stats().awake);
+    ImGui::Text("contacts %d   deepest overlap %.4f m", w->stats().contacts,
+                w->stats().maxPenetration);
     ImGui::Text("energy %.3f J", w->kineticEnergy() + w->potentialEnergy());
 }
 

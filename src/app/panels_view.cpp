@@ -30,7 +30,9 @@ static void cameraFields(UiContext& c) {
     fieldVec3("position", Field::CameraPosition, &cam.pos, e);
     fieldVec3("target", Field::CameraTarget, &cam.target, e);
     fieldFloat("fov", Field::Fov, &cam.fov, e);
-    if (e.changed) c.editor.edit("Edit camera", [&](Scene& s) { s.camera = cam; }, e.key);
+    if (e.changed)
+        c.editor.edit(
+            "Edit camera", [&](Scene& s) { s.camera = cam; }, e.key);
     ImGui::Checkbox("orbit preview (1)", &c.ui.previewOrbit);
     itemTooltip(itemPath("orbit preview (1)"), "A slow turn about the target. Not saved.");
 }
@@ -45,7 +47,9 @@ static void renderFields(UiContext& c) {
     fieldFloat("fog", Field::Fog, &r.fog, e);
     fieldFlag("ambient occlusion", &r.ao, e, "Darkens creases and contact points.");
     fieldInt("anti-aliasing", Field::Aa, &r.aa, e);
-    if (e.changed) c.editor.edit("Edit render settings", [&](Scene& s) { s.render = r; }, e.key);
+    if (e.changed)
+        c.editor.edit(
+            "Edit render settings", [&](Scene& s) { s.render = r; }, e.key);
 }
 
 static void debugView(UiContext& c) {
@@ -53,24 +57,30 @@ static void debugView(UiContext& c) {
     const char* names[kRenderModeCount];
     for (int m = 0; m < kRenderModeCount; ++m) names[m] = renderModeName(RenderMode(m));
     int mode = int(ui.render.mode);
-    if (ImGui::Combo("debug view", &mode, names, kRenderModeCount)) ui.render.mode = RenderMode(mode);
-    itemTooltip(itemPath("debug view"), "What the view shows: the shaded picture or one of its parts.\nNot saved.");
+    if (ImGui::Combo("debug view", &mode, names, kRenderModeCount))
+        ui.render.mode = RenderMode(mode);
+    itemTooltip(itemPath("debug view"),
+                "What the view shows: the shaded picture or one of its parts.\nNot saved.");
     ImGui::Checkbox("uber shader", &ui.render.uber);
-    itemTooltip(itemPath("uber shader"), "Draw with the general shader instead of the one compiled\nfor this scene. Not saved.");
+    itemTooltip(
+        itemPath("uber shader"),
+        "Draw with the general shader instead of the one compiled\nfor this scene. Not saved.");
     // A scene without fog has none to show: unticked and disabled, not a box that does nothing.
     const bool sceneFog = c.editor.scene().render.fog > 0.0f;
     bool shown = sceneFog && ui.render.fog;
     ImGui::BeginDisabled(!sceneFog);
     if (ImGui::Checkbox("fog (F)", &shown)) ui.render.fog = shown;
     ImGui::EndDisabled();
-    itemTooltip(itemPath("fog (F)"), sceneFog ? "Shows the scene's fog (render fog above). Not saved."
-                                              : "This scene has no fog: set fog above 0 to see it.");
+    itemTooltip(itemPath("fog (F)"), sceneFog
+                                         ? "Shows the scene's fog (render fog above). Not saved."
+                                         : "This scene has no fog: set fog above 0 to see it.");
     postModeCombo(ui);
     itemTooltip(itemPath("post pass"), "FXAA smooths edges after the march. Not saved.");
     ImGui::SliderFloat("shadow softness", &ui.render.quality.softness, 2.0f, 64.0f, "k = %.1f",
                        ImGuiSliderFlags_Logarithmic);
     markItem(itemPath("shadow softness"));
-    itemTooltip(itemPath("shadow softness"), "k of the soft-shadow estimate, 2 to 64: lower is softer.\nNot saved.");
+    itemTooltip(itemPath("shadow softness"),
+                "k of the soft-shadow estimate, 2 to 64: lower is softer.\nNot saved.");
 }
 
 void postModeCombo(UiState& ui) {
@@ -134,7 +144,8 @@ static void statsOverlay(UiContext& c) {
     ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 10, 30), ImGuiCond_Always, ImVec2(1, 0));
     ImGui::SetNextWindowBgAlpha(0.6f);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration |
+                                   ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
     if (ImGui::Begin("##stats", nullptr, flags)) {
         markPanel();
@@ -144,12 +155,10 @@ static void statsOverlay(UiContext& c) {
         ImGui::Text("UI %.0f fps, %.0f ms/frame", s.fps, s.meanMs);
         if (s.scene.done)
             ImGui::Text("scene %s in %.1f s", s.scene.state.c_str(), s.scene.refinedMs / 1000.0);
-        else
-            ImGui::Text("scene %s", s.scene.state.c_str());
+        else ImGui::Text("scene %s", s.scene.state.c_str());
         if (s.scene.passMs > 0.0)
             ImGui::Text("%.0f ms/step, full %.1f s", s.scene.stepMs, s.scene.passMs / 1000.0);
-        else
-            ImGui::Text("%.0f ms/step", s.scene.stepMs);
+        else ImGui::Text("%.0f ms/step", s.scene.stepMs);
         ImGui::PlotLines("##frames", s.frameMs, FrameStats::kHistory, s.next, "UI frame ms", 0.0f,
                          std::max(worst, 1.0f), ImVec2(200, 24));
         const PhysicsWorld* world = c.editor.simulation().world();
@@ -157,9 +166,9 @@ static void statsOverlay(UiContext& c) {
         ImGui::Text("%zu objects   simulated %.2f s%s", c.editor.scene().objects.size(), simulated,
                     c.editor.simulation().playing() ? ", playing" : "");
         markItem("Statistics/simulated");
-        // The scene's own program on its way: meanwhile the uber stand-in or the last program draws.
-        // The row is always there: a row that came and went would grow the auto-sized overlay a
-        // frame late, and a compile shorter than a frame would never show.
+        // The scene's own program on its way: meanwhile the uber stand-in or the last program
+        // draws. The row is always there: a row that came and went would grow the auto-sized
+        // overlay a frame late, and a compile shorter than a frame would never show.
         if (c.view.compiling()) {
             ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "compiling the scene's shader...");
             markItem("Statistics/compiling");
@@ -179,8 +188,9 @@ static void shaderLogWindow(const std::string& log) {
     ImGui::SetNextWindowPos(ImVec2(10, display.y - 10), ImGuiCond_FirstUseEver, ImVec2(0, 1));
     ImGui::SetNextWindowSize(ImVec2(std::min(620.0f, display.x - 20), 150), ImGuiCond_FirstUseEver);
     if (ImGui::Begin("Shader error")) {
-        ImGui::TextUnformatted("The last program that compiled keeps drawing. Fix the file in "
-                               "shaders/ and it reloads.");
+        ImGui::TextUnformatted(
+            "The last program that compiled keeps drawing. Fix the file in "
+            "shaders/ and it reloads.");
         ImGui::Separator();
         ImGui::BeginChild("log");
         ImGui::TextUnformatted(log.c_str());
@@ -195,9 +205,11 @@ static void statusLine(UiContext& c) {
     const std::string& text = c.ui.messages.text(Place::Status);
     if (text.empty()) return;
     ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y - 10), ImGuiCond_Always, ImVec2(0.5f, 1));
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y - 10), ImGuiCond_Always,
+                            ImVec2(0.5f, 1));
     ImGui::SetNextWindowBgAlpha(0.8f);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration |
+                                   ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
     if (ImGui::Begin("##status", nullptr, flags)) messageLine(c, Place::Status);
     ImGui::End();

@@ -13,7 +13,7 @@ namespace mb {
 
 class RenderDialog {
 public:
-    void draw(UiContext& c);        // the window, while c.ui.showRender
+    void draw(UiContext& c);          // the window, while c.ui.showRender
     void work(double budgetSeconds);  // draws tiles until the budget is spent; needs the context
     bool running() const { return tiles_ != nullptr; }
 

@@ -8,10 +8,12 @@
 namespace mb {
 
 int runReport(const Args& a) {
-    if (a.positional.size() == 1 && a.positional[0] == "physics") return runPhysicsReport(MARCHBOX_SOURCE_DIR);
+    if (a.positional.size() == 1 && a.positional[0] == "physics")
+        return runPhysicsReport(MARCHBOX_SOURCE_DIR);
     OffscreenBackend backend;
     if (!offscreenBackend(a, &backend)) return kExitUsage;
-    if (a.positional.size() == 1 && a.positional[0] == "render") return runRenderReport(MARCHBOX_SOURCE_DIR, backend);
+    if (a.positional.size() == 1 && a.positional[0] == "render")
+        return runRenderReport(MARCHBOX_SOURCE_DIR, backend);
     std::cerr << "usage: marchbox report physics|render\n";
     return kExitUsage;
 }

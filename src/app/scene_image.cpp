@@ -51,7 +51,8 @@ bool SceneImage::draw(Renderer& r, const ViewStep& s, double* ms) {
         if (s.kind == StepKind::Band && valid_) r.seedFrame(picture_);
     }
     if (!picture_.resize(s.width, s.height, GL_RGBA8)) {
-        status_.state = "cannot create a " + std::to_string(s.width) + "x" + std::to_string(s.height) + " picture";
+        status_.state = "cannot create a " + std::to_string(s.width) + "x" +
+                        std::to_string(s.height) + " picture";
         return false;
     }
     r.rebind();  // File > Render...'s renderer binds its own scene to the same points
@@ -79,7 +80,8 @@ void SceneImage::report(const ViewStep& s, double ms) {
     status_.stepMs = ms;
     status_.state = policy_.describe();
     status_.done = policy_.done();
-    const std::string head = "scene-frame " + std::to_string(s.width) + "x" + std::to_string(s.height);
+    const std::string head =
+        "scene-frame " + std::to_string(s.width) + "x" + std::to_string(s.height);
     if (s.kind == StepKind::Preview && policy_.previewing()) {  // not a full-size first pass
         emitEvent(head + " preview " + whole(ms));
     } else {
@@ -87,7 +89,8 @@ void SceneImage::report(const ViewStep& s, double ms) {
         // A full-size preview is a whole pass; bands run top down, so y 0 ends one.
         if (s.kind == StepKind::Preview || s.y == 0) {
             const int pass = s.kind == StepKind::Preview ? 1 : s.sample + 1;
-            emitEvent(head + " pass " + std::to_string(pass) + "/" + std::to_string(policy_.samples()) + " " + whole(passMs_));
+            emitEvent(head + " pass " + std::to_string(pass) + "/" +
+                      std::to_string(policy_.samples()) + " " + whole(passMs_));
             if (pass == 1) status_.passMs = passMs_;
             passMs_ = 0.0;
         }

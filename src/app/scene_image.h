@@ -19,8 +19,8 @@ struct PictureKey {
     uint64_t content = ~0ull;  // counts changes to the renderer's scene, options and program
     int selected = -1;         // the highlighted object
     int width = 0, height = 0;
-    int aa = 1;                // the scene's samples per axis
-    bool canAverage = true;    // false for the object-id view
+    int aa = 1;              // the scene's samples per axis
+    bool canAverage = true;  // false for the object-id view
 
     bool operator==(const PictureKey&) const = default;  // every field: no stale picture
 };
@@ -28,7 +28,7 @@ struct PictureKey {
 // For the statistics overlay.
 struct PictureStatus {
     std::string state = "no picture yet";  // "640x360 (1/2) preview", "1280x720 refining 2/4"
-    double stepMs = 0.0;     // the last draw of the scene
+    double stepMs = 0.0;                   // the last draw of the scene
     double passMs = 0.0;     // the last whole full-size pass: its bands' draws added up
     double refinedMs = 0.0;  // the last change to done, on the clock, UI frames included
     bool done = false;       // refinedMs is this picture's
@@ -55,8 +55,8 @@ private:
 
     Refinement policy_;
     PictureKey key_;
-    ColorTarget picture_;  // RGBA8, the preview's size or the window's
-    bool valid_ = false;   // picture_ holds a drawn image
+    ColorTarget picture_;        // RGBA8, the preview's size or the window's
+    bool valid_ = false;         // picture_ holds a drawn image
     bool draftPreview_ = false;  // the restart planned the preview at draft quality
     Clock::time_point changedAt_;
     double passMs_ = 0.0;  // the bands of the pass under way, so far

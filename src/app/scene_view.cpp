@@ -112,7 +112,8 @@ bool SceneView::update(int width, int height, int selectedObject, StepKind only)
     }
     if (renderer_->program() != before) ++content_;  // the scene's own program took over
     if (draft_ && !draft_->poll(&error)) draftCurrent_ = false;
-    PictureKey key{content_, selectedObject, width, height, aa_, options_.mode != RenderMode::ObjectId};
+    PictureKey key{
+        content_, selectedObject, width, height, aa_, options_.mode != RenderMode::ObjectId};
     return image_.update(*renderer_, draftRenderer(), key, only);
 }
 

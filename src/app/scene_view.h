@@ -22,8 +22,8 @@ public:
     bool init(const Scene& scene, std::string* error);  // needs the window's context current
 
     // Uploads the scene when its version, the options or the quality changed since the last call.
-    void sync(const Scene& scene, uint64_t version, const RenderOptions& options, QualityPreset quality,
-              double now);
+    void sync(const Scene& scene, uint64_t version, const RenderOptions& options,
+              QualityPreset quality, double now);
     // The scene's share of a frame: swaps in a program that finished compiling, then draws the
     // picture's next step if it is of kind `only` (see SceneImage::update); true if it drew.
     bool update(int width, int height, int selectedObject, StepKind only);
@@ -36,7 +36,9 @@ public:
     // only when the new program compiles and links, so a broken edit keeps the last good one.
     void pollShaders(const Scene& scene, double now);
     const std::string& shaderLog() const { return log_; }  // the last failure, empty when fine
-    bool compiling() const { return announced_ || renderer_->compilingScene(); }  // the scene's program is not ready
+    bool compiling() const {
+        return announced_ || renderer_->compilingScene();
+    }  // the scene's program is not ready
     const ShaderFeatures* features() const { return renderer_->features(); }  // of the one drawing
 
 private:
@@ -61,8 +63,8 @@ private:
     RenderOptions options_;
     QualityPreset quality_ = QualityPreset::Normal;
     uint64_t version_ = ~0ull;
-    uint64_t content_ = 0;  // grows with each change to what the renderer draws
-    int aa_ = 1;            // the scene's samples per axis, as last uploaded
+    uint64_t content_ = 0;    // grows with each change to what the renderer draws
+    int aa_ = 1;              // the scene's samples per axis, as last uploaded
     bool announced_ = false;  // a compile is due: the UI says so for a frame before it starts
     double nextPoll_ = 0.0, retryAt_ = 0.0;
     std::string log_;

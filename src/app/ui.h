@@ -22,8 +22,8 @@ namespace mb {
 // and the scene's picture (drawn a step a frame, see scene_image.h), kept apart.
 struct FrameStats {
     static constexpr int kHistory = 120;
-    float frameMs[kHistory] = {};  // a ring, newest at `next - 1`
-    int next = 0, count = 0;       // count: frames recorded, up to kHistory
+    float frameMs[kHistory] = {};     // a ring, newest at `next - 1`
+    int next = 0, count = 0;          // count: frames recorded, up to kHistory
     float fps = 0.0f, meanMs = 0.0f;  // over the last kHistory / 2 frames: fps = 1000 / meanMs
     PictureStatus scene;
     void add(double seconds);
@@ -44,20 +44,20 @@ struct UiState {
 
     // Requests raised by menus and shortcuts, carried out by drawDialogs() this frame.
     bool wantOpen = false, wantSaveAs = false, wantObjectPopup = false, wantScreenshot = false;
-    std::string pathField;                 // the Open and Save As dialogs' path
-    std::vector<std::string> openErrors;   // FILE:LINE lines of the last failed open
-    bool saveThenLeave = false;            // Save As was asked for by the unsaved-changes prompt
-    std::string replacePath;               // Save As warned once that this file exists
-    bool refocusPath = false;              // Save As failed on Enter: the field keeps the keys
-    bool escape = false;                   // Esc this frame: the open dialog cancels
+    std::string pathField;                // the Open and Save As dialogs' path
+    std::vector<std::string> openErrors;  // FILE:LINE lines of the last failed open
+    bool saveThenLeave = false;           // Save As was asked for by the unsaved-changes prompt
+    std::string replacePath;              // Save As warned once that this file exists
+    bool refocusPath = false;             // Save As failed on Enter: the field keeps the keys
+    bool escape = false;                  // Esc this frame: the open dialog cancels
 
     Messages messages;                     // refusals and failures, each in its place, in red
     RenderOptions render = viewOptions();  // debug view and uber shader
     QualityPreset quality = QualityPreset::Normal;  // View > Quality, over the scene's; not saved
-    bool previewOrbit = false;             // key 1
-    std::string scenesDir;                 // scenes/ of the source tree, for File > Open
-    RecentFiles recent{recentFilesPath()}; // File > Open Recent
-    std::string recentNoted;               // the editor's last file, as last put in `recent`
+    bool previewOrbit = false;                      // key 1
+    std::string scenesDir;                          // scenes/ of the source tree, for File > Open
+    RecentFiles recent{recentFilesPath()};          // File > Open Recent
+    std::string recentNoted;  // the editor's last file, as last put in `recent`
 
     // Docked panels (panel_layout.h): where each was last put, and the statistics' bottom edge
     // as last drawn (0 while hidden).

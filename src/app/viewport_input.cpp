@@ -22,7 +22,8 @@ void ViewportInput::update(UiContext& c, glm::vec2 framebufferSize, float second
     scale_ = {io.DisplayFramebufferScale.x, io.DisplayFramebufferScale.y};
     if (drag_ == Drag::None && !io.WantCaptureMouse) press(c);
     if (drag_ != Drag::None) hold(c);
-    if (!io.WantCaptureMouse && io.MouseWheel != 0.0f) zoomCamera(c.editor.view(), io.MouseWheel, controls_);
+    if (!io.WantCaptureMouse && io.MouseWheel != 0.0f)
+        zoomCamera(c.editor.view(), io.MouseWheel, controls_);
     keys(c, seconds);
     if (c.ui.previewOrbit) previewOrbit(c.editor.view(), seconds, controls_);
 }
@@ -59,7 +60,8 @@ void ViewportInput::hold(UiContext& c) {
     // the distance dragged once the button is up, so it is measured here.
     const ImVec2 from = io.MouseClickedPos[button_], to = io.MousePos;
     if (ImGui::IsMousePosValid(&to) && ImGui::IsMousePosValid(&from))
-        moved_ = moved_ || glm::distance(glm::vec2(to.x, to.y), glm::vec2(from.x, from.y)) >= io.MouseDragThreshold;
+        moved_ = moved_ || glm::distance(glm::vec2(to.x, to.y), glm::vec2(from.x, from.y)) >=
+                               io.MouseDragThreshold;
     glm::vec2 delta(io.MouseDelta.x, io.MouseDelta.y);
     if (moved_ && delta != glm::vec2(0.0f)) follow(c, delta);
     if (!ImGui::IsMouseDown(button_)) release(c);
@@ -68,15 +70,21 @@ void ViewportInput::hold(UiContext& c) {
 void ViewportInput::follow(UiContext& c, glm::vec2 delta) {
     ImGuiIO& io = ImGui::GetIO();
     switch (drag_) {
-        case Drag::Orbit: orbitCamera(c.editor.view(), delta, controls_); break;
-        case Drag::Pan: panCamera(c.editor.view(), delta * scale_.y, view_.y); break;
+        case Drag::Orbit:
+            orbitCamera(c.editor.view(), delta, controls_);
+            break;
+        case Drag::Pan:
+            panCamera(c.editor.view(), delta * scale_.y, view_.y);
+            break;
         case Drag::Move: {
             glm::vec3 pos;
-            if (ground_.follow(c.editor.scene().camera, pixel({io.MousePos.x, io.MousePos.y}), view_, &pos))
+            if (ground_.follow(c.editor.scene().camera, pixel({io.MousePos.x, io.MousePos.y}),
+                               view_, &pos))
                 c.editor.moveObject(ground_.object, pos, 0x4d6f7665ull << 32 | moves_);  // "Move"
             break;
         }
-        case Drag::None: break;
+        case Drag::None:
+            break;
     }
 }
 
@@ -97,7 +105,8 @@ void ViewportInput::keys(UiContext& c, float seconds) {
     auto axis = [](int minus, int plus) {
         return float(ImGui::IsKeyDown(plus)) - float(ImGui::IsKeyDown(minus));
     };
-    glm::vec3 move(axis(GLFW_KEY_A, GLFW_KEY_D), axis(GLFW_KEY_Q, GLFW_KEY_E), axis(GLFW_KEY_S, GLFW_KEY_W));
+    glm::vec3 move(axis(GLFW_KEY_A, GLFW_KEY_D), axis(GLFW_KEY_Q, GLFW_KEY_E),
+                   axis(GLFW_KEY_S, GLFW_KEY_W));
     if (move != glm::vec3(0.0f)) flyCamera(c.editor.view(), move, seconds, controls_);
 }
 

@@ -26,10 +26,10 @@ private:
     void keys(UiContext& c, float seconds);
 
     Drag drag_ = Drag::None;
-    int button_ = 0;           // the button that started the drag
-    bool moved_ = false;       // past ImGui's drag threshold: not a click
+    int button_ = 0;      // the button that started the drag
+    bool moved_ = false;  // past ImGui's drag threshold: not a click
     GroundDrag ground_;
-    uint64_t moves_ = 0;       // numbers each move-drag: one undo step per drag
+    uint64_t moves_ = 0;  // numbers each move-drag: one undo step per drag
     glm::vec2 view_{0.0f}, scale_{1.0f};
     CameraControls controls_;
 };

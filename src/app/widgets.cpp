@@ -79,7 +79,8 @@ void take(const char* label, FieldEdit& e) {
 bool drawFloats(const char* label, Field f, float* v, int n) {
     const FieldSpec& s = fieldSpec(f);
     if (s.slider)
-        return ImGui::SliderScalarN(label, ImGuiDataType_Float, v, n, &s.dragMin, &s.dragMax, s.format);
+        return ImGui::SliderScalarN(label, ImGuiDataType_Float, v, n, &s.dragMin, &s.dragMax,
+                                    s.format);
     // Drags move at a pace set by their comfortable range and stop at the accepted range.
     float lo = s.minExclusive ? s.dragMin : float(s.min), hi = float(s.max);
     float speed = (s.dragMax - s.dragMin) / 400.0f;
@@ -95,7 +96,8 @@ void finishFloats(const char* label, Field f, bool edited, float* value, float* 
     if (ready && !std::equal(value, value + n, stored)) {
         std::string why;
         bool ok = n == 1 ? acceptField(f, value[0], stored[0], &why)
-                         : acceptVec(f, {value[0], value[1], value[2]}, {stored[0], stored[1], stored[2]}, &why);
+                         : acceptVec(f, {value[0], value[1], value[2]},
+                                     {stored[0], stored[1], stored[2]}, &why);
         if (ok) {
             std::copy(value, value + n, stored);
             take(label, e);
@@ -132,7 +134,8 @@ void fieldVec3(const char* label, Field f, glm::vec3* v, FieldEdit& e) {
 
 void fieldColor(const char* label, Field f, glm::vec3* v, FieldEdit& e) {
     glm::vec3 value = *v;
-    bool edited = ImGui::ColorEdit3(label, &value.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+    bool edited =
+        ImGui::ColorEdit3(label, &value.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
     finishFloats(label, f, edited, &value.x, &v->x, 3, e);
 }
 
@@ -207,8 +210,9 @@ void markItem(const std::string& name) {
     // away, or a row the window has yet to grow to) is marked hidden: a click there would
     // land on something else.
     const bool shown = ImGui::GetCurrentWindow()->ClipRect.Contains(centre);
-    markChange("widget " + name, shown ? "widget " + name + " " + whole(centre.x) + " " + whole(centre.y)
-                                       : "hidden " + name);
+    markChange("widget " + name,
+               shown ? "widget " + name + " " + whole(centre.x) + " " + whole(centre.y)
+                     : "hidden " + name);
 }
 
 void markPanel() {
@@ -220,8 +224,8 @@ void markPanel() {
 }
 
 unsigned UiState::openPanels() const {
-    const bool shown[kPanelCount] = {showObjects, showMaterials, showLights, showView,
-                                     showSimulation, showRender, showHelp};
+    const bool shown[kPanelCount] = {showObjects,    showMaterials, showLights, showView,
+                                     showSimulation, showRender,    showHelp};
     unsigned open = 0;
     for (int p = 0; p < kPanelCount; ++p) open |= shown[p] ? panelBit(Panel(p)) : 0u;
     return open;
@@ -229,7 +233,8 @@ unsigned UiState::openPanels() const {
 
 bool beginPanel(UiContext& c, Panel p, const char* title, bool* open) {
     const ImGuiIO& io = ImGui::GetIO();
-    const PanelFrame frame{io.DisplaySize.x, io.DisplaySize.y, ImGui::GetFrameHeight(), c.ui.statsBottom};
+    const PanelFrame frame{io.DisplaySize.x, io.DisplaySize.y, ImGui::GetFrameHeight(),
+                           c.ui.statsBottom};
     const PanelRect r = layoutPanels(frame, c.ui.openPanels())[size_t(p)];
     PanelRect& placed = c.ui.placed[size_t(p)];
     const bool moved = !(r == placed);
@@ -239,7 +244,8 @@ bool beginPanel(UiContext& c, Panel p, const char* title, bool* open) {
     const ImGuiWindow* w = ImGui::FindWindowByName(title);
     const float top = moved || !w ? r.y : w->Pos.y;
     const float room = std::max(frame.height - kPanelMargin - top, kPanelMinHeight);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(r.width, 0.0f), ImVec2(r.width, std::min(r.height, room)));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(r.width, 0.0f),
+                                        ImVec2(r.width, std::min(r.height, room)));
     bool shown = ImGui::Begin(title, open, ImGuiWindowFlags_AlwaysAutoResize);
     markPanel();
     return shown;
@@ -248,7 +254,8 @@ bool beginPanel(UiContext& c, Panel p, const char* title, bool* open) {
 void messageLine(UiContext& c, Place p) {
     c.ui.messages.shown(p);
     fieldErrorLine(c.ui.messages.text(p));
-    if (c.ui.messages.isNew(p)) ImGui::SetScrollHereY(1.0f);  // below a panel's fold it would go unseen
+    if (c.ui.messages.isNew(p))
+        ImGui::SetScrollHereY(1.0f);  // below a panel's fold it would go unseen
 }
 
 void markPopup(const std::string& name, bool open) {

@@ -95,7 +95,9 @@ void Window::onScroll(GLFWwindow* w, double x, double y) {
 
 void Window::onKey(GLFWwindow* w, int key, int, int action, int mods) {
     if (action == GLFW_REPEAT) return;  // ImGui repeats held keys itself
-    enqueue(w, {.kind = InputEvent::Kind::Key, .code = key, .down = action == GLFW_PRESS, .mods = mods});
+    enqueue(
+        w,
+        {.kind = InputEvent::Kind::Key, .code = key, .down = action == GLFW_PRESS, .mods = mods});
 }
 
 void Window::onChar(GLFWwindow* w, unsigned int codepoint) {

@@ -22,11 +22,12 @@ public:
     bool create(const std::string& title, int width, int height, std::string* error);
 
     GLFWwindow* handle() const { return window_; }
-    void framebufferSize(int* width, int* height) const;  // pixels: differs from the window on HiDPI
+    void framebufferSize(int* width,
+                         int* height) const;  // pixels: differs from the window on HiDPI
     void setTitle(const std::string& title);
     bool closeRequested() const;  // the window's close button
     void clearCloseRequest();
-    std::vector<std::string> takeDrops();  // paths dropped on the window since the last call
+    std::vector<std::string> takeDrops();   // paths dropped on the window since the last call
     InputQueue& input() { return input_; }  // mouse, keys and text, in the order they came
     void swap();
 

@@ -58,8 +58,8 @@ void zoomCamera(Camera& c, float steps, const CameraControls& k) {
 
 void flyCamera(Camera& c, glm::vec3 move, float seconds, const CameraControls& k) {
     CameraBasis b = cameraBasis(c);
-    glm::vec3 step = move.x * glm::normalize(b.right) + move.y * glm::vec3(0, 1, 0) +
-                     move.z * b.forward;
+    glm::vec3 step =
+        move.x * glm::normalize(b.right) + move.y * glm::vec3(0, 1, 0) + move.z * b.forward;
     step *= k.flySpeed * seconds;
     c.pos += step;
     c.target += step;

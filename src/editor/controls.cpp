@@ -21,7 +21,8 @@ static const Control kControls[] = {
     {"F", "fog on or off, in a scene with fog (render fog above 0)"},
     {"P", "FXAA on or off"},
     {"F12", "screenshot (PNG)"},
-    {"Esc", "close the open menu, popup or dialog; with none, quit, asking first about unsaved changes"},
+    {"Esc",
+     "close the open menu, popup or dialog; with none, quit, asking first about unsaved changes"},
     {"Drop a file", "open the scene file dropped on the window"},
 };
 

@@ -44,7 +44,8 @@ void Editor::cancelLeave() {
 
 void Editor::leaveNow(Leave what, const std::string& path) {
     switch (what) {
-        case Leave::None: return;
+        case Leave::None:
+            return;
         case Leave::NewScene:
             replace(newScene(), "");
             emitEvent("new");
@@ -213,7 +214,8 @@ bool Editor::removeSelected(std::string* why) {
 
 void Editor::moveObject(int index, glm::vec3 pos, uint64_t mergeKey) {
     if (index < 0 || index >= int(doc_.scene().objects.size())) return;
-    edit("Move object", [&](Scene& s) { s.objects[size_t(index)].pos = pos; }, mergeKey);
+    edit(
+        "Move object", [&](Scene& s) { s.objects[size_t(index)].pos = pos; }, mergeKey);
 }
 
 //-----------------------------------------------------------------------------

@@ -23,37 +23,54 @@ static const FieldSpec kSpecs[] = {
     {"target", -kFar, kFar, false, -20, 20, false, false, "%.3f", "m",
      "The point the camera looks at and orbits about. Saved with the scene."},
     {"fov", 1, 179, false, 10, 120, false, true, "%.1f", "degrees", "Vertical field of view."},
-    {"gravity", 0, 1000, false, 0, 30, false, false, "%.2f", "m/s\xC2\xB2", "Acceleration along -y."},
-    {"restitution", 0, 1, false, 0, 1, false, true, "%.2f", "", "Bounciness: 0 stops, 1 keeps every bounce."},
-    {"friction", 0, 100, false, 0, 2, false, false, "%.2f", "", "Coulomb coefficient, sphere on sphere and on statics."},
-    {"rolling", 0, 100, false, 0, 0.2f, false, false, "%.3f", "", "Rolling resistance: torque rolling x radius x normal force."},
-    {"floor", -kFar, kFar, false, -10, 10, false, false, "%.2f", "m", "Height of the ground plane."},
+    {"gravity", 0, 1000, false, 0, 30, false, false, "%.2f", "m/s\xC2\xB2",
+     "Acceleration along -y."},
+    {"restitution", 0, 1, false, 0, 1, false, true, "%.2f", "",
+     "Bounciness: 0 stops, 1 keeps every bounce."},
+    {"friction", 0, 100, false, 0, 2, false, false, "%.2f", "",
+     "Coulomb coefficient, sphere on sphere and on statics."},
+    {"rolling", 0, 100, false, 0, 0.2f, false, false, "%.3f", "",
+     "Rolling resistance: torque rolling x radius x normal force."},
+    {"floor", -kFar, kFar, false, -10, 10, false, false, "%.2f", "m",
+     "Height of the ground plane."},
     {"steps", 1, 4096, false, 16, 1024, true, true, "%.0f", "", "Most march steps per ray."},
-    {"epsilon", 0, 1, true, 1e-5f, 0.01f, false, false, "%.5f", "m", "Distance that counts as a hit."},
+    {"epsilon", 0, 1, true, 1e-5f, 0.01f, false, false, "%.5f", "m",
+     "Distance that counts as a hit."},
     {"shadows", 0, 2, false, 0, 2, true, true, "%.0f", "", "0 none, 1 hard, 2 soft."},
     {"reflections", 0, 8, false, 0, 8, true, true, "%.0f", "", "Most mirror bounces."},
-    {"fog", 0, 10, false, 0, 0.2f, false, false, "%.3f", "1/m", "Density of exp\xC2\xB2 fog; 0 is none."},
+    {"fog", 0, 10, false, 0, 0.2f, false, false, "%.3f", "1/m",
+     "Density of exp\xC2\xB2 fog; 0 is none."},
     {"aa", 1, 4, false, 1, 4, true, true, "%.0f", "", "Samples per pixel along each axis."},
-    {"color", 0, 100, false, 0, 1, false, false, "%.3f", "", "Red, green, blue; above 1 is brighter than white."},
+    {"color", 0, 100, false, 0, 1, false, false, "%.3f", "",
+     "Red, green, blue; above 1 is brighter than white."},
     {"Ka", 0, 100, false, 0, 1, false, false, "%.2f", "", "Ambient coefficient."},
     {"Kd", 0, 100, false, 0, 1, false, false, "%.2f", "", "Diffuse coefficient."},
     {"Ks", 0, 100, false, 0, 1, false, false, "%.2f", "", "Specular coefficient."},
     {"C", 0, 10000, true, 1, 256, false, false, "%.1f", "", "Shininess: the specular exponent."},
     {"Kr", 0, 1, false, 0, 1, false, true, "%.2f", "", "Mirror reflectivity."},
-    {"color", 0, 100, false, 0, 1, false, false, "%.3f", "", "Red, green, blue; above 1 is brighter than white."},
+    {"color", 0, 100, false, 0, 1, false, false, "%.3f", "",
+     "Red, green, blue; above 1 is brighter than white."},
     {"intensity", 0, 10000, false, 0, 5, false, false, "%.2f", "", "Brightness, times the colour."},
     {"pos", -kFar, kFar, false, -20, 20, false, false, "%.3f", "m", "Where the point light is."},
-    {"dir", -kFar, kFar, false, -1, 1, false, false, "%.3f", "", "The way the light shines; its length does not matter."},
+    {"dir", -kFar, kFar, false, -1, 1, false, false, "%.3f", "",
+     "The way the light shines; its length does not matter."},
     {"pos", -kFar, kFar, false, -20, 20, false, false, "%.3f", "m", "Centre."},
-    {"radius", 0, kFar, true, 0.01f, 5, false, false, "%.3f", "m", "Radius of a sphere, torus ring, capsule or cylinder."},
-    {"size", 0, kFar, true, 0.01f, 5, false, false, "%.3f", "m", "Half the box's extent along each local axis."},
+    {"radius", 0, kFar, true, 0.01f, 5, false, false, "%.3f", "m",
+     "Radius of a sphere, torus ring, capsule or cylinder."},
+    {"size", 0, kFar, true, 0.01f, 5, false, false, "%.3f", "m",
+     "Half the box's extent along each local axis."},
     {"minor", 0, kFar, true, 0.01f, 2, false, false, "%.3f", "m", "Radius of the torus tube."},
-    {"height", 0, kFar, true, 0.01f, 10, false, false, "%.3f", "m", "Length along local y of a capsule's segment or a cylinder."},
-    {"rot", -360, 360, false, -180, 180, false, false, "%.1f", "degrees", "Turns about x, then y, then z."},
+    {"height", 0, kFar, true, 0.01f, 10, false, false, "%.3f", "m",
+     "Length along local y of a capsule's segment or a cylinder."},
+    {"rot", -360, 360, false, -180, 180, false, false, "%.1f", "degrees",
+     "Turns about x, then y, then z."},
     {"mass", 0, 1e6, false, 0, 20, false, false, "%.2f", "kg", "0 keeps a sphere still."},
-    {"vel", -kFar, kFar, false, -20, 20, false, false, "%.2f", "m/s", "Velocity of a dynamic body."},
-    {"spin", -kFar, kFar, false, -20, 20, false, false, "%.2f", "rad/s", "Angular velocity of a dynamic body."},
-    {"blend", 0, kFar, false, 0, 1, false, false, "%.3f", "m", "Smooth-blend radius with the objects before; 0 is sharp."},
+    {"vel", -kFar, kFar, false, -20, 20, false, false, "%.2f", "m/s",
+     "Velocity of a dynamic body."},
+    {"spin", -kFar, kFar, false, -20, 20, false, false, "%.2f", "rad/s",
+     "Angular velocity of a dynamic body."},
+    {"blend", 0, kFar, false, 0, 1, false, false, "%.3f", "m",
+     "Smooth-blend radius with the objects before; 0 is sharp."},
 };
 static_assert(sizeof kSpecs / sizeof kSpecs[0] == size_t(Field::Count), "one row per Field");
 
@@ -96,7 +113,9 @@ static bool check(Field f, double v, const std::string& label, std::string* why)
     return ok;
 }
 
-bool validateField(Field f, double v, std::string* why) { return check(f, v, fieldSpec(f).name, why); }
+bool validateField(Field f, double v, std::string* why) {
+    return check(f, v, fieldSpec(f).name, why);
+}
 
 bool validateVec(Field f, glm::vec3 v, std::string* why) {
     for (int i = 0; i < 3; ++i)
@@ -137,8 +156,11 @@ bool acceptVec(Field f, glm::vec3 typed, glm::vec3 kept, std::string* why) {
 // A file's lines end at kMaxLineBytes: a longer name would save a material line that no longer
 // loads. kMaxNameBytes leaves the line room for every other key, and for duplicates' "-copy"s.
 bool validateName(const std::string& name, std::string* why) {
-    auto allowed = [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '.' || c == '-'; };
-    if (!name.empty() && name.size() <= kMaxNameBytes && std::all_of(name.begin(), name.end(), allowed))
+    auto allowed = [](unsigned char c) {
+        return std::isalnum(c) || c == '_' || c == '.' || c == '-';
+    };
+    if (!name.empty() && name.size() <= kMaxNameBytes &&
+        std::all_of(name.begin(), name.end(), allowed))
         return true;
     *why = "a name is letters, digits, '_', '.' or '-', 1 to " + std::to_string(kMaxNameBytes);
     return false;

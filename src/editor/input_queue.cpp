@@ -53,10 +53,14 @@ bool Frame::fits(const InputEvent& e, bool typingKey) const {
     const bool clicked = buttons_.any();
     switch (e.kind) {
         case Kind::Move:
-        case Kind::Leave: return !clicked && (!wheeled_ || behind_);
-        case Kind::Wheel: return true;
-        case Kind::Text: return !clicked && !silentKeyWentDown_;
-        case Kind::Button: return !changesState(s_, e) || !buttons_[size_t(e.code)];
+        case Kind::Leave:
+            return !clicked && (!wheeled_ || behind_);
+        case Kind::Wheel:
+            return true;
+        case Kind::Text:
+            return !clicked && !silentKeyWentDown_;
+        case Kind::Button:
+            return !changesState(s_, e) || !buttons_[size_t(e.code)];
         case Kind::Key:
             if (!changesState(s_, e)) return true;
             if (clicked) return false;
@@ -73,12 +77,16 @@ void Frame::apply(const InputEvent& e, bool typingKey, bool typesText) {
             s_.mouse = e.at;
             s_.mouseIn = true;
             break;
-        case Kind::Leave: s_.mouseIn = false; break;
+        case Kind::Leave:
+            s_.mouseIn = false;
+            break;
         case Kind::Wheel:
             s_.wheel += e.at;
             wheeled_ = true;
             break;
-        case Kind::Text: s_.text.push_back(unsigned(e.code)); break;
+        case Kind::Text:
+            s_.text.push_back(unsigned(e.code));
+            break;
         case Kind::Button:
             if (!change) break;
             s_.buttons[size_t(e.code)] = e.down;

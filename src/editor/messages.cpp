@@ -5,9 +5,12 @@ namespace mb {
 
 Place itemPlace(ItemKind k) {
     switch (k) {
-        case ItemKind::Object: return Place::Objects;
-        case ItemKind::Material: return Place::Materials;
-        case ItemKind::Light: return Place::Lights;
+        case ItemKind::Object:
+            return Place::Objects;
+        case ItemKind::Material:
+            return Place::Materials;
+        case ItemKind::Light:
+            return Place::Lights;
     }
     return Place::Objects;
 }
@@ -27,7 +30,8 @@ bool Messages::isNew(Place p) const {
 }
 
 void Messages::endFrame(const Selection& selection, double seconds) {
-    const bool reselected = !(selection.kind == selection_.kind && selection.index == selection_.index);
+    const bool reselected =
+        !(selection.kind == selection_.kind && selection.index == selection_.index);
     selection_ = selection;
     for (int i = 0; i < kPlaceCount; ++i) {
         Entry& e = entries_[size_t(i)];

@@ -11,8 +11,8 @@ constexpr float kColumnWidth = 360.0f;  // room for a label beside ImGui's 208-p
 constexpr float kGap = 6.0f;            // between panels of a column
 
 // Stacks the open panels first..last from y `top` to `bottom` in equal shares.
-void stack(std::array<PanelRect, kPanelCount>& out, unsigned open, Panel first, Panel last,
-           float x, float width, float top, float bottom) {
+void stack(std::array<PanelRect, kPanelCount>& out, unsigned open, Panel first, Panel last, float x,
+           float width, float top, float bottom) {
     int n = 0;
     for (int p = int(first); p <= int(last); ++p) n += (open & panelBit(Panel(p))) != 0;
     if (n == 0) return;
@@ -30,9 +30,11 @@ void stack(std::array<PanelRect, kPanelCount>& out, unsigned open, Panel first, 
 std::array<PanelRect, kPanelCount> layoutPanels(const PanelFrame& frame, unsigned open) {
     std::array<PanelRect, kPanelCount> out{};
     // Two columns and three margins across; a narrow window narrows the columns.
-    const float width = std::max(std::min(kColumnWidth, (frame.width - 3.0f * kPanelMargin) / 2.0f), 1.0f);
+    const float width =
+        std::max(std::min(kColumnWidth, (frame.width - 3.0f * kPanelMargin) / 2.0f), 1.0f);
     const float bottom = frame.height - kPanelMargin;
-    stack(out, open, Panel::Objects, Panel::Lights, kPanelMargin, width, frame.top + kPanelMargin, bottom);
+    stack(out, open, Panel::Objects, Panel::Lights, kPanelMargin, width, frame.top + kPanelMargin,
+          bottom);
     stack(out, open, Panel::View, Panel::Controls, frame.width - kPanelMargin - width, width,
           std::max(frame.top, frame.rightTop) + kPanelMargin, bottom);
     return out;

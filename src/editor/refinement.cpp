@@ -58,10 +58,14 @@ glm::vec2 samplePosition(int k, int aa) {
     }
     std::vector<glm::vec2> grid;
     for (int j = 0; j < aa; ++j)
-        for (int i = 0; i < aa; ++i) grid.push_back({(i + 0.5f) / float(aa), (j + 0.5f) / float(aa)});
+        for (int i = 0; i < aa; ++i)
+            grid.push_back({(i + 0.5f) / float(aa), (j + 0.5f) / float(aa)});
     // Nearest the centre first: the first full-size pass then looks like the preview, unshifted.
-    auto fromCentre = [](glm::vec2 p) { return (p.x - 0.5f) * (p.x - 0.5f) + (p.y - 0.5f) * (p.y - 0.5f); };
-    std::stable_sort(grid.begin(), grid.end(), [&](glm::vec2 a, glm::vec2 b) { return fromCentre(a) < fromCentre(b); });
+    auto fromCentre = [](glm::vec2 p) {
+        return (p.x - 0.5f) * (p.x - 0.5f) + (p.y - 0.5f) * (p.y - 0.5f);
+    };
+    std::stable_sort(grid.begin(), grid.end(),
+                     [&](glm::vec2 a, glm::vec2 b) { return fromCentre(a) < fromCentre(b); });
     return grid[size_t(std::clamp(k, 0, aa * aa - 1))];
 }
 
@@ -80,7 +84,9 @@ void Refinement::restart(int width, int height, int aa, bool canAverage, bool dr
 // Each kind of step sized by its own cost. Until one is known the other stands in: the passes'
 // overestimates a draft preview (it comes out coarser), the draft's underestimates the first
 // band (whose draw then corrects it).
-const RunningMean& Refinement::previewCost() const { return draftPreview_ && draftCost_.known() ? draftCost_ : cost_; }
+const RunningMean& Refinement::previewCost() const {
+    return draftPreview_ && draftCost_.known() ? draftCost_ : cost_;
+}
 const RunningMean& Refinement::passCost() const { return cost_.known() ? cost_ : draftCost_; }
 
 ViewStep Refinement::next() const {
@@ -89,8 +95,10 @@ ViewStep Refinement::next() const {
     if (!previewed_) {
         const RunningMean& cost = previewCost();
         step.kind = StepKind::Preview;
-        step.divisor = cost.known() ? previewDivisor(cost.value(), width_, height_, divisor_, s_.maxDivisor, budgetMs())
-                                    : std::max(1, s_.maxDivisor);  // nothing learnt yet: the cheapest
+        step.divisor =
+            cost.known()
+                ? previewDivisor(cost.value(), width_, height_, divisor_, s_.maxDivisor, budgetMs())
+                : std::max(1, s_.maxDivisor);  // nothing learnt yet: the cheapest
         step.width = (width_ + step.divisor - 1) / step.divisor;
         step.height = (height_ + step.divisor - 1) / step.divisor;
         step.startsFrame = true;
@@ -125,7 +133,8 @@ void Refinement::otherWork(double ms) {
 
 void Refinement::finished(const ViewStep& step, double ms) {
     const bool draft = step.kind == StepKind::Preview && draftPreview_;
-    if (step.pixels() > 0 && ms >= 0.0) (draft ? draftCost_ : cost_).add(ms / double(step.pixels()));
+    if (step.pixels() > 0 && ms >= 0.0)
+        (draft ? draftCost_ : cost_).add(ms / double(step.pixels()));
     if (step.kind == StepKind::Preview) {
         previewed_ = true;
         divisor_ = step.divisor;
@@ -146,11 +155,12 @@ std::string Refinement::describe() const {
     auto size = [](int w, int h) { return std::to_string(w) + "x" + std::to_string(h); };
     if (previewing()) {  // before the preview is drawn, the one on its way
         int d = previewed_ ? divisor_ : next().divisor;
-        return size((width_ + d - 1) / d, (height_ + d - 1) / d) + " (1/" + std::to_string(d) + ")" +
-               (draftPreview_ ? " draft" : "") + " preview";
+        return size((width_ + d - 1) / d, (height_ + d - 1) / d) + " (1/" + std::to_string(d) +
+               ")" + (draftPreview_ ? " draft" : "") + " preview";
     }
     if (done()) return size(width_, height_) + " done";
-    return size(width_, height_) + " refining " + std::to_string(pass()) + "/" + std::to_string(samples_);
+    return size(width_, height_) + " refining " + std::to_string(pass()) + "/" +
+           std::to_string(samples_);
 }
 
 }  // namespace mb

@@ -12,18 +12,24 @@ const char* itemKindName(ItemKind k) {
 
 int itemCount(const Scene& s, ItemKind k) {
     switch (k) {
-        case ItemKind::Object: return int(s.objects.size());
-        case ItemKind::Material: return int(s.materials.size());
-        case ItemKind::Light: return int(s.lights.size());
+        case ItemKind::Object:
+            return int(s.objects.size());
+        case ItemKind::Material:
+            return int(s.materials.size());
+        case ItemKind::Light:
+            return int(s.lights.size());
     }
     return 0;
 }
 
 int itemLimit(ItemKind k) {
     switch (k) {
-        case ItemKind::Object: return kMaxObjects;
-        case ItemKind::Material: return kMaxMaterials;
-        case ItemKind::Light: return kMaxLights;
+        case ItemKind::Object:
+            return kMaxObjects;
+        case ItemKind::Material:
+            return kMaxMaterials;
+        case ItemKind::Light:
+            return kMaxLights;
     }
     return 0;
 }
@@ -71,9 +77,15 @@ int addItem(Scene& s, ItemKind k, std::string* why) {
     if (!hasRoom(s, k, 1, why)) return -1;
     if (needMaterial) s.materials.push_back(numberedMaterial(s));
     switch (k) {
-        case ItemKind::Object: s.objects.push_back(defaultObject()); break;
-        case ItemKind::Material: s.materials.push_back(numberedMaterial(s)); break;
-        case ItemKind::Light: s.lights.push_back(defaultLight()); break;
+        case ItemKind::Object:
+            s.objects.push_back(defaultObject());
+            break;
+        case ItemKind::Material:
+            s.materials.push_back(numberedMaterial(s));
+            break;
+        case ItemKind::Light:
+            s.lights.push_back(defaultLight());
+            break;
     }
     return itemCount(s, k) - 1;
 }
@@ -123,17 +135,26 @@ static bool deleteMaterial(Scene& s, int index, std::string* why) {
 bool deleteItem(Scene& s, ItemKind k, int index, std::string* why) {
     if (!inRange(s, k, index, why)) return false;
     switch (k) {
-        case ItemKind::Object: s.objects.erase(s.objects.begin() + index); return true;
-        case ItemKind::Material: return deleteMaterial(s, index, why);
-        case ItemKind::Light: s.lights.erase(s.lights.begin() + index); return true;
+        case ItemKind::Object:
+            s.objects.erase(s.objects.begin() + index);
+            return true;
+        case ItemKind::Material:
+            return deleteMaterial(s, index, why);
+        case ItemKind::Light:
+            s.lights.erase(s.lights.begin() + index);
+            return true;
     }
     return false;
 }
 
 void clearItems(Scene& s, ItemKind k) {
     switch (k) {
-        case ItemKind::Object: s.objects.clear(); break;
-        case ItemKind::Light: s.lights.clear(); break;
+        case ItemKind::Object:
+            s.objects.clear();
+            break;
+        case ItemKind::Light:
+            s.lights.clear();
+            break;
         case ItemKind::Material:
             s.materials.clear();
             if (s.objects.empty()) break;

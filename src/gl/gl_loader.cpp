@@ -42,8 +42,9 @@ static bool loadGl11() {
            loadFn(gl11.PixelStorei, "glPixelStorei") && loadFn(gl11.GetIntegerv, "glGetIntegerv") &&
            loadFn(gl11.GetString, "glGetString") && loadFn(gl11.GetError, "glGetError") &&
            loadFn(gl11.Finish, "glFinish") && loadFn(gl11.GenTextures, "glGenTextures") &&
-           loadFn(gl11.DeleteTextures, "glDeleteTextures") && loadFn(gl11.BindTexture, "glBindTexture") &&
-           loadFn(gl11.TexImage2D, "glTexImage2D") && loadFn(gl11.TexParameteri, "glTexParameteri") &&
+           loadFn(gl11.DeleteTextures, "glDeleteTextures") &&
+           loadFn(gl11.BindTexture, "glBindTexture") && loadFn(gl11.TexImage2D, "glTexImage2D") &&
+           loadFn(gl11.TexParameteri, "glTexParameteri") &&
            loadFn(gl11.DrawArrays, "glDrawArrays") && loadFn(gl11.BlendFunc, "glBlendFunc");
 }
 

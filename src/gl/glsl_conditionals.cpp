@@ -29,7 +29,9 @@ private:
         size_t n = std::char_traits<char>::length(op);
         if (s_.compare(pos_, n, op) != 0) return false;
         // "<" must not swallow "<=", nor "!" the start of "!=".
-        if (n == 1 && pos_ + 1 < s_.size() && s_[pos_ + 1] == '=' && (*op == '<' || *op == '>' || *op == '!')) return false;
+        if (n == 1 && pos_ + 1 < s_.size() && s_[pos_ + 1] == '=' &&
+            (*op == '<' || *op == '>' || *op == '!'))
+            return false;
         pos_ += n;
         return true;
     }
@@ -67,8 +69,10 @@ private:
         long v = unary();
         for (;;) {
             if (take("*")) v *= unary();
-            else if (take("/")) { long d = unary(); v = d ? v / d : (ok_ = false, 0); }
-            else return v;
+            else if (take("/")) {
+                long d = unary();
+                v = d ? v / d : (ok_ = false, 0);
+            } else return v;
         }
     }
     long unary() {
@@ -84,7 +88,9 @@ private:
     long atom() {
         skipSpace();
         size_t start = pos_;
-        while (pos_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[pos_])) || s_[pos_] == '_')) ++pos_;
+        while (pos_ < s_.size() &&
+               (std::isalnum(static_cast<unsigned char>(s_[pos_])) || s_[pos_] == '_'))
+            ++pos_;
         std::string tok = s_.substr(start, pos_ - start);
         if (tok.empty()) return ok_ = false, 0;
         if (std::isdigit(static_cast<unsigned char>(tok[0]))) return std::stol(tok);
@@ -109,7 +115,8 @@ std::string directive(const std::string& line, std::string* rest) {
     size_t p = line.find_first_not_of(" \t");
     if (p == std::string::npos || line[p] != '#') return "";
     size_t end = line.find_first_of(" \t", p);
-    std::string word = line.substr(p + 1, end == std::string::npos ? std::string::npos : end - p - 1);
+    std::string word =
+        line.substr(p + 1, end == std::string::npos ? std::string::npos : end - p - 1);
     *rest = end == std::string::npos ? "" : line.substr(end);
     size_t comment = rest->find("//");
     if (comment != std::string::npos) rest->erase(comment);

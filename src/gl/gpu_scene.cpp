@@ -11,8 +11,10 @@ namespace mb {
 static GpuObject packObject(const Object& o) {
     SdfObject s = makeSdfObject(o);
     GpuObject g{};
-    g.posBound[0] = s.pos.x, g.posBound[1] = s.pos.y, g.posBound[2] = s.pos.z, g.posBound[3] = s.bound;
-    g.sizeMinor[0] = s.size.x, g.sizeMinor[1] = s.size.y, g.sizeMinor[2] = s.size.z, g.sizeMinor[3] = s.minor;
+    g.posBound[0] = s.pos.x, g.posBound[1] = s.pos.y, g.posBound[2] = s.pos.z,
+    g.posBound[3] = s.bound;
+    g.sizeMinor[0] = s.size.x, g.sizeMinor[1] = s.size.y, g.sizeMinor[2] = s.size.z,
+    g.sizeMinor[3] = s.minor;
     g.shape[0] = s.radius, g.shape[1] = s.height, g.shape[2] = s.blend;
     g.info[0] = int32_t(s.type), g.info[1] = int32_t(s.op), g.info[2] = s.material;
     for (int c = 0; c < 3; ++c)

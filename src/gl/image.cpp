@@ -12,8 +12,8 @@
 #include <stb_image_write.h>
 
 // libstb exports it, but stb_image_write.h declares it only in its implementation section.
-extern "C" unsigned char* stbi_write_png_to_mem(const unsigned char* pixels, int strideBytes, int x, int y,
-                                                int n, int* outLength);
+extern "C" unsigned char* stbi_write_png_to_mem(const unsigned char* pixels, int strideBytes, int x,
+                                                int y, int n, int* outLength);
 
 namespace mb {
 
@@ -33,14 +33,18 @@ static bool writeResult(const std::string& path, const std::string& why, std::st
 // Encoded in memory, then written like a scene: a full disk never leaves half a PNG.
 bool savePng(const std::string& path, const Image& img, std::string* error) {
     int size = 0;
-    unsigned char* png = stbi_write_png_to_mem(img.rgba.data(), img.width * 4, img.width, img.height, 4, &size);
-    std::string why = png ? replaceFile(path, std::string_view(reinterpret_cast<char*>(png), size_t(size)))
-                          : "cannot encode PNG";
+    unsigned char* png =
+        stbi_write_png_to_mem(img.rgba.data(), img.width * 4, img.width, img.height, 4, &size);
+    std::string why =
+        png ? replaceFile(path, std::string_view(reinterpret_cast<char*>(png), size_t(size)))
+            : "cannot encode PNG";
     std::free(png);  // stb allocates with malloc
     return writeResult(path, why, error);
 }
 
-bool checkSavePng(const std::string& path, std::string* error) { return writeResult(path, checkReplaceFile(path), error); }
+bool checkSavePng(const std::string& path, std::string* error) {
+    return writeResult(path, checkReplaceFile(path), error);
+}
 
 bool loadPng(const std::string& path, Image* out, std::string* error) {
     int w = 0, h = 0, n = 0;

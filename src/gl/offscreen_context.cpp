@@ -61,7 +61,8 @@ void* offscreenProcAddress(const char* name) {
     // GLEW asks for GLX entry points too; EGL would hand back a stub for any name, so those
     // go to the real GLX, which reports no display and leaves GLEW's GL part loaded.
     if (std::strncmp(name, "glX", 3) == 0) return nullptr;
-    if (g_osmesa.lib && g_osmesa.getCurrentContext()) return reinterpret_cast<void*>(g_osmesa.getProcAddress(name));
+    if (g_osmesa.lib && g_osmesa.getCurrentContext())
+        return reinterpret_cast<void*>(g_osmesa.getProcAddress(name));
     return egl::procAddress(name);
 }
 
@@ -74,7 +75,9 @@ bool parseBackend(const std::string& s, OffscreenBackend* out) {
 OffscreenContext::~OffscreenContext() { destroy(); }
 
 OffscreenContext::OffscreenContext(OffscreenContext&& o) noexcept
-    : context_(std::exchange(o.context_, nullptr)), backend_(o.backend_), platform_(std::move(o.platform_)),
+    : context_(std::exchange(o.context_, nullptr)),
+      backend_(o.backend_),
+      platform_(std::move(o.platform_)),
       buffer_(std::move(o.buffer_)) {}
 
 OffscreenContext& OffscreenContext::operator=(OffscreenContext&& o) noexcept {
@@ -106,9 +109,17 @@ bool OffscreenContext::create(int width, int height, std::string* error, Offscre
     }
     platform_ = "OSMesa";
     if (!openOsMesa(error)) return false;
-    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0,
-                           OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                           OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    const int attribs[] = {OSMESA_FORMAT,
+                           OSMESA_RGBA,
+                           OSMESA_DEPTH_BITS,
+                           0,
+                           OSMESA_PROFILE,
+                           OSMESA_CORE_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION,
+                           3,
+                           OSMESA_CONTEXT_MINOR_VERSION,
+                           3,
+                           0};
     OSMesaContext ctx = g_osmesa.createContextAttribs(attribs, nullptr);
     if (!ctx) {
         *error = "cannot create an OSMesa OpenGL 3.3 core context";

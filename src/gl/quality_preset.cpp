@@ -19,10 +19,11 @@ namespace {
 // on reflections), fewer pixels stretched (22-27 dB), 32 shadow steps (no faster: shadow rays
 // leave their loop early already).
 constexpr QualityPresetSettings kPresets[kQualityPresetCount] = {
-    //  name      maxSteps minSteps minEps  maxEps  maxRefl minAa maxAa shadowSteps cone   cutoff checker
-    {"draft",     128,     0,       0.0f,   0.0f,   -1,     0,    2,    64,         true,  0.5f,  true},
-    {"normal",    0,       0,       0.0f,   0.0f,   -1,     0,    0,    0,          false, 0.0f,  false},
-    {"final",     0,       1024,    0.0f,   1e-4f,  -1,     3,    0,    256,        false, 0.0f,  false},
+    //  name      maxSteps minSteps minEps  maxEps  maxRefl minAa maxAa shadowSteps cone   cutoff
+    //  checker
+    {"draft", 128, 0, 0.0f, 0.0f, -1, 0, 2, 64, true, 0.5f, true},
+    {"normal", 0, 0, 0.0f, 0.0f, -1, 0, 0, 0, false, 0.0f, false},
+    {"final", 0, 1024, 0.0f, 1e-4f, -1, 3, 0, 256, false, 0.0f, false},
 };
 
 }  // namespace

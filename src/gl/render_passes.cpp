@@ -11,7 +11,10 @@ enum : GLuint { kAccumUnit = 2 };  // units 0 and 1 hold the object grid
 
 const Program* Renderer::postProgram(PostMode mode, std::string* error) {
     std::unique_ptr<Program>& slot = postPrograms_[int(mode)];
-    if (!slot) slot = screenProgram("post.frag", "#version 330 core\n#define POST_MODE " + std::to_string(int(mode)) + "\n", error);
+    if (!slot)
+        slot = screenProgram(
+            "post.frag", "#version 330 core\n#define POST_MODE " + std::to_string(int(mode)) + "\n",
+            error);
     return slot.get();
 }
 
@@ -22,7 +25,8 @@ bool Renderer::beginFrame(int width, int height, bool accumulate, std::string* e
     frameCheckerboard_ = checkerboard_;
     frameSamples_ = samples_;
     framePost_ = post_;
-    accumulating_ = accumulate || frameSamples_ > 1 || framePost_ != PostMode::None || frameCheckerboard_;
+    accumulating_ =
+        accumulate || frameSamples_ > 1 || framePost_ != PostMode::None || frameCheckerboard_;
     if (!accumulating_) return true;
     // One sample a pixel, drawn whole (draw()), is written over the target, not added: no clear,
     // no blend, and 8 bits hold the checkerboard's half, which the fill fetches for 40% less
@@ -30,9 +34,12 @@ bool Renderer::beginFrame(int width, int height, bool accumulate, std::string* e
     blending_ = accumulate || frameSamples_ > 1;
     const int marchWidth = frameCheckerboard_ ? CheckerboardFill::packedWidth(width) : width;
     const GLenum packedFormat = blending_ ? GL_RGBA16F : GL_RGBA8;
-    if (!accum_.resize(width, height) || (frameCheckerboard_ && !packed_.resize(marchWidth, height, packedFormat)) ||
+    if (!accum_.resize(width, height) ||
+        (frameCheckerboard_ && !packed_.resize(marchWidth, height, packedFormat)) ||
         !postProgram(framePost_, error) || (frameCheckerboard_ && !fill_.prepare(error))) {
-        if (error->empty()) *error = "cannot create a " + std::to_string(width) + "x" + std::to_string(height) + " float target";
+        if (error->empty())
+            *error = "cannot create a " + std::to_string(width) + "x" + std::to_string(height) +
+                     " float target";
         accumulating_ = false;
         return false;
     }
@@ -92,7 +99,9 @@ void Renderer::endFrame(const ColorTarget* into) {
 
 void Renderer::resolve(const ColorTarget* into) {
     std::string error;
-    auto bindInto = [&] { into ? into->bind() : glBindFramebuffer(GL_FRAMEBUFFER, GLuint(frameTarget_)); };
+    auto bindInto = [&] {
+        into ? into->bind() : glBindFramebuffer(GL_FRAMEBUFFER, GLuint(frameTarget_));
+    };
     glViewport(0, 0, frameWidth_, frameHeight_);
     if (frameCheckerboard_) {  // without a post pass the filled-in picture is the result
         framePost_ == PostMode::None ? bindInto() : accum_.bind();
@@ -159,8 +168,12 @@ Image readFramebuffer(int width, int height) {
 
 // Tiles start at even x: a checkerboard's packed column holds two pixels (Renderer::drawRegion).
 TiledRender::TiledRender(Renderer& renderer, int width, int height, int tileSize)
-    : renderer_(renderer), width_(width), height_(height), tile_(std::max(16, tileSize) & ~1),
-      tilesX_((width + tile_ - 1) / tile_), tilesY_((height + tile_ - 1) / tile_) {}
+    : renderer_(renderer),
+      width_(width),
+      height_(height),
+      tile_(std::max(16, tileSize) & ~1),
+      tilesX_((width + tile_ - 1) / tile_),
+      tilesY_((height + tile_ - 1) / tile_) {}
 
 // Tiles may interleave with other drawing (the editor's window): each call leaves the
 // framebuffer that was bound as it found it.
@@ -176,7 +189,8 @@ private:
 bool TiledRender::start(std::string* error) {
     FramebufferGuard guard;
     if (!result_.resize(width_, height_, GL_RGBA8)) {
-        *error = "cannot create a " + std::to_string(width_) + "x" + std::to_string(height_) + " image target";
+        *error = "cannot create a " + std::to_string(width_) + "x" + std::to_string(height_) +
+                 " image target";
         return false;
     }
     return renderer_.beginFrame(width_, height_, true, error);
@@ -201,7 +215,8 @@ Image TiledRender::finish() {
 bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width, int height,
                      Image* out, std::string* error, const OffscreenRun& run) {
     OffscreenContext context;
-    if (!context.create(1, 1, error, run.backend)) return false;  // pixels go to the renderer's targets
+    if (!context.create(1, 1, error, run.backend))
+        return false;  // pixels go to the renderer's targets
     Renderer renderer;
     if (!renderer.init(error) || !renderer.setScene(scene, options, error)) return false;
     TiledRender tiles(renderer, width, height);

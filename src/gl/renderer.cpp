@@ -51,7 +51,9 @@ Program* Renderer::finishBuild(Build* b, std::string* error) {
     p.bindBlock("Objects", kObjectsBinding);
     p.bindBlock("Materials", kMaterialsBinding);
     p.bindBlock("Lights", kLightsBinding);
-    GLuint store = glGetProgramResourceIndex ? glGetProgramResourceIndex(p.id(), GL_SHADER_STORAGE_BLOCK, "ObjectStore") : GL_INVALID_INDEX;
+    GLuint store = glGetProgramResourceIndex
+                       ? glGetProgramResourceIndex(p.id(), GL_SHADER_STORAGE_BLOCK, "ObjectStore")
+                       : GL_INVALID_INDEX;
     if (store != GL_INVALID_INDEX) glShaderStorageBlockBinding(p.id(), store, kObjectsBinding);
     cache_.push_back({b->features, std::move(b->program)});
     return cache_.back().program.get();
@@ -65,7 +67,8 @@ Program* Renderer::programFor(const ShaderFeatures& f, std::string* error) {
 
 // Uniform arrays are sized to their capacity in the shader, so the upload is padded to it.
 template <typename T>
-static void uploadPadded(UniformBuffer& ub, const std::vector<T>& items, int capacity, GLuint point) {
+static void uploadPadded(UniformBuffer& ub, const std::vector<T>& items, int capacity,
+                         GLuint point) {
     std::vector<T> padded(size_t(std::max(1, capacity)), T{});
     std::copy_n(items.begin(), std::min(items.size(), padded.size()), padded.begin());
     ub.upload(padded.data(), padded.size() * sizeof(T), GL_DYNAMIC_DRAW);
@@ -75,7 +78,8 @@ static void uploadPadded(UniformBuffer& ub, const std::vector<T>& items, int cap
 void Renderer::upload(const GpuScene& g, const ShaderFeatures& f) {
     objectsInStorage_ = f.objectsInStorage;
     if (f.objectsInStorage) {
-        objectStore_.upload(g.objects.data(), g.objects.size() * sizeof(GpuObject), GL_DYNAMIC_DRAW);
+        objectStore_.upload(g.objects.data(), g.objects.size() * sizeof(GpuObject),
+                            GL_DYNAMIC_DRAW);
         objectStore_.bindBase(kObjectsBinding);
     } else {
         uploadPadded(objects_, g.objects, f.objects, kObjectsBinding);
@@ -83,7 +87,6 @@ void Renderer::upload(const GpuScene& g, const ShaderFeatures& f) {
     uploadPadded(materials_, g.materials, f.materials, kMaterialsBinding);
     uploadPadded(lights_, g.lights, f.pointLights + f.dirLights, kLightsBinding);
 }
-
 
 static void setCamera(const Program& p, const CameraBasis& b) {
     p.set("uCamPos", b.pos);
@@ -103,7 +106,8 @@ void Renderer::uploadGrid(const SceneSdf& sdf) {
     p.set("uGridItems", int(kGridItemsUnit));
     p.set("uGridOrigin", grid.origin);
     p.set("uGridCell", grid.cellSize);
-    if (GLint loc = p.uniform("uGridDims"); loc >= 0) glUniform3i(loc, grid.dims.x, grid.dims.y, grid.dims.z);
+    if (GLint loc = p.uniform("uGridDims"); loc >= 0)
+        glUniform3i(loc, grid.dims.x, grid.dims.y, grid.dims.z);
 }
 
 // The colour of the brightest light, scaled so its largest channel is 1: it tints the sky.
@@ -258,10 +262,8 @@ const ShaderFeatures* Renderer::features() const {
 }
 
 void Renderer::rebind() const {
-    if (objectsInStorage_)
-        objectStore_.bindBase(kObjectsBinding);
-    else
-        objects_.bindBase(kObjectsBinding);
+    if (objectsInStorage_) objectStore_.bindBase(kObjectsBinding);
+    else objects_.bindBase(kObjectsBinding);
     materials_.bindBase(kMaterialsBinding);
     lights_.bindBase(kLightsBinding);
     gridCells_.bind(kGridCellsUnit);

@@ -9,11 +9,11 @@ namespace {
 
 // Each type's SDF call, once: `$o` is the object's record, `$q` the point in its frame.
 const char* const kShapeCall[kShapeTypeCount] = {
-    "sdSphere($q, $o.shape.x)",                    // radius
-    "sdBox($q, $o.sizeMinor.xyz)",                 // half-extents
-    "sdTorus($q, $o.shape.x, $o.sizeMinor.w)",     // major radius, tube radius
-    "sdCapsule($q, $o.shape.y, $o.shape.x)",       // height, radius
-    "sdCylinder($q, $o.shape.y, $o.shape.x)",      // height, radius
+    "sdSphere($q, $o.shape.x)",                 // radius
+    "sdBox($q, $o.sizeMinor.xyz)",              // half-extents
+    "sdTorus($q, $o.shape.x, $o.sizeMinor.w)",  // major radius, tube radius
+    "sdCapsule($q, $o.shape.y, $o.shape.x)",    // height, radius
+    "sdCylinder($q, $o.shape.y, $o.shape.x)",   // height, radius
 };
 
 // Each operator's join onto the chain (shaders/sdf.glsl).
@@ -81,7 +81,8 @@ std::string compileShapeSwitch(unsigned shapes) {
          "float sdObjectLocal(int i, vec3 q) {\n    int type = uObjects[i].info.x;\n";
     for (int t = 0; t < kShapeTypeCount; ++t)
         if (shapes >> t & 1u)
-            s << "    if (type == " << t << ") return " << shapeCall(ShapeType(t), "uObjects[i]", "q") << ";\n";
+            s << "    if (type == " << t << ") return "
+              << shapeCall(ShapeType(t), "uObjects[i]", "q") << ";\n";
     s << "    return 1e10;\n}\n";
     return s.str();
 }

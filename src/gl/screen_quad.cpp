@@ -23,7 +23,8 @@ void ScreenQuad::draw() {
     glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_INT, nullptr);
 }
 
-std::unique_ptr<Program> screenProgram(const std::string& fragment, const std::string& prefix, std::string* error) {
+std::unique_ptr<Program> screenProgram(const std::string& fragment, const std::string& prefix,
+                                       std::string* error) {
     Shader vs, fs;
     if (!vs.compileFile(GL_VERTEX_SHADER, shaderDir() + "/fullscreen.vert") ||
         !fs.compileFile(GL_FRAGMENT_SHADER, shaderDir() + "/" + fragment, prefix)) {

@@ -43,14 +43,16 @@ static bool expandIncludes(const std::string& path, std::set<std::string>* seen,
             lines->push_back({shown, lineNo});
             continue;
         }
-        std::string name = line.substr(directive.size(), line.find('"', directive.size()) - directive.size());
+        std::string name =
+            line.substr(directive.size(), line.find('"', directive.size()) - directive.size());
         std::string inc = shaderDir() + "/" + name;
         if (!seen->count(inc) && !expandIncludes(inc, seen, out, lines, error)) return false;
     }
     return true;
 }
 
-bool readShaderSource(const std::string& path, std::string* out, LineMap* lines, std::string* error) {
+bool readShaderSource(const std::string& path, std::string* out, LineMap* lines,
+                      std::string* error) {
     std::set<std::string> seen;
     out->clear();
     lines->clear();
@@ -71,9 +73,11 @@ Shader& Shader::operator=(Shader&& o) noexcept {
 
 static std::string infoLog(GLuint id, bool program) {
     GLint len = 0;
-    program ? glGetProgramiv(id, GL_INFO_LOG_LENGTH, &len) : glGetShaderiv(id, GL_INFO_LOG_LENGTH, &len);
+    program ? glGetProgramiv(id, GL_INFO_LOG_LENGTH, &len)
+            : glGetShaderiv(id, GL_INFO_LOG_LENGTH, &len);
     std::vector<char> buf(size_t(len > 0 ? len : 1), '\0');
-    program ? glGetProgramInfoLog(id, len, nullptr, buf.data()) : glGetShaderInfoLog(id, len, nullptr, buf.data());
+    program ? glGetProgramInfoLog(id, len, nullptr, buf.data())
+            : glGetShaderInfoLog(id, len, nullptr, buf.data());
     return buf.data();
 }
 

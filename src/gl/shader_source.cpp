@@ -18,7 +18,7 @@
 namespace mb {
 
 static const char* kModeNames[kRenderModeCount] = {"shaded", "normals", "depth", "steps",
-                                                   "ao", "shadow", "id"};
+                                                   "ao",     "shadow",  "id"};
 
 const char* renderModeName(RenderMode m) { return kModeNames[int(m)]; }
 
@@ -37,7 +37,8 @@ int objectIdAt(const Image& ids, int x, int y) {
 }
 
 static bool anyMirror(const Scene& s) {
-    return std::any_of(s.materials.begin(), s.materials.end(), [](const Material& m) { return m.Kr > 0; });
+    return std::any_of(s.materials.begin(), s.materials.end(),
+                       [](const Material& m) { return m.Kr > 0; });
 }
 
 static ShaderFeatures uberFeatures(RenderMode mode, int uniformObjects) {
@@ -67,14 +68,17 @@ static void applyQuality(ShaderFeatures* f, const RenderQuality& q) {
 int shadowKind(const Scene& s) { return s.lights.empty() ? 0 : s.render.shadows; }
 
 unsigned shadowCasters(const Scene& s, float cutoff) {
-    auto brightness = [](const Light& l) { return l.intensity * std::max({l.color.r, l.color.g, l.color.b}); };
+    auto brightness = [](const Light& l) {
+        return l.intensity * std::max({l.color.r, l.color.g, l.color.b});
+    };
     float brightest = 0.0f;
     for (const Light& l : s.lights) brightest = std::max(brightest, brightness(l));
     unsigned mask = 0;
     int bit = 0;
     for (bool directional : {false, true})  // packScene's order
         for (const Light& l : s.lights)
-            if (l.directional == directional) mask |= unsigned(brightness(l) >= cutoff * brightest) << bit++;
+            if (l.directional == directional)
+                mask |= unsigned(brightness(l) >= cutoff * brightest) << bit++;
     return mask;
 }
 
@@ -131,9 +135,10 @@ static std::string counted(int n, const char* what) {
 // How the objects are visited, then one line per group of features.
 std::vector<std::string> describeFeatures(const ShaderFeatures& f) {
     if (f.uber) return {"uber: every feature, switched by uniforms"};
-    std::vector<std::string> lines = {f.compiled ? "compiled: " + counted(f.objects, "object") + ", a line each"
-                                      : f.grid   ? "object grid: " + counted(f.objects, "object")
-                                                 : "object loop: " + counted(f.objects, "object")};
+    std::vector<std::string> lines = {f.compiled ? "compiled: " + counted(f.objects, "object") +
+                                                       ", a line each"
+                                      : f.grid ? "object grid: " + counted(f.objects, "object")
+                                               : "object loop: " + counted(f.objects, "object")};
     std::vector<std::string> shapes, ops = {"union"}, extras;
     for (int t = 0; t < kShapeTypeCount; ++t)
         if (f.shapes >> t & 1u) shapes.push_back(shapeTypeName(ShapeType(t)));
@@ -141,7 +146,8 @@ std::vector<std::string> describeFeatures(const ShaderFeatures& f) {
     if (f.intersect) ops.push_back("intersect");
     if (f.blend) ops.push_back("blended");
     if (!shapes.empty()) lines.insert(lines.end(), {joined(shapes), joined(ops)});
-    lines.push_back(counted(f.pointLights, "point light") + ", " + counted(f.dirLights, "directional light"));
+    lines.push_back(counted(f.pointLights, "point light") + ", " +
+                    counted(f.dirLights, "directional light"));
     static const char* const kShadows[] = {"no shadows", "hard shadows", "soft shadows"};
     lines.push_back(kShadows[f.shadows]);
     if (f.reflections > 0) lines.push_back(counted(f.reflections, "reflection"));
@@ -169,23 +175,36 @@ static std::vector<std::pair<std::string, long>> featureDefines(const ShaderFeat
     static const char* shapeDefs[kShapeTypeCount] = {"HAS_SPHERE", "HAS_BOX", "HAS_TORUS",
                                                      "HAS_CAPSULE", "HAS_CYLINDER"};
     for (int i = 0; i < kShapeTypeCount; ++i) d.push_back({shapeDefs[i], (f.shapes >> i) & 1});
-    d.insert(d.end(), {{"HAS_SUBTRACT", f.subtract}, {"HAS_INTERSECT", f.intersect},
-                       {"HAS_BLEND", f.blend}, {"NUM_OBJECTS", f.objects},
-                       {"NUM_MATERIALS", f.materials}, {"NUM_POINT_LIGHTS", f.pointLights},
-                       {"NUM_DIR_LIGHTS", f.dirLights}, {"OBJECTS_IN_STORAGE", f.objectsInStorage},
-                       {"HAS_GROUND", f.ground}, {"MAX_STEPS", f.steps}, {"SHADOWS", f.shadows},
-                       {"REFLECTIONS", f.reflections}, {"HAS_FOG", f.fog}, {"HAS_AO", f.ao},
-                       {"USE_GRID", f.grid}, {"COMPILED", f.compiled},
-                       {"RELAX_PERCENT", f.relaxPercent}, {"CONE_EPSILON", f.coneEpsilon},
-                       {"SHADOW_STEPS", f.shadowSteps}, {"SHADOW_CASTERS", long(f.shadowCasters)},
-                       {"CHECKERBOARD", f.checkerboard}, {"OUTLINE", f.outline}});
+    d.insert(d.end(), {{"HAS_SUBTRACT", f.subtract},
+                       {"HAS_INTERSECT", f.intersect},
+                       {"HAS_BLEND", f.blend},
+                       {"NUM_OBJECTS", f.objects},
+                       {"NUM_MATERIALS", f.materials},
+                       {"NUM_POINT_LIGHTS", f.pointLights},
+                       {"NUM_DIR_LIGHTS", f.dirLights},
+                       {"OBJECTS_IN_STORAGE", f.objectsInStorage},
+                       {"HAS_GROUND", f.ground},
+                       {"MAX_STEPS", f.steps},
+                       {"SHADOWS", f.shadows},
+                       {"REFLECTIONS", f.reflections},
+                       {"HAS_FOG", f.fog},
+                       {"HAS_AO", f.ao},
+                       {"USE_GRID", f.grid},
+                       {"COMPILED", f.compiled},
+                       {"RELAX_PERCENT", f.relaxPercent},
+                       {"CONE_EPSILON", f.coneEpsilon},
+                       {"SHADOW_STEPS", f.shadowSteps},
+                       {"SHADOW_CASTERS", long(f.shadowCasters)},
+                       {"CHECKERBOARD", f.checkerboard},
+                       {"OUTLINE", f.outline}});
     return d;
 }
 
 std::string shaderPrefix(const ShaderFeatures& f) {
     std::ostringstream o;
     o << (f.objectsInStorage ? "#version 430 core\n" : "#version 330 core\n");
-    for (const auto& [name, value] : featureDefines(f)) o << "#define " << name << ' ' << value << '\n';
+    for (const auto& [name, value] : featureDefines(f))
+        o << "#define " << name << ' ' << value << '\n';
     // A march's object id is a float: an object's index or one of these, sdf.h's own values.
     o << "const float HIT_GROUND = " << kHitGround << ".0;\n"
       << "const float HIT_NONE = " << kHitNone << ".0;\n";
@@ -205,7 +224,8 @@ bool fragmentSource(const ShaderFeatures& f, std::string* out, std::string* erro
         *error = "march.frag: no '#pragma marchbox scene' line for the compiled scene";
         return false;
     }
-    std::string scene = (f.compiled ? compileSceneMap(f.layout) + "\n" : "") + compileShapeSwitch(f.shapes);
+    std::string scene =
+        (f.compiled ? compileSceneMap(f.layout) + "\n" : "") + compileShapeSwitch(f.shapes);
     resolved.replace(at, marker.size(), scene);
     auto markerLine = map.begin() + std::count(resolved.begin(), resolved.begin() + long(at), '\n');
     LineMap sceneLines = linesOf("<scene code>", scene);

@@ -23,7 +23,8 @@ Frame frameOf(const BoxPose& b) {
 
 // Half the box's extent along unit l.
 double radiusAlong(const Frame& f, const dvec3& l) {
-    return f.half.x * std::abs(glm::dot(f.axis[0], l)) + f.half.y * std::abs(glm::dot(f.axis[1], l)) +
+    return f.half.x * std::abs(glm::dot(f.axis[0], l)) +
+           f.half.y * std::abs(glm::dot(f.axis[1], l)) +
            f.half.z * std::abs(glm::dot(f.axis[2], l));
 }
 
@@ -49,7 +50,8 @@ std::vector<dvec3> incidentFace(const Frame& f, const dvec3& n) {
         if (std::abs(glm::dot(f.axis[i], n)) > std::abs(glm::dot(f.axis[k], n))) k = i;
     const double sign = glm::dot(f.axis[k], n) > 0.0 ? -1.0 : 1.0;
     const dvec3 centre = f.centre + sign * f.half[k] * f.axis[k];
-    const dvec3 u = f.half[(k + 1) % 3] * f.axis[(k + 1) % 3], v = f.half[(k + 2) % 3] * f.axis[(k + 2) % 3];
+    const dvec3 u = f.half[(k + 1) % 3] * f.axis[(k + 1) % 3],
+                v = f.half[(k + 2) % 3] * f.axis[(k + 2) % 3];
     return {centre + u + v, centre - u + v, centre - u - v, centre + u - v};
 }
 
@@ -66,8 +68,8 @@ std::vector<dvec3> clip(const std::vector<dvec3>& polygon, const dvec3& n, doubl
 }
 
 // Reference face of `ref` (axis k) facing n; the other box's incident face clipped to its sides.
-std::vector<BoxContact> clipFaces(const Frame& ref, int k, const dvec3& n, const Frame& inc, double reach,
-                                  bool flip, int base) {
+std::vector<BoxContact> clipFaces(const Frame& ref, int k, const dvec3& n, const Frame& inc,
+                                  double reach, bool flip, int base) {
     std::vector<dvec3> polygon = incidentFace(inc, n);
     for (int side = 1; side <= 2; ++side) {
         const dvec3& s = ref.axis[(k + side) % 3];
@@ -80,7 +82,8 @@ std::vector<BoxContact> clipFaces(const Frame& ref, int k, const dvec3& n, const
     for (size_t i = 0; i < polygon.size(); ++i) {
         const double separation = glm::dot(polygon[i], n) - face;
         if (separation >= reach) continue;
-        out.push_back({polygon[i] - 0.5 * separation * n, flip ? -n : n, separation, base + int(i)});
+        out.push_back(
+            {polygon[i] - 0.5 * separation * n, flip ? -n : n, separation, base + int(i)});
     }
     return out;
 }
@@ -94,7 +97,8 @@ dvec3 supportEdge(const Frame& f, int i, const dvec3& n) {
 }
 
 // Closest points of the lines p + s·u and q + t·v (not parallel), each clamped to its edge.
-BoxContact edgeContact(const Frame& a, int i, const Frame& b, int j, const dvec3& n, double separation) {
+BoxContact edgeContact(const Frame& a, int i, const Frame& b, int j, const dvec3& n,
+                       double separation) {
     const dvec3 p = supportEdge(a, i, n), q = supportEdge(b, j, -n), u = a.axis[i], v = b.axis[j];
     const dvec3 w = p - q;
     const double uv = glm::dot(u, v), denom = 1.0 - uv * uv;
@@ -113,12 +117,15 @@ std::vector<BoxContact> collideBoxes(const BoxPose& pa, const BoxPose& pb, doubl
     for (int i = 0; i < 3; ++i) consider(face, a, b, a.axis[i], i);
     for (int i = 0; i < 3; ++i) consider(face, a, b, b.axis[i], 3 + i);
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) consider(edge, a, b, glm::cross(a.axis[i], b.axis[j]), 6 + 3 * i + j);
+        for (int j = 0; j < 3; ++j)
+            consider(edge, a, b, glm::cross(a.axis[i], b.axis[j]), 6 + 3 * i + j);
     const double size = glm::length(a.half) + glm::length(b.half);
     const bool useEdge = edge.separation > face.separation + 1e-3 * size;
     const Axis& best = useEdge ? edge : face;
     if (best.separation >= reach) return {};
-    if (useEdge) return {edgeContact(a, (best.kind - 6) / 3, b, (best.kind - 6) % 3, best.normal, best.separation)};
+    if (useEdge)
+        return {edgeContact(a, (best.kind - 6) / 3, b, (best.kind - 6) % 3, best.normal,
+                            best.separation)};
     if (best.kind < 3) return clipFaces(a, best.kind, best.normal, b, reach, false, 10 * best.kind);
     return clipFaces(b, best.kind - 3, -best.normal, a, reach, true, 10 * best.kind);
 }

@@ -1,5 +1,6 @@
 // branchless.h — choices made by arithmetic, for conditions that vary contact by contact
-// or body by body: a branch on them is anyone's guess, and a wrong guess costs more than both sides.
+// or body by body: a branch on them is anyone's guess, and a wrong guess costs more than both
+// sides.
 #pragma once
 
 #include <bit>
@@ -13,7 +14,8 @@ template <class T>
 [[gnu::always_inline]] inline T pick(bool first, T a, T b) {
     static_assert(sizeof(T) == sizeof(std::uint64_t));
     const auto mask = -std::uint64_t(first);
-    return std::bit_cast<T>((std::bit_cast<std::uint64_t>(a) & mask) | (std::bit_cast<std::uint64_t>(b) & ~mask));
+    return std::bit_cast<T>((std::bit_cast<std::uint64_t>(a) & mask) |
+                            (std::bit_cast<std::uint64_t>(b) & ~mask));
 }
 
 }  // namespace mb

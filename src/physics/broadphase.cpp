@@ -51,7 +51,8 @@ constexpr double kSkin = 0.5;
 constexpr double kRefreshAt = 1.0 - 0.5 * kSkin / (1.0 + kSkin);
 constexpr double kRebuild = 0.25;
 
-void Broadphase::findPairs(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents,
+void Broadphase::findPairs(const std::vector<glm::dvec3>& centres,
+                           const std::vector<double>& extents,
                            std::vector<std::pair<int, int>>& pairs) {
     pairs.clear();
     if (centres.empty()) return;
@@ -63,7 +64,10 @@ void Broadphase::findPairs(const std::vector<glm::dvec3>& centres, const std::ve
     size_t kept = 0;
     for (auto [i, j] : list_) {
         pairs[kept] = {i, j};
-        kept += overlaps(centres[size_t(i)], extents[size_t(i)], centres[size_t(j)], extents[size_t(j)]) ? 1 : 0;
+        kept +=
+            overlaps(centres[size_t(i)], extents[size_t(i)], centres[size_t(j)], extents[size_t(j)])
+                ? 1
+                : 0;
     }
     pairs.resize(kept);
 }
@@ -75,7 +79,8 @@ void Broadphase::findPairs(const std::vector<glm::dvec3>& centres, const std::ve
 // mean move up to its last refresh, so one o serves all. So the list holds every overlapping
 // pair while each sphere's extent plus its move beside the mean stays within its grown extent;
 // the factor keeps that true through the rounding of the distance tests.
-bool Broadphase::listStillCovers(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents) {
+bool Broadphase::listStillCovers(const std::vector<glm::dvec3>& centres,
+                                 const std::vector<double>& extents) {
     const size_t n = centres.size();
     if (refs_.size() != n) return false;
     glm::dvec3 shift(0.0);
@@ -96,7 +101,8 @@ bool Broadphase::listStillCovers(const std::vector<glm::dvec3>& centres, const s
     return true;
 }
 
-void Broadphase::buildList(const std::vector<glm::dvec3>& centres, const std::vector<double>& extents) {
+void Broadphase::buildList(const std::vector<glm::dvec3>& centres,
+                           const std::vector<double>& extents) {
     const int n = int(centres.size());
     refs_ = centres;
     listExtents_.resize(extents.size());
@@ -127,7 +133,8 @@ void Broadphase::refresh() {
         i = entryOf_[size_t(i)];
     }
     size_t kept = 0;
-    for (auto [i, j] : list_) {  // each written, kept where neither moved (without a branch, as findPairs)
+    for (auto [i, j] :
+         list_) {  // each written, kept where neither moved (without a branch, as findPairs)
         list_[kept] = {i, j};
         kept += size_t(!(isMoved_[size_t(i)] | isMoved_[size_t(j)]));
     }
@@ -147,10 +154,12 @@ void Broadphase::pairMoved(int entry, int (&cursor)[9], Pairs& pairs, size_t& ke
         const Sphere& b = spheres_[j];
         pairs[kept] = ordered(a.body, b.body);
         const bool mine = !(isMoved_[size_t(b.body)] && b.body < a.body);
-        kept += size_t(wanted & (j != entry) & mine) & size_t(overlaps(a.centre, a.extent, b.centre, b.extent));
+        kept += size_t(wanted & (j != entry) & mine) &
+                size_t(overlaps(a.centre, a.extent, b.centre, b.extent));
     };
     auto room = [&](size_t candidates) {
-        if (pairs.size() < kept + candidates) pairs.resize(std::max(kept + candidates, 2 * pairs.size()));
+        if (pairs.size() < kept + candidates)
+            pairs.resize(std::max(kept + candidates, 2 * pairs.size()));
     };
     if (a.large) {
         room(size_t(n));
@@ -165,7 +174,9 @@ void Broadphase::pairMoved(int entry, int (&cursor)[9], Pairs& pairs, size_t& ke
         int& from = cursor[k];
         while (from < n && cellLess(entries_[from], x, y, c.z - 1)) ++from;
         int last = from;
-        while (last < n && entries_[last].x == x && entries_[last].y == y && entries_[last].z <= c.z + 1) ++last;
+        while (last < n && entries_[last].x == x && entries_[last].y == y &&
+               entries_[last].z <= c.z + 1)
+            ++last;
         runs[k] = {from, last};
         candidates += size_t(last - from);
     }
@@ -214,9 +225,11 @@ void Broadphase::buildCells() {
         entryOf_[size_t(body)] = i;
         if (spheres_[i].large) large_.push_back(i);
     }
-    // By the low end of their reach along x, for the sweep in pairLarge (ties by entry: a total order).
+    // By the low end of their reach along x, for the sweep in pairLarge (ties by entry: a total
+    // order).
     auto low = [&](int i) { return spheres_[i].centre.x - spheres_[i].extent; };
-    std::sort(large_.begin(), large_.end(), [&](int a, int b) { return std::pair(low(a), a) < std::pair(low(b), b); });
+    std::sort(large_.begin(), large_.end(),
+              [&](int a, int b) { return std::pair(low(a), a) < std::pair(low(b), b); });
 }
 
 int Broadphase::cellEnd(int begin) const {
@@ -237,10 +250,12 @@ int Broadphase::lowerBound(int from, std::int64_t x, std::int64_t y, std::int64_
 // Branch-free, as in findPairs: every candidate is written, and kept where it overlaps. Room is
 // made one sphere at a time, so a crowded cell never asks for the square of its crowd, and in
 // doublings, so that a rebuild seldom grows the list.
-void Broadphase::pairSphere(int i, const Run* runs, int count, size_t candidates, Pairs& pairs, size_t& kept) const {
+void Broadphase::pairSphere(int i, const Run* runs, int count, size_t candidates, Pairs& pairs,
+                            size_t& kept) const {
     const Sphere& a = spheres_[i];
     if (a.large) return;
-    if (pairs.size() < kept + candidates) pairs.resize(std::max(kept + candidates, 2 * pairs.size()));
+    if (pairs.size() < kept + candidates)
+        pairs.resize(std::max(kept + candidates, 2 * pairs.size()));
     for (int r = 0; r < count; ++r)
         for (int j = r == 0 ? i + 1 : runs[r].begin; j < runs[r].end; ++j) {  // run 0: its own cell
             const Sphere& b = spheres_[j];
@@ -267,7 +282,8 @@ void Broadphase::pairCells(Pairs& pairs) const {
             int& j = cursor[k];
             while (j < n && cellLess(entries_[j], x, y, c.z + kColumns[k].dz)) ++j;
             int last = j;
-            while (last < n && entries_[last].x == x && entries_[last].y == y && entries_[last].z <= c.z + 1)
+            while (last < n && entries_[last].x == x && entries_[last].y == y &&
+                   entries_[last].z <= c.z + 1)
                 ++last;
             if (last == j) continue;
             runs[count++] = {j, last};
@@ -287,7 +303,8 @@ void Broadphase::pairLarge(Pairs& pairs) const {
         const double high = big.centre.x + big.extent;
         for (size_t b = a + 1; b < large_.size(); ++b) {
             const Sphere& other = spheres_[large_[b]];
-            if (other.centre.x - other.extent >= high) break;  // it and every later one are clear in x
+            if (other.centre.x - other.extent >= high)
+                break;  // it and every later one are clear in x
             if (overlaps(big.centre, big.extent, other.centre, other.extent))
                 addPair(pairs, entries_[large_[a]].body, entries_[large_[b]].body);
         }
@@ -319,7 +336,8 @@ void Broadphase::pairBlock(int entry, Pairs& pairs) const {
     for (auto x = std::int64_t(lo.x); x <= std::int64_t(hi.x); ++x)
         for (auto y = std::int64_t(lo.y); y <= std::int64_t(hi.y); ++y) {
             int j = from = lowerBound(from, x, y, z0);
-            for (; j < n && entries_[j].x == x && entries_[j].y == y && entries_[j].z <= z1; ++j) test(j);
+            for (; j < n && entries_[j].x == x && entries_[j].y == y && entries_[j].z <= z1; ++j)
+                test(j);
         }
 }
 

@@ -45,7 +45,9 @@ struct Slice {
     [[gnu::always_inline]] void set(Lanes& field, const V& v) const {
         std::memcpy(reinterpret_cast<double*>(&field) + first, &v, sizeof v);
     }
-    [[gnu::always_inline]] Lanes3<V> normal() const { return {(*this)(c.nx), (*this)(c.ny), (*this)(c.nz)}; }
+    [[gnu::always_inline]] Lanes3<V> normal() const {
+        return {(*this)(c.nx), (*this)(c.ny), (*this)(c.nz)};
+    }
 };
 
 // A body's solver fields are nine doubles in a row (physics.h): vel, spin, delta. The bodies of a
@@ -54,7 +56,8 @@ struct Slice {
 // reads of the same rows come straight from these writes (a read that straddled two writes would
 // wait for both to reach the cache).
 static_assert(kLanes == 4, "gather and scatter transpose four bodies' rows");
-static_assert(offsetof(PhysicsBody, spin) == 3 * sizeof(double) && offsetof(PhysicsBody, delta) == 6 * sizeof(double),
+static_assert(offsetof(PhysicsBody, spin) == 3 * sizeof(double) &&
+                  offsetof(PhysicsBody, delta) == 6 * sizeof(double),
               "the solver's fields come first in PhysicsBody, in a row");
 
 template <class Row>
@@ -73,47 +76,60 @@ template <class Row>
 //
 // Four rows of four become four lanes of four, and back: c[k][l] = r[l][k].
 [[gnu::always_inline]] inline void transpose(const Quad (&r)[4], Quad (&c)[4]) {
-    const Quad t0 = __builtin_shufflevector(r[0], r[1], 0, 4, 2, 6), t1 = __builtin_shufflevector(r[0], r[1], 1, 5, 3, 7);
-    const Quad t2 = __builtin_shufflevector(r[2], r[3], 0, 4, 2, 6), t3 = __builtin_shufflevector(r[2], r[3], 1, 5, 3, 7);
-    c[0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5), c[1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
-    c[2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7), c[3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+    const Quad t0 = __builtin_shufflevector(r[0], r[1], 0, 4, 2, 6),
+               t1 = __builtin_shufflevector(r[0], r[1], 1, 5, 3, 7);
+    const Quad t2 = __builtin_shufflevector(r[2], r[3], 0, 4, 2, 6),
+               t3 = __builtin_shufflevector(r[2], r[3], 1, 5, 3, 7);
+    c[0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5),
+    c[1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+    c[2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7),
+    c[3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
 }
 
 // Four pairs become two lanes of four.
-[[gnu::always_inline, maybe_unused]] inline void transpose(const Pair (&p)[4], Quad& first, Quad& second) {
-    const Quad u = __builtin_shufflevector(p[0], p[2], 0, 1, 2, 3), v = __builtin_shufflevector(p[1], p[3], 0, 1, 2, 3);
-    first = __builtin_shufflevector(u, v, 0, 4, 2, 6), second = __builtin_shufflevector(u, v, 1, 5, 3, 7);
+[[gnu::always_inline, maybe_unused]] inline void transpose(const Pair (&p)[4], Quad& first,
+                                                           Quad& second) {
+    const Quad u = __builtin_shufflevector(p[0], p[2], 0, 1, 2, 3),
+               v = __builtin_shufflevector(p[1], p[3], 0, 1, 2, 3);
+    first = __builtin_shufflevector(u, v, 0, 4, 2, 6),
+    second = __builtin_shufflevector(u, v, 1, 5, 3, 7);
 }
 
 // Two pairs become two lanes of two, and back.
 [[gnu::always_inline]] inline void transpose(const Pair (&p)[2], Pair& first, Pair& second) {
-    first = __builtin_shufflevector(p[0], p[1], 0, 2), second = __builtin_shufflevector(p[0], p[1], 1, 3);
+    first = __builtin_shufflevector(p[0], p[1], 0, 2),
+    second = __builtin_shufflevector(p[0], p[1], 1, 3);
 }
 
 // Fields field and field + 1 of each body, as two lanes.
 template <class V>
-[[gnu::always_inline]] inline void gatherPairs(PhysicsBody* const* p, int field, V& first, V& second) {
+[[gnu::always_inline]] inline void gatherPairs(PhysicsBody* const* p, int field, V& first,
+                                               V& second) {
     Pair pairs[widthOf<V>];
     for (int l = 0; l < widthOf<V>; ++l) pairs[l] = rowAt<Pair>(*p[l], field);
     transpose(pairs, first, second);
 }
 
 // Fields 0-3: vel and spin.x.
-[[gnu::always_inline, maybe_unused]] inline void gatherRows(PhysicsBody* const* p, Lanes3<Quad>& vel, Quad& spinX) {
-    const Quad rows[4] = {rowAt<Quad>(*p[0], 0), rowAt<Quad>(*p[1], 0), rowAt<Quad>(*p[2], 0), rowAt<Quad>(*p[3], 0)};
+[[gnu::always_inline, maybe_unused]] inline void gatherRows(PhysicsBody* const* p,
+                                                            Lanes3<Quad>& vel, Quad& spinX) {
+    const Quad rows[4] = {rowAt<Quad>(*p[0], 0), rowAt<Quad>(*p[1], 0), rowAt<Quad>(*p[2], 0),
+                          rowAt<Quad>(*p[3], 0)};
     Quad lanes[4];
     transpose(rows, lanes);
     vel = {lanes[0], lanes[1], lanes[2]};
     spinX = lanes[3];
 }
 
-[[gnu::always_inline]] inline void gatherRows(PhysicsBody* const* p, Lanes3<Pair>& vel, Pair& spinX) {
+[[gnu::always_inline]] inline void gatherRows(PhysicsBody* const* p, Lanes3<Pair>& vel,
+                                              Pair& spinX) {
     gatherPairs(p, 0, vel.x, vel.y);
     gatherPairs(p, 2, vel.z, spinX);
 }
 
 template <class V>
-[[gnu::always_inline]] inline void gatherBodies(PhysicsBody* const* p, BodyLanes<V>& to, Lanes3<V>& delta) {
+[[gnu::always_inline]] inline void gatherBodies(PhysicsBody* const* p, BodyLanes<V>& to,
+                                                Lanes3<V>& delta) {
     gatherRows(p, to.vel, to.spin.x);
     gatherPairs(p, 4, to.spin.y, to.spin.z);
     gatherPairs(p, 6, delta.x, delta.y);
@@ -128,7 +144,8 @@ template <class V>
     return s;
 }
 
-// One side's rows, four wide: vel and spin.x in rows[l], spin.y and z in the halves of spins[l % 2].
+// One side's rows, four wide: vel and spin.x in rows[l], spin.y and z in the halves of spins[l %
+// 2].
 struct BodyRows {
     Quad rows[4];
     Quad spins[2];
@@ -155,10 +172,13 @@ struct BodyPairs {
     return r;
 }
 
-[[gnu::always_inline, maybe_unused]] inline void storeLane(PhysicsBody& body, const BodyRows& from, int l) {
+[[gnu::always_inline, maybe_unused]] inline void storeLane(PhysicsBody& body, const BodyRows& from,
+                                                           int l) {
     storeRow(body, 0, from.rows[l]);
     const Quad& spins = from.spins[l % 2];
-    storeRow(body, 4, l < 2 ? __builtin_shufflevector(spins, spins, 0, 1) : __builtin_shufflevector(spins, spins, 2, 3));
+    storeRow(body, 4,
+             l < 2 ? __builtin_shufflevector(spins, spins, 0, 1)
+                   : __builtin_shufflevector(spins, spins, 2, 3));
 }
 
 [[gnu::always_inline]] inline void storeLane(PhysicsBody& body, const BodyPairs& from, int l) {
@@ -168,7 +188,8 @@ struct BodyPairs {
 // Body a is written back only where it moves (the static body, shared by every level and both
 // threads, never is): elsewhere its lane goes to `sink`, the caller's scratch.
 template <class V>
-[[gnu::always_inline]] inline void scatter(const Slice<V>& at, const LaneRows& w, const PairLanes<V>& s, PhysicsBody& sink) {
+[[gnu::always_inline]] inline void scatter(const Slice<V>& at, const LaneRows& w,
+                                           const PairLanes<V>& s, PhysicsBody& sink) {
     const auto a = rowsOf(s.a), b = rowsOf(s.b);
     for (int l = 0; l < widthOf<V>; ++l) {
         const int lane = at.first + l;
@@ -183,7 +204,8 @@ template <class V>
 // A body held fixed has inverse mass 0 and is not moved; nor is a lane whose impulse did not
 // change (its change is 0).
 template <class V>
-[[gnu::always_inline]] inline void applyImpulse(PairLanes<V>& s, const Slice<V>& at, const LaneRows& w, const Lanes3<V>& p) {
+[[gnu::always_inline]] inline void applyImpulse(PairLanes<V>& s, const Slice<V>& at,
+                                                const LaneRows& w, const Lanes3<V>& p) {
     const Lanes3<V> np = cross(at.normal(), p);
     s.a.vel = s.a.vel - at(w.massA) * p;
     s.a.spin = s.a.spin - (at(w.inertiaA) * at(at.c.armA)) * np;
@@ -193,13 +215,15 @@ template <class V>
 
 // Along the normal there is no torque (the cross products would only add rounding noise).
 template <class V>
-[[gnu::always_inline]] inline void applyNormal(PairLanes<V>& s, const Slice<V>& at, const LaneRows& w, const Lanes3<V>& p) {
+[[gnu::always_inline]] inline void applyNormal(PairLanes<V>& s, const Slice<V>& at,
+                                               const LaneRows& w, const Lanes3<V>& p) {
     s.a.vel = s.a.vel - at(w.massA) * p;
     s.b.vel = s.b.vel + at(w.massB) * p;
 }
 
 template <class V>
-[[gnu::always_inline]] inline void applyAngular(PairLanes<V>& s, const Slice<V>& at, const LaneRows& w, const Lanes3<V>& l) {
+[[gnu::always_inline]] inline void applyAngular(PairLanes<V>& s, const Slice<V>& at,
+                                                const LaneRows& w, const Lanes3<V>& l) {
     s.a.spin = s.a.spin - at(w.inertiaA) * l;
     s.b.spin = s.b.spin + at(w.inertiaB) * l;
 }
@@ -220,7 +244,9 @@ namespace {
 
 // Returns whether any lane's impulse changed.
 template <class V>
-[[gnu::always_inline]] inline bool solveNormal(const Slice<V>& at, PairLanes<V>& s, const SolverContext& ctx, const LaneRows& w, bool useBias) {
+[[gnu::always_inline]] inline bool solveNormal(const Slice<V>& at, PairLanes<V>& s,
+                                               const SolverContext& ctx, const LaneRows& w,
+                                               bool useBias) {
     ContactBatch& c = at.c;
     const Lanes3<V> n = at.normal();
     const V sep = at(c.separation) + dot(s.deltaB - s.deltaA, n);
@@ -228,7 +254,8 @@ template <class V>
     const MaskOf<V> open = sep > zero;
     const MaskOf<V> push = useBias ? ~open & (sep + at(c.slop) < zero) : MaskOf<V>{};
     // Open: speculative, close at most the gap this substep. Pushing: soft, with bias.
-    const V pushBias = maxOf(ctx.soft.biasRate * (sep + at(c.slop)), splat<V>(-ctx.settings.maxPushSpeed));
+    const V pushBias =
+        maxOf(ctx.soft.biasRate * (sep + at(c.slop)), splat<V>(-ctx.settings.maxPushSpeed));
     V bias = select(open, sep / ctx.h, select(push, pushBias, zero));
     const V massScale = select(push, splat<V>(ctx.soft.massScale), splat<V>(1.0));
     const V impulseScale = select(push, splat<V>(ctx.soft.impulseScale), zero);
@@ -250,13 +277,15 @@ template <class V>
     const MaskOf<V> changed = total != old;  // an open contact that stays open: nothing
     if (!any(changed)) return false;
     applyNormal(s, at, w, (total - old) * n);
-    at.set(c.maxNormalImpulse, select(changed, maxOf(at(c.maxNormalImpulse), total), at(c.maxNormalImpulse)));
+    at.set(c.maxNormalImpulse,
+           select(changed, maxOf(at(c.maxNormalImpulse), total), at(c.maxNormalImpulse)));
     at.set(c.normalImpulse, total);
     return true;
 }
 
 template <class V>
-[[gnu::always_inline]] inline void solveFriction(const Slice<V>& at, PairLanes<V>& s, const LaneRows& w, double friction) {
+[[gnu::always_inline]] inline void solveFriction(const Slice<V>& at, PairLanes<V>& s,
+                                                 const LaneRows& w, double friction) {
     // The contact points move at v_a + ω_a × r_a·n and v_b − ω_b × r_b·n; the spin terms lie in
     // the tangent plane already.
     ContactBatch& c = at.c;
@@ -270,7 +299,8 @@ template <class V>
 }
 
 template <class V>
-[[gnu::always_inline]] inline void solveRolling(const Slice<V>& at, PairLanes<V>& s, const LaneRows& w, double resistance) {
+[[gnu::always_inline]] inline void solveRolling(const Slice<V>& at, PairLanes<V>& s,
+                                                const LaneRows& w, double resistance) {
     if (resistance <= 0.0) return;
     ContactBatch& c = at.c;
     const Lanes3<V> relative = s.b.spin - s.a.spin;
@@ -285,7 +315,9 @@ template <class V>
 // just found, then rolling resistance. A speculative contact that stays open carries no friction:
 // a batch of them skips the rows that would find 0. Returns whether the bodies may have moved.
 template <class V>
-[[gnu::always_inline]] inline bool solveRows(const Slice<V>& at, PairLanes<V>& s, const SolverContext& ctx, const LaneRows& w, bool useBias) {
+[[gnu::always_inline]] inline bool solveRows(const Slice<V>& at, PairLanes<V>& s,
+                                             const SolverContext& ctx, const LaneRows& w,
+                                             bool useBias) {
     const bool moved = solveNormal(at, s, ctx, w, useBias);
     if (!anyImpulse(at)) return moved;
     solveFriction(at, s, w, ctx.friction);
@@ -308,7 +340,8 @@ template <class V>
 
 void setRows(LaneRows& to, int l, const RowMasses& m, const InverseMasses& w) {
     to.normal[l] = m.normal, to.tangent[l] = m.tangent, to.roll[l] = m.roll;
-    to.massA[l] = w.massA, to.inertiaA[l] = w.inertiaA, to.massB[l] = w.massB, to.inertiaB[l] = w.inertiaB;
+    to.massA[l] = w.massA, to.inertiaA[l] = w.inertiaA, to.massB[l] = w.massB,
+    to.inertiaB[l] = w.inertiaB;
 }
 
 void loadLane(ContactBatch& to, int l, Contact& c, const SolverContext& ctx) {
@@ -408,9 +441,12 @@ template <class V, bool useBias>
 template <class V>
 [[gnu::always_inline]] inline void passLevelsOf(const Pass& pass, int begin, int end) {
     switch (pass.step) {
-    case Step::warmStart: return warmStartBatches<V>(pass, begin, end);
-    case Step::solve: return solveBatches<V, true>(pass, begin, end);
-    case Step::relax: return solveBatches<V, false>(pass, begin, end);
+        case Step::warmStart:
+            return warmStartBatches<V>(pass, begin, end);
+        case Step::solve:
+            return solveBatches<V, true>(pass, begin, end);
+        case Step::relax:
+            return solveBatches<V, false>(pass, begin, end);
     }
 }
 
@@ -425,8 +461,12 @@ template <class V>
 void twoLanes(const Pass& pass, int begin, int end) { passLevelsOf<Pair>(pass, begin, end); }
 
 #if defined(__x86_64__) && !defined(__clang__)
-[[gnu::target("arch=x86-64-v4")]] void passLevels(const Pass& pass, int begin, int end) { passLevelsOf<Quad>(pass, begin, end); }
-[[gnu::target("avx2")]] void passLevels(const Pass& pass, int begin, int end) { passLevelsOf<Quad>(pass, begin, end); }
+[[gnu::target("arch=x86-64-v4")]] void passLevels(const Pass& pass, int begin, int end) {
+    passLevelsOf<Quad>(pass, begin, end);
+}
+[[gnu::target("avx2")]] void passLevels(const Pass& pass, int begin, int end) {
+    passLevelsOf<Quad>(pass, begin, end);
+}
 [[gnu::target("default")]]
 #endif
 void passLevels(const Pass& pass, int begin, int end) {
@@ -457,7 +497,8 @@ void ContactBatches::warmStart(SolverContext& ctx) {
 void ContactBatches::solve(SolverContext& ctx, bool useBias) {
     if (useBias)
         for (PhysicsBody& b : ctx.bodies) b.supported = false;
-    byLevels(graph_, {batches_.data(), graph_.levelBegin.data(), ctx, useBias ? Step::solve : Step::relax});
+    byLevels(graph_,
+             {batches_.data(), graph_.levelBegin.data(), ctx, useBias ? Step::solve : Step::relax});
 }
 
 void ContactBatches::store(std::vector<Contact>& contacts) const {

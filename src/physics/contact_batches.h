@@ -21,7 +21,8 @@ namespace mb {
 // AVX-512; on baseline x86-64 the passes take it in halves, an SSE2 register each
 // (contact_batches.cpp compiles its passes for each). Aligned to its size even where the baseline
 // would align it less: the AVX code loads it whole.
-using Lanes = double __attribute__((vector_size(kLanes * sizeof(double)), aligned(kLanes * sizeof(double))));
+using Lanes =
+    double __attribute__((vector_size(kLanes * sizeof(double)), aligned(kLanes * sizeof(double))));
 
 // A row set: effective masses (RowMasses) and the inverse masses the impulses are applied with.
 struct LaneRows {
@@ -30,14 +31,14 @@ struct LaneRows {
 };
 
 struct ContactBatch {
-    PhysicsBody* a[kLanes];              // bodies (in SolverContext::bodies); a padding lane has
-    PhysicsBody* b[kLanes];              // the static body for both
-    int count = 0;                       // lanes in use
-    Lanes nx, ny, nz;                    // normal
+    PhysicsBody* a[kLanes];  // bodies (in SolverContext::bodies); a padding lane has
+    PhysicsBody* b[kLanes];  // the static body for both
+    int count = 0;           // lanes in use
+    Lanes nx, ny, nz;        // normal
     Lanes separation, armA, armB, slop, curve, rollRadius;
-    LaneRows solve, relax;               // relax: the lower body held fixed under shock propagation
+    LaneRows solve, relax;  // relax: the lower body held fixed under shock propagation
     Lanes normalImpulse, maxNormalImpulse;
-    Lanes tx, ty, tz, rx, ry, rz;        // tangent and rolling impulses
+    Lanes tx, ty, tz, rx, ry, rz;  // tangent and rolling impulses
 };
 
 class Worker;
@@ -49,7 +50,7 @@ public:
     void load(const SolverContext& ctx);
     void warmStart(SolverContext& ctx);
     // The solve pass (useBias) also sets PhysicsBody::supported: pushed by a contact after it.
-    void solve(SolverContext& ctx, bool useBias);     // useBias false: the relax pass
+    void solve(SolverContext& ctx, bool useBias);      // useBias false: the relax pass
     void store(std::vector<Contact>& contacts) const;  // impulses back into the contacts
     // A curved contact, followed substep by substep: its bend for the solve pass; its normal and
     // separation where the body is now, its friction impulse turned into the new tangent plane.

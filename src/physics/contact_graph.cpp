@@ -5,7 +5,8 @@
 
 namespace mb {
 
-void sideByMedianX(const std::vector<PhysicsBody>& bodies, std::vector<BodyX>& byX, std::vector<char>& side) {
+void sideByMedianX(const std::vector<PhysicsBody>& bodies, std::vector<BodyX>& byX,
+                   std::vector<char>& side) {
     const size_t n = bodies.size() - 1;  // the static body, last, joins no side
     const bool fresh = byX.size() != n;
     if (fresh) {

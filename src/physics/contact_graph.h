@@ -27,7 +27,8 @@ struct ContactGraph {
     // Level k's batches are [levelBegin[k], levelBegin[k + 1]).
     std::vector<int> levelBegin;
     std::vector<int> slotOf;  // per contact: its slot, batch · kLanes + lane
-    int runEnd[2] = {0, 0};   // the levels of the first run end at runEnd[0], of the second at runEnd[1]
+    int runEnd[2] = {
+        0, 0};  // the levels of the first run end at runEnd[0], of the second at runEnd[1]
 
     int batches() const { return int(slots.size()) / kLanes; }
     int levels() const { return int(levelBegin.size()) - 1; }
@@ -40,7 +41,8 @@ struct BodyX {  // a body and its x, for sideByMedianX
 // The halves two threads may solve at once (SolverContext::split): the dynamic bodies left of
 // the median x are side 0, the rest side 1. The cut depends on the bodies alone, never on the
 // thread count. `byX`: the bodies in x order, kept by the caller from the last call.
-void sideByMedianX(const std::vector<PhysicsBody>& bodies, std::vector<BodyX>& byX, std::vector<char>& side);
+void sideByMedianX(const std::vector<PhysicsBody>& bodies, std::vector<BodyX>& byX,
+                   std::vector<char>& side);
 // A contact of bodies a and b within one side (or between one side and the static body) goes to
 // that side's run; one across the cut to the joining run, 2, solved after both: no body is in
 // both halves.

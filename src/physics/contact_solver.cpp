@@ -17,7 +17,8 @@ InverseMasses inverseOf(const PhysicsBody& a, const PhysicsBody& b) {
 
 RowMasses rowMasses(const Contact& c, const InverseMasses& w) {
     const double kn = w.massA + w.massB;
-    return {inverseOrZero(kn), inverseOrZero(kn + w.inertiaA * c.armA * c.armA + w.inertiaB * c.armB * c.armB),
+    return {inverseOrZero(kn),
+            inverseOrZero(kn + w.inertiaA * c.armA * c.armA + w.inertiaB * c.armB * c.armB),
             inverseOrZero(w.inertiaA + w.inertiaB)};
 }
 
@@ -30,7 +31,8 @@ bool shockPropagates(const Contact& c, const SolverContext& ctx) {
     const bool falling = ctx.gravity > 0.0, onSphere = c.a != int(ctx.bodies.size()) - 1;
     const bool resting = std::abs(c.relativeVelocity) < ctx.settings.restitutionThreshold;
     const bool stacked = std::abs(c.normal.y) > 0.5;
-    return falling & onSphere & resting & stacked;  // & where && would branch on each, the later ones anyone's guess
+    return falling & onSphere & resting &
+           stacked;  // & where && would branch on each, the later ones anyone's guess
 }
 
 InverseMasses fixingLower(const Contact& c, const PhysicsBody& a, const PhysicsBody& b) {
@@ -78,7 +80,8 @@ void applyRestitution(SolverContext& ctx, int iterations, std::vector<int>& boun
     for (size_t i = 0; i < ctx.contacts.size(); ++i) {  // written in full, counted where it bounces
         const Contact& c = ctx.contacts[i];
         bouncing[count] = int(i);
-        count += size_t(c.relativeVelocity < -bounceThreshold(ctx)) & size_t(c.maxNormalImpulse > 0.0);
+        count +=
+            size_t(c.relativeVelocity < -bounceThreshold(ctx)) & size_t(c.maxNormalImpulse > 0.0);
     }
     bouncing.resize(count);
     for (int k = 0; k < iterations; ++k)

@@ -23,21 +23,21 @@ struct RowMasses {
 };
 
 struct Contact {
-    int a = 0, b = 0;                    // bodies; a is the static body for a static surface
-    int feature = -1;                    // StaticHit::feature, or -1 between two spheres
-    bool shock = false;                  // the relax pass holds the lower body fixed
-    bool curved = false;                 // a static surface that curves: followed every substep
-    glm::dvec3 normal{0, 1, 0};          // from a to b
-    double separation = 0.0;             // at the start of the step; < 0 overlaps
-    double armA = 0.0, armB = 0.0;       // centre to contact point, along ±normal
-    double slop = 0.0;                   // overlap left alone, m
+    int a = 0, b = 0;               // bodies; a is the static body for a static surface
+    int feature = -1;               // StaticHit::feature, or -1 between two spheres
+    bool shock = false;             // the relax pass holds the lower body fixed
+    bool curved = false;            // a static surface that curves: followed every substep
+    glm::dvec3 normal{0, 1, 0};     // from a to b
+    double separation = 0.0;        // at the start of the step; < 0 overlaps
+    double armA = 0.0, armB = 0.0;  // centre to contact point, along ±normal
+    double slop = 0.0;              // overlap left alone, m
     RowMasses mass;
-    double rollRadius = 0.0;             // lever of rolling resistance
-    double shift = 0.0;                  // added to separation for the impacts (impacts.h), m
-    double relativeVelocity = 0.0;       // normal velocity at the start of the step (after the
-                                         // impacts, from prepareContact), for bounce
-    double normalImpulse = 0.0;          // accumulated per substep, warm started across steps
-    double maxNormalImpulse = 0.0;       // largest this step: did it touch?
+    double rollRadius = 0.0;        // lever of rolling resistance
+    double shift = 0.0;             // added to separation for the impacts (impacts.h), m
+    double relativeVelocity = 0.0;  // normal velocity at the start of the step (after the
+                                    // impacts, from prepareContact), for bounce
+    double normalImpulse = 0.0;     // accumulated per substep, warm started across steps
+    double maxNormalImpulse = 0.0;  // largest this step: did it touch?
     glm::dvec3 tangentImpulse{0.0};
     glm::dvec3 rollImpulse{0.0};
 };
@@ -60,14 +60,14 @@ struct InverseMasses {
 class Worker;
 
 struct SolverContext {
-    std::vector<PhysicsBody>& bodies;    // the static body last
+    std::vector<PhysicsBody>& bodies;  // the static body last
     std::vector<Contact>& contacts;
     const PhysicsSettings& settings;
-    double gravity;                      // m/s² along −y
-    double friction;                     // Coulomb coefficient
+    double gravity;   // m/s² along −y
+    double friction;  // Coulomb coefficient
     double restitution;
-    double rolling;                      // rolling resistance: torque = rolling · radius · normal force
-    double h;                            // substep, s
+    double rolling;  // rolling resistance: torque = rolling · radius · normal force
+    double h;        // substep, s
     Softness soft;
     // The contacts come in three runs: [0, split[0]) and [split[0], split[1]) share no dynamic
     // body, so the solver takes the two at once, the first on `worker` (null: one thread), with
@@ -92,7 +92,8 @@ struct PreparedRows {
 // Row masses, the approach speed and shock propagation of one contact, for this step, from its
 // bodies. The contacts must be sorted bottom-up for shock propagation (see the .cpp).
 PreparedRows prepareContact(Contact& c, const SolverContext& ctx);
-void applyRestitution(SolverContext& ctx, int iterations, std::vector<int>& bouncing);  // bouncing: scratch
+void applyRestitution(SolverContext& ctx, int iterations,
+                      std::vector<int>& bouncing);  // bouncing: scratch
 double contactSeparation(const Contact& c, const std::vector<PhysicsBody>& bodies);  // now
 
 }  // namespace mb

@@ -104,7 +104,9 @@ void Impacts::shiftSeparations(std::vector<Contact>& contacts) {
     }
 }
 
-glm::dvec3 Impacts::offset(int body) const { return any_ ? offset_[size_t(body)] : glm::dvec3(0.0); }
+glm::dvec3 Impacts::offset(int body) const {
+    return any_ ? offset_[size_t(body)] : glm::dvec3(0.0);
+}
 
 // In free flight a contact's separation is a parabola in t:
 //   s(t) = s0 + n·(Δoffset + Δv·t + ½·Δa·t²),
@@ -116,7 +118,8 @@ void Impacts::schedule(const SolverContext& ctx, int contact, double now) {
     // shared with its neighbours' at once, not passed down the pile one impact at a time.
     if (c.normalImpulse > 0.0) return;
     const PhysicsBody &a = ctx.bodies[size_t(c.a)], &b = ctx.bodies[size_t(c.b)];
-    const double c0 = c.separation + glm::dot(c.normal, offset_[size_t(c.b)] - offset_[size_t(c.a)]);
+    const double c0 =
+        c.separation + glm::dot(c.normal, offset_[size_t(c.b)] - offset_[size_t(c.a)]);
     const double c1 = glm::dot(c.normal, b.vel - a.vel);
     const double c2 = glm::dot(c.normal, accel_[size_t(c.b)] - accel_[size_t(c.a)]);
     const double s = c0 + c1 * now + 0.5 * c2 * now * now, u = c1 + c2 * now;
@@ -159,14 +162,16 @@ void Impacts::hit(SolverContext& ctx, const Contact& c, double t) {
     offset_[size_t(c.a)] += a.invMass * p * t;  // −Δv·t
     offset_[size_t(c.b)] -= b.invMass * p * t;
     for (int body : {c.a, c.b}) {
-        if (ctx.bodies[size_t(body)].invMass <= 0.0 || hit_[size_t(body)]) continue;  // the static body stays
+        if (ctx.bodies[size_t(body)].invMass <= 0.0 || hit_[size_t(body)])
+            continue;  // the static body stays
         hit_[size_t(body)] = 1;
         moved_.push_back(body);
     }
 }
 
 // Each dynamic body's contacts that may impact (open_: schedule() leaves those that bore load to
-// the solver), for finding their impacts again after it is hit. Built on the first impact of a step.
+// the solver), for finding their impacts again after it is hit. Built on the first impact of a
+// step.
 void Impacts::linkBodies(const SolverContext& ctx) {
     const int staticBody = int(ctx.bodies.size()) - 1;
     first_.assign(ctx.bodies.size() + 1, 0);
@@ -183,7 +188,8 @@ void Impacts::linkBodies(const SolverContext& ctx) {
     linked_ = true;
 }
 
-void Impacts::correctPositions(std::vector<PhysicsBody>& bodies, std::vector<Contact>& contacts) const {
+void Impacts::correctPositions(std::vector<PhysicsBody>& bodies,
+                               std::vector<Contact>& contacts) const {
     if (!any_) return;
     for (int i : shifted_) {
         Contact& c = contacts[size_t(i)];

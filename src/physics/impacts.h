@@ -22,9 +22,9 @@
 //
 // Contacts that bore load in the last step (warm started with a normal impulse: a ball resting
 // in a pile) are left to the solver, which shares a blow among them at once, and to the
-// restitution pass. Only impacts faster than bounceThreshold() are events; slower ones are the solver's (they
-// do not bounce). A chain that will not end (a sphere pinned between two others, e = 1) stops at
-// maxImpacts per contact; the solver and the restitution pass take what is left.
+// restitution pass. Only impacts faster than bounceThreshold() are events; slower ones are the
+// solver's (they do not bounce). A chain that will not end (a sphere pinned between two others, e =
+// 1) stops at maxImpacts per contact; the solver and the restitution pass take what is left.
 #pragma once
 
 #include "contact_solver.h"
@@ -51,27 +51,30 @@ private:
         double time;
         int contact;
         std::uint32_t stamp;  // the contact's stamp when this was found; stale when it differs
-        bool operator>(const Event& o) const { return time > o.time || (time == o.time && contact > o.contact); }
+        bool operator>(const Event& o) const {
+            return time > o.time || (time == o.time && contact > o.contact);
+        }
     };
     void schedule(const SolverContext& ctx, int contact, double now);
     void hit(SolverContext& ctx, const Contact& c, double t);
     void linkBodies(const SolverContext& ctx);
     void shiftSeparations(std::vector<Contact>& contacts);
 
-    std::vector<glm::dvec3> offset_;     // per body: position correction, −Σ Δv·t*
-    std::vector<glm::dvec3> accel_;      // per body: free-flight acceleration this step
-    std::vector<char> hit_;              // per body: an impact moved it this step
-    std::vector<int> moved_;             // the bodies hit, the only ones with an offset
-    std::vector<int> shifted_;           // the contacts of those, the only ones with a shift
-    std::vector<std::uint32_t> stamp_;   // per contact
-    std::vector<int> count_;             // per contact: impacts this step
-    std::vector<Event> heap_;            // min-heap on (time, contact)
-    std::vector<int> open_;              // the contacts that bore no load last step
-    std::vector<int> due_;               // scratch: those of them that may impact from the start
-    std::vector<int> first_, links_;     // per body: its open contacts, links_[first_[i] .. first_[i + 1])
-    std::vector<int> next_;              // scratch for linkBodies
+    std::vector<glm::dvec3> offset_;    // per body: position correction, −Σ Δv·t*
+    std::vector<glm::dvec3> accel_;     // per body: free-flight acceleration this step
+    std::vector<char> hit_;             // per body: an impact moved it this step
+    std::vector<int> moved_;            // the bodies hit, the only ones with an offset
+    std::vector<int> shifted_;          // the contacts of those, the only ones with a shift
+    std::vector<std::uint32_t> stamp_;  // per contact
+    std::vector<int> count_;            // per contact: impacts this step
+    std::vector<Event> heap_;           // min-heap on (time, contact)
+    std::vector<int> open_;             // the contacts that bore no load last step
+    std::vector<int> due_;              // scratch: those of them that may impact from the start
+    std::vector<int> first_,
+        links_;              // per body: its open contacts, links_[first_[i] .. first_[i + 1])
+    std::vector<int> next_;  // scratch for linkBodies
     bool linked_ = false;
-    bool any_ = false;                   // an impact happened: offsets to apply
+    bool any_ = false;  // an impact happened: offsets to apply
 };
 
 }  // namespace mb

@@ -24,11 +24,13 @@ void updateSleep(std::vector<PhysicsBody>& bodies, const std::vector<Contact>& c
     const int n = int(bodies.size()) - 1;  // the static body joins no island
     for (int i = 0; i < n; ++i)
         if (bodies[i].awake)
-            bodies[i].sleepTime = slow(bodies[i], settings.sleepSpeed) ? bodies[i].sleepTime + settings.dt
-                                                                       : 0.0;
+            bodies[i].sleepTime =
+                slow(bodies[i], settings.sleepSpeed) ? bodies[i].sleepTime + settings.dt : 0.0;
     if (!settings.sleep) return;
     // An island sleeps once its least settled body is ready: with no body ready, none sleeps.
-    auto ready = [&](const PhysicsBody& b) { return b.awake && b.sleepTime >= settings.timeToSleep; };
+    auto ready = [&](const PhysicsBody& b) {
+        return b.awake && b.sleepTime >= settings.timeToSleep;
+    };
     if (std::none_of(bodies.begin(), bodies.begin() + n, ready)) return;
     // Node n stands for every body not ready (asleep already, or not settled): they start in its
     // set, and an island joined to it stays awake. Unions point to the larger root, so n stays

@@ -34,18 +34,25 @@ template <class V>
 }
 // Bitwise: and, and-not, or (the vector ?: of GCC 12 branches lane by lane).
 template <class V>
-[[gnu::always_inline]] inline V select(MaskOf<V> m, V a, V b) { return V((MaskOf<V>(a) & m) | (MaskOf<V>(b) & ~m)); }
+[[gnu::always_inline]] inline V select(MaskOf<V> m, V a, V b) {
+    return V((MaskOf<V>(a) & m) | (MaskOf<V>(b) & ~m));
+}
 // Whether any lane has a bit set: four lanes' halves folded onto each other, then the last two.
 template <class M>
 [[gnu::always_inline]] inline bool any(M m) {
-    static_assert(sizeof m == 2 * sizeof(double) || sizeof m == 4 * sizeof(double), "one fold at most");
+    static_assert(sizeof m == 2 * sizeof(double) || sizeof m == 4 * sizeof(double),
+                  "one fold at most");
     if constexpr (sizeof m == 4 * sizeof(double)) m |= __builtin_shufflevector(m, m, 2, 3, 0, 1);
     return (m[0] | m[1]) != 0;
 }
 template <class V>
-[[gnu::always_inline]] inline V maxOf(V a, V b) { return select(a < b, b, a); }  // std::max(a, b)
+[[gnu::always_inline]] inline V maxOf(V a, V b) {
+    return select(a < b, b, a);
+}  // std::max(a, b)
 template <class V>
-[[gnu::always_inline]] inline V minOf(V a, V b) { return select(b < a, b, a); }  // std::min(a, b)
+[[gnu::always_inline]] inline V minOf(V a, V b) {
+    return select(b < a, b, a);
+}  // std::min(a, b)
 // One instruction for all lanes where std::sqrt need not set errno: contact_batches.cpp is
 // compiled with -fno-math-errno (src/CMakeLists.txt).
 template <class V>
@@ -61,15 +68,24 @@ struct Lanes3 {
 };
 
 template <class V>
-[[gnu::always_inline]] inline Lanes3<V> operator+(const Lanes3<V>& a, const Lanes3<V>& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+[[gnu::always_inline]] inline Lanes3<V> operator+(const Lanes3<V>& a, const Lanes3<V>& b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
 template <class V>
-[[gnu::always_inline]] inline Lanes3<V> operator-(const Lanes3<V>& a, const Lanes3<V>& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+[[gnu::always_inline]] inline Lanes3<V> operator-(const Lanes3<V>& a, const Lanes3<V>& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
 template <class V>
-[[gnu::always_inline]] inline Lanes3<V> operator*(V s, const Lanes3<V>& v) { return {s * v.x, s * v.y, s * v.z}; }
+[[gnu::always_inline]] inline Lanes3<V> operator*(V s, const Lanes3<V>& v) {
+    return {s * v.x, s * v.y, s * v.z};
+}
 template <class V>
-[[gnu::always_inline]] inline Lanes3<V> operator*(const Lanes3<V>& v, V s) { return {v.x * s, v.y * s, v.z * s}; }
+[[gnu::always_inline]] inline Lanes3<V> operator*(const Lanes3<V>& v, V s) {
+    return {v.x * s, v.y * s, v.z * s};
+}
 template <class V>
-[[gnu::always_inline]] inline Lanes3<V> select(MaskOf<V> m, const Lanes3<V>& a, const Lanes3<V>& b) {
+[[gnu::always_inline]] inline Lanes3<V> select(MaskOf<V> m, const Lanes3<V>& a,
+                                               const Lanes3<V>& b) {
     return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z)};
 }
 template <class V>

@@ -33,7 +33,8 @@ struct Found {  // a contact as collide() finds it, before its place in the solv
 
 // Found with its height taken from b while collide() has b at hand, where the sort would read
 // the bodies out of order.
-Found found(int a, int b, const PhysicsBody& onB, int feature, bool curved, const dvec3& normal, double separation) {
+Found found(int a, int b, const PhysicsBody& onB, int feature, bool curved, const dvec3& normal,
+            double separation) {
     return {a, b, feature, curved, normal, separation, onB.pos.y - onB.radius * normal.y};
 }
 
@@ -51,10 +52,12 @@ struct PhysicsWorld::Impl {
     struct Order {
         std::uint64_t height;  // orderedBits(contact height): compares as the double does
         std::uint64_t key;
-        int index;             // in found
-        int run;               // SolverContext::split: 0 or 1, one half; 2, both
-        int warm;              // last step's impulses in kept, or -1
-        bool operator<(const Order& o) const { return height < o.height || (height == o.height && key < o.key); }
+        int index;  // in found
+        int run;    // SolverContext::split: 0 or 1, one half; 2, both
+        int warm;   // last step's impulses in kept, or -1
+        bool operator<(const Order& o) const {
+            return height < o.height || (height == o.height && key < o.key);
+        }
     };
     struct Impulses {  // a contact's, kept for the next step's warm start
         double normal;
@@ -78,16 +81,16 @@ struct PhysicsWorld::Impl {
     double gravity, friction, restitution, rolling;
     std::vector<Found> found;
     std::vector<Contact> contacts;  // in solve order
-    std::vector<int> curved;  // contacts on curved static surfaces, followed every substep
+    std::vector<int> curved;        // contacts on curved static surfaces, followed every substep
     std::vector<Order> order, fresh, merged;
     std::vector<Order> byRank;  // persisting contacts at last step's rank; index -1 where none is
     std::vector<int> rank;      // per contact, in solve order: its rank in the bottom-up order
-    std::vector<BodyX> byX;  // bodies in x order, for sideByMedianX
-    std::vector<char> side;  // per body: the half it is in, by x
+    std::vector<BodyX> byX;     // bodies in x order, for sideByMedianX
+    std::vector<char> side;     // per body: the half it is in, by x
     int split[2] = {0, 0};
     std::unique_ptr<Worker> worker;  // started with the first step that splits
-    std::vector<Warm> previous;  // last step's contacts, in the order collide() found them
-    std::vector<Impulses> kept;  // last step's impulses, in its solve order
+    std::vector<Warm> previous;      // last step's contacts, in the order collide() found them
+    std::vector<Impulses> kept;      // last step's impulses, in its solve order
     // previous grouped by first dynamic body (the key's top bits): body i's are
     // grouped[warmBegin[i] .. warmBegin[i + 1]), a handful, searched linearly.
     std::vector<Keyed> grouped;
@@ -118,12 +121,15 @@ struct PhysicsWorld::Impl {
 namespace {
 
 // Overlap a contact may keep: small against the sphere, so millimetre spheres do not sink.
-double slopFor(double radius, const PhysicsSettings& s) { return std::min(s.linearSlop, 0.05 * radius); }
+double slopFor(double radius, const PhysicsSettings& s) {
+    return std::min(s.linearSlop, 0.05 * radius);
+}
 
 // Warm-start key: first dynamic body, other body, feature + 1, in 24, 24 and 16 bits.
 std::uint64_t contactKey(int a, int b, int feature, int staticBody) {
     const bool onStatic = a == staticBody;
-    const std::uint64_t first = std::uint64_t(onStatic ? b : a), second = std::uint64_t(onStatic ? a : b);
+    const std::uint64_t first = std::uint64_t(onStatic ? b : a),
+                        second = std::uint64_t(onStatic ? a : b);
     return first << 40 | second << 16 | std::uint64_t(feature + 1);
 }
 
@@ -197,14 +203,16 @@ double PhysicsWorld::kineticEnergy() const {
     double e = 0.0;
     for (int i = 0; i < bodyCount(); ++i) {
         const PhysicsBody& b = bodies_[i];
-        e += 0.5 * glm::dot(b.vel, b.vel) / b.invMass + 0.5 * glm::dot(b.spin, b.spin) / b.invInertia;
+        e += 0.5 * glm::dot(b.vel, b.vel) / b.invMass +
+             0.5 * glm::dot(b.spin, b.spin) / b.invInertia;
     }
     return e + impl_->rigid.kineticEnergy();
 }
 
 double PhysicsWorld::potentialEnergy() const {
     double e = 0.0;
-    for (int i = 0; i < bodyCount(); ++i) e += impl_->gravity * bodies_[i].pos.y / bodies_[i].invMass;
+    for (int i = 0; i < bodyCount(); ++i)
+        e += impl_->gravity * bodies_[i].pos.y / bodies_[i].invMass;
     return e + impl_->rigid.potentialEnergy(impl_->gravity);
 }
 
@@ -219,9 +227,16 @@ void PhysicsWorld::step() {
     const double h = settings_.dt / substeps;
     collide();
     w.rigid.collide(bodies_, w.gravity);
-    SolverContext ctx{bodies_, w.contacts, settings_, w.gravity, w.friction, w.restitution, w.rolling, h,
-                      makeSoftness(std::min(settings_.contactHertz, 0.25 / h),
-                                   settings_.contactDampingRatio, h)};
+    SolverContext ctx{
+        bodies_,
+        w.contacts,
+        settings_,
+        w.gravity,
+        w.friction,
+        w.restitution,
+        w.rolling,
+        h,
+        makeSoftness(std::min(settings_.contactHertz, 0.25 / h), settings_.contactDampingRatio, h)};
     ctx.split[0] = w.split[0];
     ctx.split[1] = w.split[1];
     if (settings_.threads > 1 && w.split[1] > 0) {
@@ -277,7 +292,8 @@ void PhysicsWorld::collide() {
     w.margins.resize(n);
     for (int i = 0; i < n; ++i) {
         const PhysicsBody& b = bodies_[i];
-        w.margins[i] = 4.0 * slopFor(b.radius, settings_) + glm::length(b.vel) * dt + w.gravity * dt * dt;
+        w.margins[i] =
+            4.0 * slopFor(b.radius, settings_) + glm::length(b.vel) * dt + w.gravity * dt * dt;
         w.centres[i] = b.pos;
         w.extents[i] = b.radius + w.margins[i];
     }
@@ -291,7 +307,8 @@ void PhysicsWorld::collide() {
         if (!A.awake && !B.awake) continue;
         const dvec3 d = B.pos - A.pos;
         const double len = glm::length(d);
-        w.found.push_back(found(a, b, B, -1, false, len > 0.0 ? d / len : dvec3(0, 1, 0), len - A.radius - B.radius));
+        w.found.push_back(found(a, b, B, -1, false, len > 0.0 ? d / len : dvec3(0, 1, 0),
+                                len - A.radius - B.radius));
     }
     for (int i = 0; i < n; ++i)
         if (bodies_[i].awake) collideStatic(i);
@@ -389,7 +406,8 @@ void PhysicsWorld::bendCurved(double h) {
     for (int i : w.curved) {
         const Contact& c = w.contacts[size_t(i)];
         const PhysicsBody& b = bodies_[c.b];
-        w.batches.setCurve(i, w.statics.bend(c.feature, b.pos + w.impacts.offset(c.b), c.normal, b.vel * h));
+        w.batches.setCurve(
+            i, w.statics.bend(c.feature, b.pos + w.impacts.offset(c.b), c.normal, b.vel * h));
     }
 }
 
@@ -427,9 +445,11 @@ void PhysicsWorld::keepImpulses() {
     for (const Impl::Warm& p : w.previous) ++w.warmBegin[size_t(p.key >> 40) + 2];
     for (int i = 2; i <= n + 1; ++i) w.warmBegin[i] += w.warmBegin[i - 1];
     w.grouped.resize(w.previous.size());
-    // warmBegin[f + 1] is the next free slot of body f's group; once filled it is group f + 1's start.
+    // warmBegin[f + 1] is the next free slot of body f's group; once filled it is group f + 1's
+    // start.
     for (size_t i = 0; i < w.previous.size(); ++i)
-        w.grouped[size_t(w.warmBegin[size_t(w.previous[i].key >> 40) + 1]++)] = {w.previous[i].key, int(i)};
+        w.grouped[size_t(w.warmBegin[size_t(w.previous[i].key >> 40) + 1]++)] = {w.previous[i].key,
+                                                                                 int(i)};
 }
 
 void PhysicsWorld::collideStatic(int body) {
@@ -444,7 +464,8 @@ void PhysicsWorld::collideStatic(int body) {
         const bool curved = settings_.followCurves && hit.feature > 0 &&
                             std::abs(w.statics.bend(hit.feature, b.pos, hit.normal, move)) >
                                 w.statics.bendNoise(hit.feature, glm::length(move));
-        w.found.push_back(found(bodyCount(), body, b, hit.feature, curved, hit.normal, hit.separation));
+        w.found.push_back(
+            found(bodyCount(), body, b, hit.feature, curved, hit.normal, hit.separation));
     }
 }
 
@@ -511,7 +532,8 @@ void PhysicsWorld::updateStats() {
     for (int i = 0; i < rigidCount(); ++i) stats_.awake += impl_->rigid.body(i).awake ? 1 : 0;
 }
 
-int simulate(Scene& scene, double seconds, const PhysicsSettings& settings, SimulateProgress progress) {
+int simulate(Scene& scene, double seconds, const PhysicsSettings& settings,
+             SimulateProgress progress) {
     PhysicsWorld world(scene, settings);
     const int steps = int(std::llround(seconds / settings.dt));
     for (long long i = 1; i <= steps; ++i) {

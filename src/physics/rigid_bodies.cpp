@@ -20,9 +20,8 @@ namespace {
 
 constexpr int kProbeStride = 64;  // StaticCollider ids per body: its probes, then its rims'
 constexpr int kMaxManifold = 4;
-constexpr int kSweeps = 16;       // of a manifold's normal rows in the relax pass (solve)
-constexpr int kBounceSweeps = 16; // ... and in restitute, where a face must bounce whole
-
+constexpr int kSweeps = 16;        // of a manifold's normal rows in the relax pass (solve)
+constexpr int kBounceSweeps = 16;  // ... and in restitute, where a face must bounce whole
 
 // The shape alone, at the origin and unturned: the body's frame.
 SdfObject shapeOf(const Object& o) {
@@ -37,7 +36,8 @@ SdfObject shapeOf(const Object& o) {
 
 dmat3 worldInverseInertia(const dquat& q, const dvec3& inertia) {
     const dmat3 r = glm::mat3_cast(q);
-    return r * dmat3(1.0 / inertia.x, 0, 0, 0, 1.0 / inertia.y, 0, 0, 0, 1.0 / inertia.z) * glm::transpose(r);
+    return r * dmat3(1.0 / inertia.x, 0, 0, 0, 1.0 / inertia.y, 0, 0, 0, 1.0 / inertia.z) *
+           glm::transpose(r);
 }
 
 // The body's signed distance at world point p, and its gradient (tetrahedral differences in
@@ -129,7 +129,8 @@ void solveFriction(RigidContact& c, double normalImpulse) {
         t0 *= limit / length;
         t1 *= limit / length;
     }
-    applyImpulse(c, (t0 - c.tangentImpulse[0]) * c.tangent[0] + (t1 - c.tangentImpulse[1]) * c.tangent[1]);
+    applyImpulse(
+        c, (t0 - c.tangentImpulse[0]) * c.tangent[0] + (t1 - c.tangentImpulse[1]) * c.tangent[1]);
     c.tangentImpulse[0] = t0;
     c.tangentImpulse[1] = t1;
 }
@@ -170,7 +171,9 @@ void solveRolling(RigidContact& c) {
     c.rollImpulse = total;
 }
 
-std::uint64_t pairKey(int a, int b) { return std::uint64_t(a + 1) << 40 | std::uint64_t(b + 1) << 16; }
+std::uint64_t pairKey(int a, int b) {
+    return std::uint64_t(a + 1) << 40 | std::uint64_t(b + 1) << 16;
+}
 
 // Up to four of the candidates: the deepest, the one furthest from it, the one spanning the
 // largest triangle with those, and the one furthest from all three. Ties go to the first.
@@ -188,10 +191,12 @@ void reduceManifold(std::vector<Candidate>& all) {
     const dvec3 p0 = kept[0].point;
     kept.push_back(best([&](const Candidate& c) { return glm::length(c.point - p0); }));
     const dvec3 p1 = kept[1].point;
-    kept.push_back(best([&](const Candidate& c) { return glm::length(glm::cross(p1 - p0, c.point - p0)); }));
+    kept.push_back(
+        best([&](const Candidate& c) { return glm::length(glm::cross(p1 - p0, c.point - p0)); }));
     const dvec3 p2 = kept[2].point;
     kept.push_back(best([&](const Candidate& c) {
-        return std::min({glm::length(c.point - p0), glm::length(c.point - p1), glm::length(c.point - p2)});
+        return std::min(
+            {glm::length(c.point - p0), glm::length(c.point - p1), glm::length(c.point - p2)});
     }));
     all = kept;
 }
@@ -265,7 +270,8 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     touching_.assign(size_t(n), 0);
     for (int i = 0; i < n; ++i) {
         const RigidBody& b = bodies_[size_t(i)];
-        margins_[size_t(i)] = 4.0 * settings_.linearSlop + (glm::length(b.vel) + glm::length(b.spin) * b.bound) * dt_ +
+        margins_[size_t(i)] = 4.0 * settings_.linearSlop +
+                              (glm::length(b.vel) + glm::length(b.spin) * b.bound) * dt_ +
                               gravity * dt_ * dt_;
         centres_[size_t(i)] = b.pos;
         extents_[size_t(i)] = b.bound + margins_[size_t(i)];
@@ -273,7 +279,8 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     for (int s = 0; s < m; ++s) {
         const PhysicsBody& b = spheres[size_t(s)];
         centres_[size_t(n + s)] = b.pos;
-        extents_[size_t(n + s)] = b.radius + 4.0 * settings_.linearSlop + glm::length(b.vel) * dt_ + gravity * dt_ * dt_;
+        extents_[size_t(n + s)] =
+            b.radius + 4.0 * settings_.linearSlop + glm::length(b.vel) * dt_ + gravity * dt_ * dt_;
     }
     for (int i = 0; i < n; ++i)
         if (bodies_[size_t(i)].awake) collideStatics(i);
@@ -294,7 +301,8 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     manifolds_.clear();
     for (size_t i = 0; i < contacts_.size(); ++i) {
         prepare(contacts_[i]);
-        if (i == 0 || (contacts_[i].key ^ contacts_[i - 1].key) >> 8 != 0) manifolds_.push_back({int(i), int(i), {}});
+        if (i == 0 || (contacts_[i].key ^ contacts_[i - 1].key) >> 8 != 0)
+            manifolds_.push_back({int(i), int(i), {}});
         manifolds_.back().end = int(i) + 1;
     }
     for (Manifold& m : manifolds_) prepareFriction(m);
@@ -333,10 +341,12 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
     statics_.query(i * kProbeStride + kProbeStride - 1, b.pos, b.bound, reach, hits_, b.bound);
     if (hits_.empty()) return;
     // A rim's support point turns about the rim's centre: that is its probe's centre.
-    auto add = [&](const StaticHit& hit, const dvec3& at, double radius, int probe, const dvec3& centre) {
+    auto add = [&](const StaticHit& hit, const dvec3& at, double radius, int probe,
+                   const dvec3& centre) {
         if (size_t(hit.feature) >= byFeature.size()) byFeature.resize(size_t(hit.feature) + 1);
         const dvec3 point = at - (radius + 0.5 * hit.separation) * hit.normal;
-        byFeature[size_t(hit.feature)].push_back({point, hit.normal, hit.separation, probe, centre, false});
+        byFeature[size_t(hit.feature)].push_back(
+            {point, hit.normal, hit.separation, probe, centre, false});
     };
     for (size_t k = 0; k < b.probes.size(); ++k) {
         const dvec3 c = b.pos + b.orient * b.probes[k].local;
@@ -350,12 +360,14 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
         statics_.query(id, c, 0.0, b.rims[r].radius + reach, hits_, b.bound);
         const std::vector<StaticHit> near = hits_;
         for (const StaticHit& surface : near) {
-            const std::vector<dvec3> support = rimSupport(c, axis, b.rims[r].radius, surface.normal);
+            const std::vector<dvec3> support =
+                rimSupport(c, axis, b.rims[r].radius, surface.normal);
             for (size_t k = 0; k < support.size(); ++k) {
                 statics_.query(id + 1, support[k], 0.0, reach, hits_, b.bound);
                 for (const StaticHit& hit : hits_)
                     if (hit.feature == surface.feature)
-                        add(hit, support[k], 0.0, int(b.probes.size() + 4 * r + k), k == 0 && support.size() == 1 ? c : support[k]);
+                        add(hit, support[k], 0.0, int(b.probes.size() + 4 * r + k),
+                            k == 0 && support.size() == 1 ? c : support[k]);
             }
         }
     }
@@ -363,16 +375,19 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
 
 // The prober's probes against the shape's SDF; `flip` where the prober is the pair's a, so
 // every normal points from a to b. Keys: offset + probe.
-void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bool flip, int offset) {
-    const double reach = 4.0 * settings_.linearSlop +
-                         (glm::length(prober.vel - shape.vel) + glm::length(prober.spin) * prober.bound +
-                          glm::length(shape.spin) * shape.bound) * dt_;
+void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bool flip,
+                             int offset) {
+    const double reach = 4.0 * settings_.linearSlop + (glm::length(prober.vel - shape.vel) +
+                                                       glm::length(prober.spin) * prober.bound +
+                                                       glm::length(shape.spin) * shape.bound) *
+                                                          dt_;
     auto probe = [&](const dvec3& at, double radius, int key, const dvec3& centre) {
         const ShapeSample s = sampleShape(shape, at);
         const double separation = s.distance - radius;
         if (separation >= reach) return;
         const dvec3 point = at - (radius + 0.5 * separation) * s.normal;
-        candidates_.push_back({point, flip ? -s.normal : s.normal, separation, offset + key, centre, flip});
+        candidates_.push_back(
+            {point, flip ? -s.normal : s.normal, separation, offset + key, centre, flip});
     };
     for (size_t k = 0; k < prober.probes.size(); ++k) {
         const dvec3 c = prober.pos + prober.orient * prober.probes[k].local;
@@ -381,9 +396,11 @@ void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bo
     const dvec3 axis = prober.orient * dvec3(0, 1, 0);
     for (size_t r = 0; r < prober.rims.size(); ++r) {
         const dvec3 c = prober.pos + prober.orient * prober.rims[r].centre;
-        const std::vector<dvec3> support = rimSupport(c, axis, prober.rims[r].radius, sampleShape(shape, c).normal);
+        const std::vector<dvec3> support =
+            rimSupport(c, axis, prober.rims[r].radius, sampleShape(shape, c).normal);
         for (size_t k = 0; k < support.size(); ++k)
-            probe(support[k], 0.0, int(prober.probes.size() + 4 * r + k), support.size() == 1 ? c : support[k]);
+            probe(support[k], 0.0, int(prober.probes.size() + 4 * r + k),
+                  support.size() == 1 ? c : support[k]);
     }
 }
 
@@ -392,8 +409,10 @@ void RigidBodies::collidePair(int i, int j) {
     candidates_.clear();
     const RigidBody &bi = bodies_[size_t(i)], &bj = bodies_[size_t(j)];
     if (bi.shape.type == ShapeType::Box && bj.shape.type == ShapeType::Box) {
-        const double reach = 4.0 * settings_.linearSlop + (glm::length(bi.vel - bj.vel) +
-                             glm::length(bi.spin) * bi.bound + glm::length(bj.spin) * bj.bound) * dt_;
+        const double reach = 4.0 * settings_.linearSlop +
+                             (glm::length(bi.vel - bj.vel) + glm::length(bi.spin) * bi.bound +
+                              glm::length(bj.spin) * bj.bound) *
+                                 dt_;
         for (const BoxContact& c : collideBoxes({bi.pos, bi.orient, dvec3(bi.shape.size)},
                                                 {bj.pos, bj.orient, dvec3(bj.shape.size)}, reach))
             candidates_.push_back({c.point, c.normal, c.separation, c.feature, c.point, false});
@@ -446,7 +465,8 @@ void RigidBodies::collideSphere(int i, PhysicsBody& sphere, int sphereIndex) {
     k.friction = std::sqrt(b.friction * worldFriction_);
     k.restitution = std::max(b.restitution, worldRestitution_);
     contacts_.push_back(k);
-    if (!sphere.awake && b.awake && glm::length(b.vel) > settings_.sleepSpeed) touching_[size_t(i)] |= 2;
+    if (!sphere.awake && b.awake && glm::length(b.vel) > settings_.sleepSpeed)
+        touching_[size_t(i)] |= 2;
     if (sphere.awake && glm::length(sphere.vel) > settings_.sleepSpeed) touching_[size_t(i)] |= 1;
 }
 
@@ -502,7 +522,8 @@ void RigidBodies::prepareFriction(Manifold& m) {
     f.a.anchor = a / double(count);
     f.b.anchor = b / double(count);
     f.twistArm = 0.0;
-    for (int i = m.begin; i < m.end; ++i) f.twistArm += glm::length(contacts_[size_t(i)].b.anchor - f.b.anchor) / count;
+    for (int i = m.begin; i < m.end; ++i)
+        f.twistArm += glm::length(contacts_[size_t(i)].b.anchor - f.b.anchor) / count;
     double k = 0.0;
     for (const ContactSide* s : {&f.a, &f.b})
         if (s->invMass > 0.0) k += glm::dot(f.normal, s->invInertia * f.normal);
@@ -559,7 +580,8 @@ void RigidBodies::solve(const Softness& soft, double h, bool useBias) {
     const int sweeps = useBias ? 1 : kSweeps;
     for (Manifold& m : manifolds_)
         for (int sweep = 0; sweep < sweeps; ++sweep) {
-            for (int i = m.begin; i < m.end; ++i) solveNormal(contacts_[size_t(i)], soft, h, useBias);
+            for (int i = m.begin; i < m.end; ++i)
+                solveNormal(contacts_[size_t(i)], soft, h, useBias);
             double pushed = 0.0;
             for (int i = m.begin; i < m.end; ++i) {
                 pushed += contacts_[size_t(i)].normalImpulse;
@@ -586,7 +608,8 @@ void RigidBodies::restitute(double threshold, double gravity) {
         for (int sweep = 0; sweep < kBounceSweeps; ++sweep)
             for (int i = m.begin; i < m.end; ++i) {
                 RigidContact& c = contacts_[size_t(i)];
-                if (c.relativeVelocity > -threshold || c.maxNormalImpulse == 0.0 || c.restitution == 0.0)
+                if (c.relativeVelocity > -threshold || c.maxNormalImpulse == 0.0 ||
+                    c.restitution == 0.0)
                     continue;
                 const Bounce b = bounceOf(c, accel, dt_);
                 rise = std::min(rise, b.rise);
@@ -651,7 +674,8 @@ void RigidBodies::integratePositions(double h, double gravity) {
     for (RigidBody& b : bodies_) {
         if (!b.awake) continue;
         dvec3 dx = b.vel * h;
-        if (exact && !b.supported) dx.y += 0.5 * gravity * h * h;  // v·h after v -= g·h, plus ½·g·h²
+        if (exact && !b.supported)
+            dx.y += 0.5 * gravity * h * h;  // v·h after v -= g·h, plus ½·g·h²
         b.pos += dx;
         b.delta += dx;
         rotateFree(b.orient, b.spin, b.inertia, h);
@@ -664,7 +688,8 @@ void RigidBodies::finishStep() {
     kept_.clear();
     for (const RigidContact& c : contacts_) kept_.emplace_back(c.key, c);
     for (const Manifold& m : manifolds_) kept_.emplace_back(m.friction.key, m.friction);
-    std::sort(kept_.begin(), kept_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::sort(kept_.begin(), kept_.end(),
+              [](const auto& x, const auto& y) { return x.first < y.first; });
     for (RigidBody& b : bodies_) b.delta = dvec3(0.0);
     updateSleep();
 }

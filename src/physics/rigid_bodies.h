@@ -41,24 +41,24 @@ struct RigidBody {
     double friction = 0.0, restitution = 0.0;  // the body's own, or the world's
     double sleepTime = 0.0;
     bool awake = true;
-    bool supported = false;                    // a contact pushed it this substep
-    int object = -1;                           // index in Scene::objects
-    SdfObject shape;                           // at the origin, unturned
+    bool supported = false;  // a contact pushed it this substep
+    int object = -1;         // index in Scene::objects
+    SdfObject shape;         // at the origin, unturned
     std::vector<Probe> probes;
     std::vector<Rim> rims;
 };
 
 // What a contact's impulses move on one side: a rigid body, a sphere, or nothing (static).
 struct ContactSide {
-    RigidBody* rigid = nullptr;            // where the side is a rigid body
+    RigidBody* rigid = nullptr;  // where the side is a rigid body
     glm::dvec3* vel = nullptr;
     glm::dvec3* spin = nullptr;
-    const glm::dvec3* delta = nullptr;     // displacement this step
-    const glm::dquat* orient = nullptr;    // null where the anchor does not turn with the body
+    const glm::dvec3* delta = nullptr;   // displacement this step
+    const glm::dquat* orient = nullptr;  // null where the anchor does not turn with the body
     bool* supported = nullptr;
     double invMass = 0.0;
     glm::dmat3 invInertia{0.0};
-    glm::dvec3 anchor{0.0};                // contact point − centre, world, at the step's start
+    glm::dvec3 anchor{0.0};  // contact point − centre, world, at the step's start
     // Where the anchor goes as the body turns: a point of the body (localAnchor, its frame) and
     // an offset that stays put in the world. A corner turns with the body (offset 0); a round
     // surface's contact stays below its centre, the probe's, which turns (offset −ρ·normal).
@@ -67,19 +67,19 @@ struct ContactSide {
 };
 
 struct RigidContact {
-    ContactSide a, b;                      // the normal points from a to b
-    std::uint64_t key = 0;                 // the pair and the probe, for warm starting
+    ContactSide a, b;       // the normal points from a to b
+    std::uint64_t key = 0;  // the pair and the probe, for warm starting
     glm::dvec3 normal{0.0, 1.0, 0.0};
     glm::dvec3 tangent[2];
-    double separation = 0.0;               // at the step's start; < 0 overlaps
-    double height = 0.0;                   // of its manifold's lowest point: solved bottom-up
+    double separation = 0.0;  // at the step's start; < 0 overlaps
+    double height = 0.0;      // of its manifold's lowest point: solved bottom-up
     double friction = 0.0, restitution = 0.0, rolling = 0.0, rollArm = 0.0, slop = 0.0;
     double normalMass = 0.0, tangentMass[2] = {0.0, 0.0};
     double normalImpulse = 0.0, maxNormalImpulse = 0.0;
     double tangentImpulse[2] = {0.0, 0.0};  // a manifold's friction only, as the twist
     glm::dvec3 rollImpulse{0.0};
     double twistImpulse = 0.0, twistMass = 0.0, twistArm = 0.0;  // a manifold's friction only
-    double relativeVelocity = 0.0;         // normal, at the step's start, for restitution
+    double relativeVelocity = 0.0;  // normal, at the step's start, for restitution
 };
 
 class RigidBodies {
@@ -97,18 +97,18 @@ public:
     void solve(const Softness& soft, double h, bool useBias);  // useBias false: the relax pass
     void integratePositions(double h, double gravity);
     void restitute(double threshold, double gravity);
-    void finishStep();                                 // keeps the impulses; sleep
-    void writeBack(Scene& scene) const;                // pos, orient, vel, spin
+    void finishStep();                   // keeps the impulses; sleep
+    void writeBack(Scene& scene) const;  // pos, orient, vel, spin
     double kineticEnergy() const;
     double potentialEnergy(double gravity) const;
-    double deepestOverlap() const;                     // m, at the last step's start
+    double deepestOverlap() const;  // m, at the last step's start
 
 private:
     struct Candidate {
         glm::dvec3 point, normal;  // normal from a to b
         double separation;
-        int probe;                 // key within the pair
-        glm::dvec3 centre;         // of the probe, which belongs to b, or to a where proberIsA
+        int probe;          // key within the pair
+        glm::dvec3 centre;  // of the probe, which belongs to b, or to a where proberIsA
         bool proberIsA;
     };
     void collideStatics(int i);

@@ -44,8 +44,8 @@ dvec3 cylinderInertia(double m, double r, double h) {
 dvec3 capsuleInertia(double m, double r, double h) {
     const double cylinderVolume = kPi * r * r * h, sphereVolume = 4.0 / 3.0 * kPi * r * r * r;
     const double mc = m * cylinderVolume / (cylinderVolume + sphereVolume), ms = m - mc;
-    const double across = mc * (3.0 * r * r + h * h) / 12.0
-                        + ms * (0.4 * r * r + 0.25 * h * h + 0.375 * h * r);
+    const double across =
+        mc * (3.0 * r * r + h * h) / 12.0 + ms * (0.4 * r * r + 0.25 * h * h + 0.375 * h * r);
     return dvec3(across, 0.5 * mc * r * r + 0.4 * ms * r * r, across);
 }
 
@@ -84,11 +84,11 @@ void flowAboutAxis(dquat& q, dvec3& bodyMomentum, const dvec3& inertia, int k, d
     const double sinAngle = 2.0 * s * c, cosAngle = 1.0 - 2.0 * s * s;
     const int i = (k + 1) % 3, j = (k + 2) % 3;  // (i, j, k) cyclic: turning i towards j is +
     const double li = bodyMomentum[i], lj = bodyMomentum[j];
-    bodyMomentum[i] = cosAngle * li + sinAngle * lj;   // turned by −angle
+    bodyMomentum[i] = cosAngle * li + sinAngle * lj;  // turned by −angle
     bodyMomentum[j] = cosAngle * lj - sinAngle * li;
     dvec3 axis(0.0);
     axis[k] = s;
-    q = q * dquat(c, axis);                            // turned by +angle, in the body frame
+    q = q * dquat(c, axis);  // turned by +angle, in the body frame
 }
 
 // Strang: outer(h/2) middle(h/2) inner(h) middle(h/2) outer(h/2), second order and symmetric.
@@ -116,11 +116,16 @@ std::array<int, 3> axisOrder(const dvec3& inertia) {
 MassProperties massProperties(const Object& o) {
     const double m = o.mass, r = o.radius, h = o.height;
     switch (o.type) {
-    case ShapeType::Sphere: return {m, sphereInertia(m, r)};
-    case ShapeType::Box: return {m, boxInertia(m, dvec3(o.size))};
-    case ShapeType::Torus: return {m, torusInertia(m, r, o.minor)};
-    case ShapeType::Capsule: return {m, capsuleInertia(m, r, h)};
-    case ShapeType::Cylinder: return {m, cylinderInertia(m, r, h)};
+        case ShapeType::Sphere:
+            return {m, sphereInertia(m, r)};
+        case ShapeType::Box:
+            return {m, boxInertia(m, dvec3(o.size))};
+        case ShapeType::Torus:
+            return {m, torusInertia(m, r, o.minor)};
+        case ShapeType::Capsule:
+            return {m, capsuleInertia(m, r, h)};
+        case ShapeType::Cylinder:
+            return {m, cylinderInertia(m, r, h)};
     }
     return {m, sphereInertia(m, r)};  // unreachable: the loader admits only the five shapes
 }

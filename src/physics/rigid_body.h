@@ -13,8 +13,8 @@
 namespace mb {
 
 struct MassProperties {
-    double mass;              // kg
-    glm::dvec3 inertia;       // principal moments about the local x, y, z axes, kg·m²
+    double mass;         // kg
+    glm::dvec3 inertia;  // principal moments about the local x, y, z axes, kg·m²
 };
 
 // Uniform density and total mass o.mass, from each shape's closed form (rigid_body.cpp).

@@ -37,20 +37,22 @@ std::vector<Probe> probesOf(const Object& o) {
     std::vector<Probe> probes;
     const double h = 0.5 * double(o.height);
     switch (o.type) {
-    case ShapeType::Sphere:
-        probes.push_back({dvec3(0.0), double(o.radius)});
-        break;
-    case ShapeType::Box:
-        probes = boxProbes(dvec3(o.size));
-        break;
-    case ShapeType::Capsule:  // the segment, every quarter: exact against flat faces at its ends
-        for (int k = 0; k <= 4; ++k) probes.push_back({dvec3(0.0, h * (k / 2.0 - 1.0), 0.0), double(o.radius)});
-        break;
-    case ShapeType::Cylinder:  // the rims alone, through rimSupport
-        break;
-    case ShapeType::Torus:  // the core circle, swept by the tube
-        addCircle(probes, 24, double(o.radius), 0.0, double(o.minor));
-        break;
+        case ShapeType::Sphere:
+            probes.push_back({dvec3(0.0), double(o.radius)});
+            break;
+        case ShapeType::Box:
+            probes = boxProbes(dvec3(o.size));
+            break;
+        case ShapeType::Capsule:  // the segment, every quarter: exact against flat faces at its
+                                  // ends
+            for (int k = 0; k <= 4; ++k)
+                probes.push_back({dvec3(0.0, h * (k / 2.0 - 1.0), 0.0), double(o.radius)});
+            break;
+        case ShapeType::Cylinder:  // the rims alone, through rimSupport
+            break;
+        case ShapeType::Torus:  // the core circle, swept by the tube
+            addCircle(probes, 24, double(o.radius), 0.0, double(o.minor));
+            break;
     }
     return probes;
 }
@@ -61,12 +63,14 @@ std::vector<Rim> rimsOf(const Object& o) {
     return {{dvec3(0.0, -h, 0.0), double(o.radius)}, {dvec3(0.0, h, 0.0), double(o.radius)}};
 }
 
-std::vector<dvec3> rimSupport(const dvec3& centre, const dvec3& axis, double radius, const dvec3& normal) {
+std::vector<dvec3> rimSupport(const dvec3& centre, const dvec3& axis, double radius,
+                              const dvec3& normal) {
     const dvec3 across = -normal + glm::dot(normal, axis) * axis;  // −normal, in the rim's plane
     const double len = glm::length(across);
     if (len > kFlat) return {centre + (radius / len) * across};
     // Flat: four points a quarter turn apart, from any direction across the axis.
-    const dvec3 u = glm::normalize(glm::cross(axis, std::abs(axis.x) < 0.57 ? dvec3(1, 0, 0) : dvec3(0, 1, 0)));
+    const dvec3 u =
+        glm::normalize(glm::cross(axis, std::abs(axis.x) < 0.57 ? dvec3(1, 0, 0) : dvec3(0, 1, 0)));
     const dvec3 v = glm::cross(axis, u);
     return {centre + radius * u, centre + radius * v, centre - radius * u, centre - radius * v};
 }

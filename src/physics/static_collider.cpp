@@ -42,8 +42,13 @@ StaticCollider::Bound StaticCollider::boundOf(const SdfObject& o) {
     // The float rotation may place a box a few ulps off: keep the bound below the true distance.
     constexpr double kRounding = 1e-5;
     const bool box = o.type == ShapeType::Box;
-    return {glm::dvec3(o.pos), glm::dmat3(o.toLocal), box ? glm::dvec3(o.size) : glm::dvec3(0.0),
-            box ? kRounding * o.bound : double(o.bound), 0.25 * o.blend, box, o.toLocal != glm::mat3(1.0f)};
+    return {glm::dvec3(o.pos),
+            glm::dmat3(o.toLocal),
+            box ? glm::dvec3(o.size) : glm::dvec3(0.0),
+            box ? kRounding * o.bound : double(o.bound),
+            0.25 * o.blend,
+            box,
+            o.toLocal != glm::mat3(1.0f)};
 }
 
 double StaticCollider::lowerBound(const Group& g, const glm::dvec3& p) const {
@@ -54,7 +59,8 @@ double StaticCollider::lowerBound(const Group& g, const glm::dvec3& p) const {
         const glm::dvec3 d = p - b.centre;
         const glm::dvec3 local = b.rotated ? b.toLocal * d : d;  // the same |components| either way
         // glm::abs and glm::max branch per axis; std::abs and std::max are an instruction each.
-        const glm::dvec3 outside{std::max(std::abs(local.x) - b.half.x, 0.0), std::max(std::abs(local.y) - b.half.y, 0.0),
+        const glm::dvec3 outside{std::max(std::abs(local.x) - b.half.x, 0.0),
+                                 std::max(std::abs(local.y) - b.half.y, 0.0),
                                  std::max(std::abs(local.z) - b.half.z, 0.0)};
         const double distance = b.box ? glm::length(outside) : glm::length(d);
         bound = std::min(bound, distance - b.less - b.grow);
@@ -71,7 +77,8 @@ void StaticCollider::localise(const Group& g, const glm::dvec3& origin, bool app
     }
 }
 
-void StaticCollider::localiseNear(const glm::dvec3& origin, const glm::dvec3& centre, double reach) {
+void StaticCollider::localiseNear(const glm::dvec3& origin, const glm::dvec3& centre,
+                                  double reach) {
     local_.objects.clear();
     for (const Group& g : groups_)
         if (lowerBound(g, centre) < reach) localise(g, origin, true);
@@ -92,7 +99,9 @@ void StaticCollider::query(int body, const glm::dvec3& centre, double radius, do
     if (size_t(body) >= clearance_.size()) clearance_.resize(size_t(body) + 1);
     Clearance& clear = clearance_[size_t(body)];
     const double slack = 1e-9 * (glm::length(centre) + std::abs(clear.distance) + 1.0);
-    if (clear.distance >= 0.0 && clear.distance - glm::length(centre - clear.at) - radius >= reach + slack) return;
+    if (clear.distance >= 0.0 &&
+        clear.distance - glm::length(centre - clear.at) - radius >= reach + slack)
+        return;
     clear = {centre, kInf};
     for (size_t g = 0; g < groups_.size(); ++g) {
         const double bound = lowerBound(groups_[g], centre);
@@ -150,9 +159,8 @@ double StaticCollider::cast(const glm::dvec3& from, const glm::dvec3& dir, doubl
     // Sphere tracing: an SDF is 1-Lipschitz, so stepping by (distance − radius) never carries the
     // centre closer than `radius` to any surface. A capped march stops short, which is safe.
     for (int i = 0; i < kMaxCastSteps; ++i) {
-        const double objects = local_.objects.empty()
-                                   ? kInf
-                                   : double(mapObjects(local_, glm::vec3(dir * t)).d);
+        const double objects =
+            local_.objects.empty() ? kInf : double(mapObjects(local_, glm::vec3(dir * t)).d);
         const double d = std::min(objects, groundDistance(from + dir * t)) - radius;
         if (d < tolerance) return t;
         t += d;
@@ -163,7 +171,8 @@ double StaticCollider::cast(const glm::dvec3& from, const glm::dvec3& dir, doubl
 
 double StaticCollider::distance(const glm::dvec3& p) {
     localiseNear(p, p, kInf);
-    const double objects = local_.objects.empty() ? kInf : double(mapObjects(local_, glm::vec3(0)).d);
+    const double objects =
+        local_.objects.empty() ? kInf : double(mapObjects(local_, glm::vec3(0)).d);
     return std::min(objects, groundDistance(p));
 }
 

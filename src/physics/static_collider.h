@@ -21,9 +21,9 @@
 namespace mb {
 
 struct StaticHit {
-    int feature;           // 0 the ground plane, g + 1 static group g
-    double separation;     // centre distance minus radius; negative when overlapping
-    glm::dvec3 normal;     // unit, out of the static surface towards the sphere
+    int feature;        // 0 the ground plane, g + 1 static group g
+    double separation;  // centre distance minus radius; negative when overlapping
+    glm::dvec3 normal;  // unit, out of the static surface towards the sphere
 };
 
 class StaticCollider {
@@ -34,8 +34,8 @@ public:
     // to the next: how far its groups were when last measured spares most calls measuring again.
     // `size`: the body's size, where its radius is no measure of it (a corner has radius 0): the
     // normal's difference step scales with the larger of the two.
-    void query(int body, const glm::dvec3& centre, double radius, double reach, std::vector<StaticHit>& out,
-               double size = 0.0);
+    void query(int body, const glm::dvec3& centre, double radius, double reach,
+               std::vector<StaticHit>& out, double size = 0.0);
 
     // One surface (StaticHit::feature, not the ground) seen from a sphere at `centre`.
     StaticHit hit(int feature, const glm::dvec3& centre, double radius);
@@ -43,7 +43,8 @@ public:
     // How far a sphere at `centre` moving by `move` ends from surface `feature`, less the linear
     // guess s + n·move from hit(): the surface's curvature along the move, 0 on a flat face,
     // < 0 where the surface curves towards the sphere (a bowl). For contacts that follow a curve.
-    double bend(int feature, const glm::dvec3& centre, const glm::dvec3& normal, const glm::dvec3& move);
+    double bend(int feature, const glm::dvec3& centre, const glm::dvec3& normal,
+                const glm::dvec3& move);
     // The largest bend() that float noise alone gives over a move of length `move`: the normal's
     // noise times the move, and the distances' rounding at the size of the group's objects.
     double bendNoise(int feature, double move) const;
@@ -56,17 +57,17 @@ public:
 
 private:
     struct Group {
-        int first, last;       // objects [first, last) of statics_
-        double size = 0.0;     // largest bounding radius of its objects, m
+        int first, last;    // objects [first, last) of statics_
+        double size = 0.0;  // largest bounding radius of its objects, m
     };
-    struct Bound {             // an object's shape lies within `less` of its box or centre
+    struct Bound {  // an object's shape lies within `less` of its box or centre
         glm::dvec3 centre;
         glm::dmat3 toLocal;
-        glm::dvec3 half;       // the box's half extents; 0 for a shape bound by a sphere
-        double less;           // the distance's shortfall: the sphere's radius, or rounding
-        double grow;           // what a smooth union adds, k/4
+        glm::dvec3 half;  // the box's half extents; 0 for a shape bound by a sphere
+        double less;      // the distance's shortfall: the sphere's radius, or rounding
+        double grow;      // what a smooth union adds, k/4
         bool box;
-        bool rotated;          // toLocal is not the identity (an upright box needs no product)
+        bool rotated;  // toLocal is not the identity (an upright box needs no product)
     };
     static Bound boundOf(const SdfObject& o);
     double lowerBound(const Group& g, const glm::dvec3& p) const;  // <= distance to the group
@@ -78,7 +79,7 @@ private:
     // The group localised at the centre, `d` its localDistance().
     StaticHit localHit(int group, double radius, double d, double size = 0.0) const;
 
-    struct Clearance {         // a lower bound on every group's distance from `at`
+    struct Clearance {  // a lower bound on every group's distance from `at`
         glm::dvec3 at{0.0};
         double distance = -1.0;  // none yet
     };
@@ -88,7 +89,7 @@ private:
     std::vector<Group> groups_;
     bool ground_ = true;
     double floor_ = 0.0;
-    SceneSdf local_;           // scratch: groups moved to a local origin
+    SceneSdf local_;  // scratch: groups moved to a local origin
 };
 
 }  // namespace mb

@@ -47,7 +47,8 @@ void Worker::post(void (*fn)(void*), void* arg) {
 
 void Worker::wait() {
     const unsigned target = posted_.load(std::memory_order_relaxed);
-    for (unsigned done; (done = done_.load(std::memory_order_acquire)) != target;) awaitChange(done_, done);
+    for (unsigned done; (done = done_.load(std::memory_order_acquire)) != target;)
+        awaitChange(done_, done);
 }
 
 void Worker::loop() {

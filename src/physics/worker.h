@@ -18,12 +18,16 @@ public:
     Worker& operator=(const Worker&) = delete;
 
     template <class Job>
-    void post(Job& job) { post(&call<Job>, &job); }  // runs job() on the worker; job must outlive wait()
-    void wait();                                     // until the posted job has returned
+    void post(Job& job) {
+        post(&call<Job>, &job);
+    }             // runs job() on the worker; job must outlive wait()
+    void wait();  // until the posted job has returned
 
 private:
     template <class Job>
-    static void call(void* job) { (*static_cast<Job*>(job))(); }
+    static void call(void* job) {
+        (*static_cast<Job*>(job))();
+    }
     void post(void (*fn)(void*), void* arg);
     void loop();
 

@@ -43,7 +43,7 @@ struct Hit {
     int object = kHitNone;
 };
 
-double field(const Model& m, dvec3 p);            // objects and ground: the scene's SDF
+double field(const Model& m, dvec3 p);  // objects and ground: the scene's SDF
 Hit firstHit(const Model& m, dvec3 origin, dvec3 dir);
 struct SurfaceNormal {
     dvec3 n{0, 1, 0};
@@ -53,7 +53,7 @@ SurfaceNormal normalAt(const Model& m, dvec3 p, int object);
 dvec3 liftOff(dvec3 p, dvec3 n, double epsilon);  // where secondary rays start
 // 0 blocked .. 1 free, towards a light `reach` away; hard or soft as the scene says.
 double visibility(const Model& m, dvec3 origin, dvec3 towards, double reach);
-double occlusion(const Model& m, dvec3 p, dvec3 n);  // 1 open .. 0 buried
+double occlusion(const Model& m, dvec3 p, dvec3 n);     // 1 open .. 0 buried
 double beyondEverything(const Model& m, dvec3 origin);  // past every object's bounding sphere
 
 // [reference_shade.cpp] light, mirrors

@@ -57,7 +57,8 @@ dvec3 clamp01(dvec3 c) { return glm::clamp(c, dvec3(0.0), dvec3(1.0)); }
 
 }  // namespace
 
-ReferenceImage renderReference(const Scene& scene, int width, int height, const ReferenceOptions& options) {
+ReferenceImage renderReference(const Scene& scene, int width, int height,
+                               const ReferenceOptions& options) {
     reference::Model m = reference::prepareModel(scene, options);
     CameraBasis basis = cameraBasis(scene.camera);
     dvec3 eye(basis.pos);
@@ -75,14 +76,17 @@ ReferenceImage renderReference(const Scene& scene, int width, int height, const 
             reference::PathResult centre;
             for (int b = 0; b < aa; ++b)
                 for (int a = 0; a < aa; ++a) {
-                    dvec3 dir = sampleRay(basis, x + (a + 0.5) / aa, y + (b + 0.5) / aa, width, height);
+                    dvec3 dir =
+                        sampleRay(basis, x + (a + 0.5) / aa, y + (b + 0.5) / aa, width, height);
                     reference::PathResult r = reference::tracePath(m, eye, dir);
                     sum += clamp01(r.color);
                     if (2 * a + 1 == aa && 2 * b + 1 == aa) centre = r;
                 }
             // Ids and regions belong to the pixel centre, where the GPU's id view looks; an even
             // aa has no sample there.
-            if (aa % 2 == 0) centre = reference::tracePath(m, eye, sampleRay(basis, x + 0.5, y + 0.5, width, height));
+            if (aa % 2 == 0)
+                centre =
+                    reference::tracePath(m, eye, sampleRay(basis, x + 0.5, y + 0.5, width, height));
             size_t i = img.index(x, row);
             img.rgb[i] = glm::vec3(sum / double(aa * aa));
             img.object[i] = centre.first.object;
@@ -92,7 +96,8 @@ ReferenceImage renderReference(const Scene& scene, int width, int height, const 
     return img;
 }
 
-ReferenceSample traceReference(const Scene& scene, dvec3 origin, dvec3 dir, const ReferenceOptions& options) {
+ReferenceSample traceReference(const Scene& scene, dvec3 origin, dvec3 dir,
+                               const ReferenceOptions& options) {
     reference::Model m = reference::prepareModel(scene, options);
     reference::PathResult r = reference::tracePath(m, origin, glm::normalize(dir));
     return {r.color, r.first.object, r.first.t};

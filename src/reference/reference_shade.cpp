@@ -38,9 +38,7 @@ SurfaceMaterial materialAt(const Model& m, dvec3 p, int object) {
 
 // ReferenceImage::region is FNV-1a over the events that make the colour jump: which surface,
 // which checker square, which lights face it and which of them a hard shadow blocks.
-void mixKey(uint64_t* key, uint64_t value) {
-    *key = (*key ^ value) * 1099511628211ull;
-}
+void mixKey(uint64_t* key, uint64_t value) { *key = (*key ^ value) * 1099511628211ull; }
 
 struct LightDirection {
     dvec3 l;       // unit, towards the light

@@ -10,10 +10,10 @@ namespace mb::reference {
 namespace {
 
 const dvec3 kZenith(0.30, 0.50, 0.85);
-const dvec3 kHorizon(0.80, 0.86, 0.92);  // before the tint
+const dvec3 kHorizon(0.80, 0.86, 0.92);    // before the tint
 const dvec3 kUnderside(0.35, 0.33, 0.30);  // what a ray below the horizon sees with no ground
 constexpr double kTintShare = 0.35;
-constexpr double kSkyHeight = 200.0;     // the sky is fogged as if it hung this high
+constexpr double kSkyHeight = 200.0;       // the sky is fogged as if it hung this high
 constexpr double kLowestElevation = 1e-3;  // keeps the sky's fog distance finite at the horizon
 
 // Sky colour by elevation e = sin(angle above the horizon): square roots make the colour

@@ -16,8 +16,8 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr int kMaxMarchSteps = 4096;
-constexpr int kMaxShadowSteps = 20000;   // tenth steps near surfaces take many; see softShadow
-constexpr double kHitTolerance = 1e-5;   // × max(1, |p|): a few float ulps of the mirror's input
+constexpr int kMaxShadowSteps = 20000;  // tenth steps near surfaces take many; see softShadow
+constexpr double kHitTolerance = 1e-5;  // × max(1, |p|): a few float ulps of the mirror's input
 constexpr int kBisections = 40;
 constexpr double kCreaseCosine = 0.999;  // 2.6 degrees
 
@@ -79,7 +79,8 @@ Hit firstHit(const Model& m, dvec3 o, dvec3 d) {
         return {true, 0.0, inObjects <= inGround ? objectAt(m, o) : kHitGround};
     Hit ground;
     if (m.sdf.ground && d.y < 0.0) ground = {true, inGround / -d.y, kHitGround};
-    Hit objects = m.sdf.objects.empty() ? Hit{} : marchObjects(m, o, d, ground.hit ? ground.t : kInfinity);
+    Hit objects =
+        m.sdf.objects.empty() ? Hit{} : marchObjects(m, o, d, ground.hit ? ground.t : kInfinity);
     return objects.hit ? objects : ground;
 }
 
@@ -157,9 +158,12 @@ double softShadow(const Model& m, dvec3 o, dvec3 l, double reach) {
 
 double visibility(const Model& m, dvec3 origin, dvec3 towards, double reach) {
     switch (m.scene->render.shadows) {
-    case 1: return hardShadow(m, origin, towards, reach);
-    case 2: return softShadow(m, origin, towards, reach);
-    default: return 1.0;
+        case 1:
+            return hardShadow(m, origin, towards, reach);
+        case 2:
+            return softShadow(m, origin, towards, reach);
+        default:
+            return 1.0;
     }
 }
 

@@ -29,21 +29,25 @@ constexpr double kZeroErrorDrawnAt = 1e-16;  // a log plot has no 0
 
 std::string slug(const std::string& name) {
     std::string s;
-    for (char c : name) s += std::isalnum(static_cast<unsigned char>(c)) ? char(std::tolower(c)) : '-';
+    for (char c : name)
+        s += std::isalnum(static_cast<unsigned char>(c)) ? char(std::tolower(c)) : '-';
     return s;
 }
 
 // One analytic case: a table row per variant and a plot with one line per sweep.
 std::string workPrecision(const AnalyticCase& c, const std::string& docs) {
     std::ostringstream md;
-    md << "### " << c.name << "\n\nError: " << c.error << ".\n\n![" << c.name << "](physics-" << slug(c.name)
-       << ".svg)\n\n| sweep | setting | run time per simulated s | error |\n| --- | --- | ---: | ---: |\n";
+    md << "### " << c.name << "\n\nError: " << c.error << ".\n\n![" << c.name << "](physics-"
+       << slug(c.name)
+       << ".svg)\n\n| sweep | setting | run time per simulated s | error |\n| --- | --- | ---: | "
+          "---: |\n";
     std::map<std::string, PlotSeries> series;
     std::vector<std::string> order;
     for (const Variant& v : reportVariants()) {
         const WorkPoint p = measureWork(c, v.settings);
-        md << "| " << v.series << " | " << v.label << " | " << fmt("%.3g µs", 1e6 * p.secondsPerSimSecond)
-           << " | " << fmt("%.3g", p.error) << " |\n";
+        md << "| " << v.series << " | " << v.label << " | "
+           << fmt("%.3g µs", 1e6 * p.secondsPerSimSecond) << " | " << fmt("%.3g", p.error)
+           << " |\n";
         if (!series.count(v.series)) order.push_back(v.series);
         series[v.series].name = v.series;
         const double drawn = std::max(p.error, kZeroErrorDrawnAt);
@@ -52,7 +56,7 @@ std::string workPrecision(const AnalyticCase& c, const std::string& docs) {
     std::vector<PlotSeries> plot;
     for (const std::string& name : order) plot.push_back(series[name]);
     writeTextFile(docs + "/physics-" + slug(c.name) + ".svg",
-              logLogPlotSvg(c.name, "run time per simulated second (s)", "error", plot));
+                  logLogPlotSvg(c.name, "run time per simulated second (s)", "error", plot));
     return md.str() + "\n";
 }
 
@@ -67,8 +71,8 @@ std::string extremeTable() {
     return md.str();
 }
 
-// src/report/bench/ builds bullet_bench beside this executable when Bullet was found; it prints its own
-// markdown, Marchbox and Bullet side by side.
+// src/report/bench/ builds bullet_bench beside this executable when Bullet was found; it prints its
+// own markdown, Marchbox and Bullet side by side.
 std::string bulletSection() {
     char self[4096];
     const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
@@ -76,7 +80,8 @@ std::string bulletSection() {
     std::string exe(self, size_t(n));
     exe = exe.substr(0, exe.rfind('/')) + "/bullet_bench";
     if (access(exe.c_str(), X_OK) != 0)
-        return "Bullet comparison not built (needs libbullet-dev, found through pkg-config `bullet`).\n";
+        return "Bullet comparison not built (needs libbullet-dev, found through pkg-config "
+               "`bullet`).\n";
     std::string out;
     if (FILE* pipe = popen(exe.c_str(), "r")) {
         char buf[4096];

@@ -84,7 +84,8 @@ double gasError(const PhysicsSettings& s) {
     return std::abs(w.kineticEnergy() / e0 - 1.0);
 }
 
-// A striker at 2 m/s into a touching row of four, e = 1: the last ball leaves at 2 m/s, the rest stop.
+// A striker at 2 m/s into a touching row of four, e = 1: the last ball leaves at 2 m/s, the rest
+// stop.
 double cradleError(const PhysicsSettings& s) {
     const double v = 2.0;
     PhysicsWorld w(cradleScene(4, float(v)), s);
@@ -125,20 +126,23 @@ double rampError(const PhysicsSettings& s, float degrees, float mu, float rollin
 }  // namespace
 
 std::vector<AnalyticCase> analyticCases() {
-    return {{"Free fall", "|y − exact| after 2 s, m", 2.0, freeFallError},
-            {"Bounce", "|third apex − e⁶·h|, m (h = 1 m, e = 0.8)", 3.0, bounceError},
-            {"Head-on collision", "max |v − exact| after impact, m/s (e = 0.5, 1:3)", 1.0, headOnError},
-            {"Slide to roll", "|x − exact| after 2 s, m (v0 = 5 m/s, μ = 0.3)", 2.0, slideError},
-            {"Spin to roll", "|v/(2/7·ω0·r) − 1| after 3 s (ω0 = 10 rad/s, r = 0.5 m, μ = 0.3)", 3.0, spinError},
-            {"Elastic gas", "|KE(30 s)/KE(0) − 1| of 64 spheres in a box (e = 1, μ = 0)", 30.0, gasError},
-            {"Newton's cradle", "max |v − exact| after 1 s, m/s (striker at 2 m/s, row of 4, e = 1)", 1.0,
-             cradleError},
-            {"Bowl", "max |E − E0| / swing energy over 10 periods (R = 1.5 m, r = 0.2 m, 20°, μ = 0)", 23.0,
-             bowlError},
-            {"Ramp roll", "|a/(5/7·g·(sin θ − c·cos θ)) − 1| from the distance in 1 s (30°, c = 0.1)", 1.0,
-             [](const PhysicsSettings& s) { return rampError(s, 30.0f, 0.5f, 0.1f, true); }},
-            {"Ramp slide", "|a/(g·(sin θ − μ·cos θ)) − 1| from the distance in 1 s (30°, μ = 0.1)", 1.0,
-             [](const PhysicsSettings& s) { return rampError(s, 30.0f, 0.1f, 0.02f, false); }}};
+    return {
+        {"Free fall", "|y − exact| after 2 s, m", 2.0, freeFallError},
+        {"Bounce", "|third apex − e⁶·h|, m (h = 1 m, e = 0.8)", 3.0, bounceError},
+        {"Head-on collision", "max |v − exact| after impact, m/s (e = 0.5, 1:3)", 1.0, headOnError},
+        {"Slide to roll", "|x − exact| after 2 s, m (v0 = 5 m/s, μ = 0.3)", 2.0, slideError},
+        {"Spin to roll", "|v/(2/7·ω0·r) − 1| after 3 s (ω0 = 10 rad/s, r = 0.5 m, μ = 0.3)", 3.0,
+         spinError},
+        {"Elastic gas", "|KE(30 s)/KE(0) − 1| of 64 spheres in a box (e = 1, μ = 0)", 30.0,
+         gasError},
+        {"Newton's cradle", "max |v − exact| after 1 s, m/s (striker at 2 m/s, row of 4, e = 1)",
+         1.0, cradleError},
+        {"Bowl", "max |E − E0| / swing energy over 10 periods (R = 1.5 m, r = 0.2 m, 20°, μ = 0)",
+         23.0, bowlError},
+        {"Ramp roll", "|a/(5/7·g·(sin θ − c·cos θ)) − 1| from the distance in 1 s (30°, c = 0.1)",
+         1.0, [](const PhysicsSettings& s) { return rampError(s, 30.0f, 0.5f, 0.1f, true); }},
+        {"Ramp slide", "|a/(g·(sin θ − μ·cos θ)) − 1| from the distance in 1 s (30°, μ = 0.1)", 1.0,
+         [](const PhysicsSettings& s) { return rampError(s, 30.0f, 0.1f, 0.02f, false); }}};
 }
 
 std::vector<Variant> reportVariants() {
@@ -149,7 +153,8 @@ std::vector<Variant> reportVariants() {
             PhysicsSettings s;
             s.dt = 1.0 / rate;
             s.integrator = integrator;
-            out.push_back({integrator == Integrator::ExactGravity ? "dt (exact gravity)" : "dt (symplectic Euler)",
+            out.push_back({integrator == Integrator::ExactGravity ? "dt (exact gravity)"
+                                                                  : "dt (symplectic Euler)",
                            "dt = 1/" + std::to_string(rate), s});
         }
     for (int substeps : {1, 2, 4, 8}) {
@@ -168,7 +173,8 @@ std::vector<Variant> reportVariants() {
         s.dt = 1.0 / rate;
         s.impacts = false;
         s.followCurves = false;
-        out.push_back({"dt (old: end-of-step bounce, step normals)", "dt = 1/" + std::to_string(rate), s});
+        out.push_back(
+            {"dt (old: end-of-step bounce, step normals)", "dt = 1/" + std::to_string(rate), s});
     }
     return out;
 }

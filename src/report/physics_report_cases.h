@@ -11,16 +11,16 @@
 namespace mb {
 
 struct AnalyticCase {
-    std::string name;        // "Free fall"
-    std::string error;       // what the error is, with units
-    double seconds;          // simulated time of one run
+    std::string name;                                   // "Free fall"
+    std::string error;                                  // what the error is, with units
+    double seconds;                                     // simulated time of one run
     std::function<double(const PhysicsSettings&)> run;  // one run: returns the error
 };
 std::vector<AnalyticCase> analyticCases();
 
 struct Variant {
-    std::string series;      // the sweep it belongs to: one plot line
-    std::string label;       // the swept value
+    std::string series;  // the sweep it belongs to: one plot line
+    std::string label;   // the swept value
     PhysicsSettings settings;
 };
 std::vector<Variant> reportVariants();
@@ -37,7 +37,7 @@ struct ExtremeResult {
     double maxPenetration = 0.0;  // m, deepest contact overlap seen
     double energyDrift = 0.0;     // (E_end − E_0) / |E_0|, kinetic + potential
     double msPerStep = 0.0;
-    std::string note;             // the pass criterion, or what was seen
+    std::string note;  // the pass criterion, or what was seen
 };
 std::vector<ExtremeResult> runExtremeSuite();
 

@@ -25,7 +25,8 @@ double totalEnergy(const PhysicsWorld& w) { return w.kineticEnergy() + w.potenti
 bool finite(const PhysicsWorld& w) {
     for (int i = 0; i < w.bodyCount(); ++i) {
         const PhysicsBody& b = w.body(i);
-        if (!std::isfinite(glm::dot(b.pos, b.pos) + glm::dot(b.vel, b.vel) + glm::dot(b.spin, b.spin)))
+        if (!std::isfinite(glm::dot(b.pos, b.pos) + glm::dot(b.vel, b.vel) +
+                           glm::dot(b.spin, b.spin)))
             return false;
     }
     return true;
@@ -65,40 +66,48 @@ void addStacks(std::vector<ExtremeResult>& out) {
     for (float ratio : {1e4f, 1e6f}) {
         char name[64];
         std::snprintf(name, sizeof name, "Heavy on light 1:%.0e in a well", double(ratio));
-        out.push_back(runCase(name, "heavy centre within 4 slops of 3r after 3 s", stackScene(ratio), {}, 3.0,
-                              [](const PhysicsWorld& w, const Track&) {
+        out.push_back(runCase(name, "heavy centre within 4 slops of 3r after 3 s",
+                              stackScene(ratio), {}, 3.0, [](const PhysicsWorld& w, const Track&) {
                                   return std::abs(w.body(1).pos.y - 3.0 * w.body(1).radius) <
                                          4.0 * w.settings().linearSlop;
                               }));
     }
     const double m2 = 1e6, v1 = 10, v2 = -1, e = 0.5, u = (v1 + m2 * v2) / (1 + m2);
-    out.push_back(runCase("Collision 1:1e6, e = 0.5", "both velocities exact to 1e-9",
-                          headOnScene(float(e), 1.0f, float(m2), float(v1), float(v2)), {}, 0.5,
-                          [=](const PhysicsWorld& w, const Track&) {
-                              return std::abs(w.body(0).vel.x - (u - e * m2 * (v1 - v2) / (1 + m2))) < 1e-8 &&
-                                     std::abs(w.body(1).vel.x - (u + e * (v1 - v2) / (1 + m2))) < 1e-8;
-                          }));
+    out.push_back(
+        runCase("Collision 1:1e6, e = 0.5", "both velocities exact to 1e-9",
+                headOnScene(float(e), 1.0f, float(m2), float(v1), float(v2)), {}, 0.5,
+                [=](const PhysicsWorld& w, const Track&) {
+                    return std::abs(w.body(0).vel.x - (u - e * m2 * (v1 - v2) / (1 + m2))) < 1e-8 &&
+                           std::abs(w.body(1).vel.x - (u + e * (v1 - v2) / (1 + m2))) < 1e-8;
+                }));
 }
 
 void addTunnelling(std::vector<ExtremeResult>& out) {
     for (float speed : {300.0f, 1000.0f})
         for (float angle : {0.0f, 45.0f, 80.0f}) {
             char name[64];
-            std::snprintf(name, sizeof name, "Tunnelling %.0f m/s at %.0f° into 2 cm", double(speed), double(angle));
-            out.push_back(runCase(name, "centre never crosses the plate", tunnelScene(speed, angle), {}, 0.1,
-                                  [](const PhysicsWorld&, const Track&) { return true; },
-                                  [](const PhysicsWorld& w) { return w.body(0).pos.z < 0.0; }));
+            std::snprintf(name, sizeof name, "Tunnelling %.0f m/s at %.0f° into 2 cm",
+                          double(speed), double(angle));
+            out.push_back(runCase(
+                name, "centre never crosses the plate", tunnelScene(speed, angle), {}, 0.1,
+                [](const PhysicsWorld&, const Track&) { return true; },
+                [](const PhysicsWorld& w) { return w.body(0).pos.z < 0.0; }));
         }
 }
 
 void addScales(std::vector<ExtremeResult>& out) {
-    const struct { const char* name; float radius, x; } cases[] = {
-        {"Resting r = 0.001 m", 0.001f, 0.0f}, {"Resting r = 1000 m", 1000.0f, 0.0f},
-        {"Resting r = 0.5 m at x = 1e5 m", 0.5f, 1e5f}, {"Resting r = 0.001 m at x = 1e5 m", 0.001f, 1e5f}};
+    const struct {
+        const char* name;
+        float radius, x;
+    } cases[] = {{"Resting r = 0.001 m", 0.001f, 0.0f},
+                 {"Resting r = 1000 m", 1000.0f, 0.0f},
+                 {"Resting r = 0.5 m at x = 1e5 m", 0.5f, 1e5f},
+                 {"Resting r = 0.001 m at x = 1e5 m", 0.001f, 1e5f}};
     for (const auto& c : cases) {
         const double r = c.radius, x = c.x;
         out.push_back(runCase(c.name, "within the slop of y = r, x unmoved, asleep after 2 s",
-                              restingScene(c.radius, c.x), {}, 2.0, [=](const PhysicsWorld& w, const Track&) {
+                              restingScene(c.radius, c.x), {}, 2.0,
+                              [=](const PhysicsWorld& w, const Track&) {
                                   const PhysicsBody& b = w.body(0);
                                   return std::abs(b.pos.y - r) <= std::min(0.005, 0.05 * r) &&
                                          std::abs(b.pos.x - x) < 1e-6 && !b.awake;
@@ -108,12 +117,18 @@ void addScales(std::vector<ExtremeResult>& out) {
 
 void addCrowds(std::vector<ExtremeResult>& out) {
     out.push_back(runCase("Pile of 200, 8 s", "asleep, no energy gain", pileScene(200, 7), {}, 8.0,
-                          [](const PhysicsWorld& w, const Track& t) { return noEnergyGain(t) && w.stats().awake == 0; }));
-    out.push_back(runCase("Elastic gas of 64, 30 s", "kinetic energy within 0.5 %", gasScene(64, 3), {}, 30.0,
-                          [](const PhysicsWorld&, const Track& t) { return std::abs(t.eEnd - t.e0) < 0.005 * t.e0; }));
-    out.push_back(runCase("Pile of 1,000, first 1.5 s", "no energy gain (timing: all awake)", pileScene(1000, 7), {}, 1.5,
+                          [](const PhysicsWorld& w, const Track& t) {
+                              return noEnergyGain(t) && w.stats().awake == 0;
+                          }));
+    out.push_back(runCase("Elastic gas of 64, 30 s", "kinetic energy within 0.5 %", gasScene(64, 3),
+                          {}, 30.0, [](const PhysicsWorld&, const Track& t) {
+                              return std::abs(t.eEnd - t.e0) < 0.005 * t.e0;
+                          }));
+    out.push_back(runCase("Pile of 1,000, first 1.5 s", "no energy gain (timing: all awake)",
+                          pileScene(1000, 7), {}, 1.5,
                           [](const PhysicsWorld&, const Track& t) { return noEnergyGain(t); }));
-    out.push_back(runCase("Pile of 10,000, first 1.5 s", "no energy gain (timing: all awake)", pileScene(10000, 7), {}, 1.5,
+    out.push_back(runCase("Pile of 10,000, first 1.5 s", "no energy gain (timing: all awake)",
+                          pileScene(10000, 7), {}, 1.5,
                           [](const PhysicsWorld&, const Track& t) { return noEnergyGain(t); }));
 }
 

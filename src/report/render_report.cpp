@@ -43,7 +43,8 @@ double drawMs(Renderer& r, int w, int h) {
 
 // The fastest of kFrames frames after a warm-up frame: other work on the machine only ever
 // adds time. A frame slower than a second is timed once. Negative when it cannot be drawn.
-double frameMs(Renderer& r, const Scene& scene, const RenderOptions& o, int w = kWidth, int h = kHeight) {
+double frameMs(Renderer& r, const Scene& scene, const RenderOptions& o, int w = kWidth,
+               int h = kHeight) {
     std::string error;
     if (!r.setScene(scene, o, &error)) return -1;
     double best = drawMs(r, w, h);
@@ -77,7 +78,8 @@ bool loadExample(const std::filesystem::path& file, Scene* scene) {
     std::vector<std::string> errors;
     return loadScene(file.string(), scene, &errors);
 }
-bool loadExample(const std::string& root, const std::string& name, Scene* scene) {  // scenes/NAME.txt
+bool loadExample(const std::string& root, const std::string& name,
+                 Scene* scene) {  // scenes/NAME.txt
     return loadExample(root + "/scenes/" + name + ".txt", scene);
 }
 
@@ -91,7 +93,8 @@ std::string uberTable(Renderer& r, const std::string& root) {
         double ub = frameMs(r, s, uber());
         double diff = diffImages(specImage, readFramebuffer(kWidth, kHeight)).meanAbs;
         md << "| " << name << " | " << s.objects.size() << " | " << fmt("%.1f", spec) << " | "
-           << fmt("%.1f", ub) << " | " << fmt("%.2f", ub / spec) << " | " << fmt("%.2f", diff) << " |\n";
+           << fmt("%.1f", ub) << " | " << fmt("%.2f", ub / spec) << " | " << fmt("%.2f", diff)
+           << " |\n";
     };
     for (const auto& path : sceneFiles(root)) {
         Scene s;
@@ -126,7 +129,8 @@ std::string scalingTable(Renderer& r, const std::string& docs) {
     std::ostringstream md;
     md << "| spheres | uber ms | specialised, no grid ms | specialised + grid ms |\n"
           "| ---: | ---: | ---: | ---: |\n";
-    PlotSeries seriesUber{"uber", {}, true, {}}, seriesFlat{"specialised", {}, true, {}}, seriesGrid{"specialised + grid", {}, true, {}};
+    PlotSeries seriesUber{"uber", {}, true, {}}, seriesFlat{"specialised", {}, true, {}},
+        seriesGrid{"specialised + grid", {}, true, {}};
     // A variant past 20 s a frame is not timed at larger counts: it only gets slower.
     double lastFlat = 0;
     for (int n : {1, 10, 32, 64, 100, 1000, 4096}) {
@@ -134,15 +138,18 @@ std::string scalingTable(Renderer& r, const std::string& docs) {
         double ub = frameMs(r, s, uber()), grid = frameMs(r, s, specialised(1));
         double flat = lastFlat > 20000 ? -2 : frameMs(r, s, specialised(0));
         lastFlat = flat;
-        auto cell = [](double v) { return v == -2 ? std::string("> 20 s") : v < 0 ? std::string("n/a") : fmt("%.1f", v); };
-        md << "| " << n << " | " << cell(ub) << " | " << cell(flat) << " | " << cell(grid) << " |\n";
+        auto cell = [](double v) {
+            return v == -2 ? std::string("> 20 s") : v < 0 ? std::string("n/a") : fmt("%.1f", v);
+        };
+        md << "| " << n << " | " << cell(ub) << " | " << cell(flat) << " | " << cell(grid)
+           << " |\n";
         if (ub > 0) seriesUber.points.emplace_back(n, ub);
         if (flat > 0) seriesFlat.points.emplace_back(n, flat);
         seriesGrid.points.emplace_back(n, grid);
     }
     writeTextFile(docs + "/render-scaling.svg",
-                  logLogPlotSvg("Frame time against sphere count (480x270)", "spheres", "frame time (ms)",
-                                {seriesUber, seriesFlat, seriesGrid}));
+                  logLogPlotSvg("Frame time against sphere count (480x270)", "spheres",
+                                "frame time (ms)", {seriesUber, seriesFlat, seriesGrid}));
     return md.str();
 }
 
@@ -189,8 +196,8 @@ Image downsample(const Image& big, int n) {
 
 // Draws every variant once (compiling, warming up, and keeping the image), then kFrames rounds
 // in which each variant draws one timed frame in turn.
-std::vector<Result> measure(Renderer& r, const std::vector<Variant>& variants, const Image& reference,
-                            int w, int h) {
+std::vector<Result> measure(Renderer& r, const std::vector<Variant>& variants,
+                            const Image& reference, int w, int h) {
     std::vector<Result> out;
     std::vector<std::vector<double>> ms(variants.size());
     std::string error;
@@ -246,13 +253,15 @@ std::string resultTable(const std::vector<Result>& all, const Result* baseline) 
     md << "| sweep | setting | median ms | min–max ms | speed-up | PSNR dB | Pareto |\n"
           "| --- | --- | ---: | ---: | ---: | ---: | :---: |\n";
     for (const Result& m : all)
-        md << "| " << m.variant.sweep << " | " << m.variant.label << " | " << timeCells(m.time) << " | "
-           << (baseline ? fmt("%.2fx", baseline->time.median / m.time.median) : std::string("")) << " | "
-           << dB(m.error) << " | " << (onFront(m, all) ? "yes" : "") << " |\n";
+        md << "| " << m.variant.sweep << " | " << m.variant.label << " | " << timeCells(m.time)
+           << " | "
+           << (baseline ? fmt("%.2fx", baseline->time.median / m.time.median) : std::string(""))
+           << " | " << dB(m.error) << " | " << (onFront(m, all) ? "yes" : "") << " |\n";
     return md.str();
 }
 
-void plotResults(const std::string& path, const std::string& title, const std::vector<Result>& all) {
+void plotResults(const std::string& path, const std::string& title,
+                 const std::vector<Result>& all) {
     PlotSeries points{"settings", {}, false, {}}, front{"Pareto front", {}, true, {}};
     std::vector<const Result*> sorted;
     for (const Result& m : all) {
@@ -260,12 +269,12 @@ void plotResults(const std::string& path, const std::string& title, const std::v
         points.xSpread.emplace_back(m.time.min, m.time.max);
         if (onFront(m, all)) sorted.push_back(&m);
     }
-    std::sort(sorted.begin(), sorted.end(), [](auto* a, auto* b) { return a->time.median < b->time.median; });
+    std::sort(sorted.begin(), sorted.end(),
+              [](auto* a, auto* b) { return a->time.median < b->time.median; });
     for (const Result* m : sorted) front.points.emplace_back(m->time.median, m->error);
     writeTextFile(path, logLogPlotSvg(title, "frame time (ms), median with min–max whiskers",
                                       "RMSE against reference (0-255)", {points, front}));
 }
-
 
 // The marching sweeps: each row changes one setting of the scene as written, then the presets.
 std::vector<Variant> marchingVariants(const Scene& scene) {
@@ -276,27 +285,34 @@ std::vector<Variant> marchingVariants(const Scene& scene) {
         out.push_back(v);
     };
     const RenderSettings& r = scene.render;
-    add("as written", "steps " + std::to_string(r.steps) + ", epsilon " + fmt("%g", r.epsilon), [](auto&, auto&) {});
+    add("as written", "steps " + std::to_string(r.steps) + ", epsilon " + fmt("%g", r.epsilon),
+        [](auto&, auto&) {});
     for (int steps : {32, 64, 128, 512})
-        if (steps != r.steps) add("steps", std::to_string(steps), [=](RenderSettings& s, auto&) { s.steps = steps; });
+        if (steps != r.steps)
+            add("steps", std::to_string(steps), [=](RenderSettings& s, auto&) { s.steps = steps; });
     for (float eps : {1e-2f, 3e-3f, 1e-4f})
         add("epsilon", fmt("%g", eps), [=](RenderSettings& s, auto&) { s.epsilon = eps; });
     for (int relax : {120, 150})
-        add("relaxation", fmt("%.2f", relax / 100.0), [=](auto&, RenderQuality& q) { q.relaxPercent = relax; });
+        add("relaxation", fmt("%.2f", relax / 100.0),
+            [=](auto&, RenderQuality& q) { q.relaxPercent = relax; });
     if (r.shadows)
         for (int shadow : {16, 32, 64, 256})
-            add("shadow steps", std::to_string(shadow), [=](auto&, RenderQuality& q) { q.shadowSteps = shadow; });
+            add("shadow steps", std::to_string(shadow),
+                [=](auto&, RenderQuality& q) { q.shadowSteps = shadow; });
     add("cone epsilon", "on", [](auto&, RenderQuality& q) { q.coneEpsilon = true; });
     if (r.shadows && scene.lights.size() > 1)
-        add("shadow casters", "lights >= 0.5 of the brightest", [](auto&, RenderQuality& q) { q.shadowCutoff = 0.5f; });
+        add("shadow casters", "lights >= 0.5 of the brightest",
+            [](auto&, RenderQuality& q) { q.shadowCutoff = 0.5f; });
     if (r.shadows) add("shadows", "none", [](RenderSettings& s, auto&) { s.shadows = 0; });
     for (int refl = 0; refl < std::min(r.reflections, 2); ++refl)
-        add("reflections", std::to_string(refl), [=](RenderSettings& s, auto&) { s.reflections = refl; });
-    add("pixels shaded", "half, checkerboard", [](auto&, RenderQuality& q) { q.checkerboard = true; });
+        add("reflections", std::to_string(refl),
+            [=](RenderSettings& s, auto&) { s.reflections = refl; });
+    add("pixels shaded", "half, checkerboard",
+        [](auto&, RenderQuality& q) { q.checkerboard = true; });
     for (QualityPreset p : {QualityPreset::Draft, QualityPreset::Final}) {
         Variant v{"preset", std::string(qualityPresetName(p)) + " (marching only)", scene, {}};
         applyQualityPreset(p, &v.scene.render, &v.options);
-        v.scene.render.aa = scene.render.aa;  // sampling belongs to the aliasing sweep
+        v.scene.render.aa = scene.render.aa;     // sampling belongs to the aliasing sweep
         v.options.quality.checkerboard = false;  // and pixels to their own row
         out.push_back(v);
     }
@@ -305,10 +321,13 @@ std::vector<Variant> marchingVariants(const Scene& scene) {
 
 // Where a frame's time goes: the debug views draw the primary march alone (id) and with the
 // normal (normals); each other column leaves one part out. Times only: no picture is judged.
-std::string costSection(Renderer& r, const std::vector<std::string>& names, const std::string& root) {
+std::string costSection(Renderer& r, const std::vector<std::string>& names,
+                        const std::string& root) {
     std::ostringstream md;
-    md << "| scene | as written ms | primary march only (id view) | + normal (normals view) | no shadows | "
-          "no reflections | no shadows, no reflections |\n| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+    md << "| scene | as written ms | primary march only (id view) | + normal (normals view) | no "
+          "shadows | "
+          "no reflections | no shadows, no reflections |\n| --- | ---: | ---: | ---: | ---: | ---: "
+          "| ---: |\n";
     for (const std::string& name : names) {
         std::cerr << "render report: cost, " << name << '\n';
         Scene scene;
@@ -321,27 +340,30 @@ std::string costSection(Renderer& r, const std::vector<std::string>& names, cons
         std::vector<Result> all = measure(r, v, makeImage(kWidth, kHeight), kWidth, kHeight);
         md << "| " << name << " | " << fmt("%.1f", all[0].time.median);
         for (size_t i = 1; i < all.size(); ++i)
-            md << " | " << fmt("%.1f", all[i].time.median) << " (" << fmt("%.0f%%", 100 * all[i].time.median / all[0].time.median) << ")";
+            md << " | " << fmt("%.1f", all[i].time.median) << " ("
+               << fmt("%.0f%%", 100 * all[i].time.median / all[0].time.median) << ")";
         md << " |\n";
     }
     return md.str();
 }
 
-std::string marchingSection(Renderer& r, const std::string& name, const Scene& scene, const std::string& docs,
-                            std::string* verdict) {
+std::string marchingSection(Renderer& r, const std::string& name, const Scene& scene,
+                            const std::string& docs, std::string* verdict) {
     std::cerr << "render report: marching, " << name << '\n';
     Image reference = renderImage(r, converged(scene), {}, kWidth, kHeight);
     std::vector<Result> all = measure(r, marchingVariants(scene), reference, kWidth, kHeight);
     const std::string svg = "render-precision-" + name + ".svg";
-    plotResults(docs + "/" + svg, "Marching error against frame time, " + name + ".txt (" +
-                std::to_string(kWidth) + "x" + std::to_string(kHeight) + ")", all);
+    plotResults(docs + "/" + svg,
+                "Marching error against frame time, " + name + ".txt (" + std::to_string(kWidth) +
+                    "x" + std::to_string(kHeight) + ")",
+                all);
     const Result& asWritten = all.front();
     const Result* draft = nullptr;
     for (const Result& m : all)
         if (m.variant.label.rfind("draft", 0) == 0) draft = &m;
     *verdict = "| " + name + " | " + dB(asWritten.error) + " | " +
-               fmt("%.2fx", asWritten.time.median / draft->time.median) + " | " +
-               dB(draft->error) + " |\n";
+               fmt("%.2fx", asWritten.time.median / draft->time.median) + " | " + dB(draft->error) +
+               " |\n";
     return "### " + name + "\n\n![" + name + "](" + svg + ")\n\n" + resultTable(all, &asWritten);
 }
 
@@ -368,9 +390,11 @@ std::string aliasingSection(Renderer& r, const std::string& name, const Scene& s
 
 // Example scenes, each as written against draft, normal and final, all three
 // against one reference: converged marching at 4x4 supersampling.
-std::string presetSection(Renderer& r, const std::vector<std::string>& names, const std::string& root) {
+std::string presetSection(Renderer& r, const std::vector<std::string>& names,
+                          const std::string& root) {
     std::ostringstream md;
-    md << "| scene | preset | median ms | min–max ms | speed-up | PSNR dB against converged, same aa | "
+    md << "| scene | preset | median ms | min–max ms | speed-up | PSNR dB against converged, same "
+          "aa | "
           "PSNR dB against converged 4x4 |\n| --- | --- | ---: | ---: | ---: | ---: | ---: |\n";
     for (const std::string& name : names) {
         std::cerr << "render report: presets, " << name << '\n';
@@ -391,10 +415,11 @@ std::string presetSection(Renderer& r, const std::vector<std::string>& names, co
         }
         std::vector<Result> all = measure(r, variants, reference4, kWidth, kHeight);
         for (size_t i = 0; i < all.size(); ++i) {
-            double same = rmse(renderImage(r, variants[i].scene, variants[i].options, kWidth, kHeight), sameAa[i]);
-            md << "| " << name << " | " << all[i].variant.label << " | " << timeCells(all[i].time) << " | "
-               << fmt("%.2fx", all[1].time.median / all[i].time.median) << " | " << dB(same)
-               << " | " << dB(all[i].error) << " |\n";
+            double same = rmse(
+                renderImage(r, variants[i].scene, variants[i].options, kWidth, kHeight), sameAa[i]);
+            md << "| " << name << " | " << all[i].variant.label << " | " << timeCells(all[i].time)
+               << " | " << fmt("%.2fx", all[1].time.median / all[i].time.median) << " | "
+               << dB(same) << " | " << dB(all[i].error) << " |\n";
         }
     }
     return md.str();
@@ -419,15 +444,18 @@ std::string draftSection(Renderer& r, const std::string& root, int* passing, int
         *passing += speedUp >= kDraftSpeedUp && db >= kDraftDb;
         ++*scenes;
         md << "| " << path.stem().string() << " | " << fmt("%.1f", all[0].time.median) << " | "
-           << timeCells(all[1].time) << " | " << fmt("%.2fx", speedUp) << " | " << fmt("%.1f", db) << " |\n";
+           << timeCells(all[1].time) << " | " << fmt("%.2fx", speedUp) << " | " << fmt("%.1f", db)
+           << " |\n";
     }
     return md.str();
 }
 
 std::string presetSettingsTable() {
     std::ostringstream md;
-    md << "| preset | march steps | epsilon | reflections | supersampling | shadow steps | cone epsilon | "
-          "shadows cast by | pixels shaded |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    md << "| preset | march steps | epsilon | reflections | supersampling | shadow steps | cone "
+          "epsilon | "
+          "shadows cast by | pixels shaded |\n| --- | --- | --- | --- | --- | --- | --- | --- | "
+          "--- |\n";
     auto cap = [](const char* what, double lo, double hi, const char* fmtText) {
         if (lo > 0 && hi > 0) return std::string("as written");
         if (hi > 0) return std::string("at most ") + fmt(fmtText, hi);
@@ -438,13 +466,18 @@ std::string presetSettingsTable() {
         const QualityPresetSettings& s = qualityPresetSettings(QualityPreset(p));
         md << "| " << s.name << " | " << cap("as written", s.minSteps, s.maxSteps, "%g") << " | "
            << cap("as written", s.minEpsilon, s.maxEpsilon, "%g") << " | "
-           << (s.maxReflections >= 0 ? "at most " + std::to_string(s.maxReflections) : std::string("as written"))
-           << " | " << cap("as written", s.minAa, s.maxAa, "%g") << (s.minAa + s.maxAa ? " per axis" : "")
-           << " | " << (s.shadowSteps ? std::to_string(s.shadowSteps) : std::string("128")) << " | "
+           << (s.maxReflections >= 0 ? "at most " + std::to_string(s.maxReflections)
+                                     : std::string("as written"))
+           << " | " << cap("as written", s.minAa, s.maxAa, "%g")
+           << (s.minAa + s.maxAa ? " per axis" : "") << " | "
+           << (s.shadowSteps ? std::to_string(s.shadowSteps) : std::string("128")) << " | "
            << (s.coneEpsilon ? "on" : "off") << " | "
-           << (s.shadowCutoff > 0 ? "lights at least " + fmt("%g", s.shadowCutoff) + " as bright as the brightest"
-                                  : std::string("every light"))
-           << " | " << (s.checkerboard ? "half, in a checkerboard; the rest filled in" : "every one") << " |\n";
+           << (s.shadowCutoff > 0
+                   ? "lights at least " + fmt("%g", s.shadowCutoff) + " as bright as the brightest"
+                   : std::string("every light"))
+           << " | "
+           << (s.checkerboard ? "half, in a checkerboard; the rest filled in" : "every one")
+           << " |\n";
     }
     return md.str();
 }
@@ -461,8 +494,10 @@ void marchingSections(Renderer& r, const std::vector<std::string>& names, const 
         verdicts += verdict;
     }
     (*v)["marching_sections"] = sections;
-    (*v)["marching_summary"] = "| scene | as written dB | draft speed-up | draft dB |\n"
-                               "| --- | ---: | ---: | ---: |\n" + verdicts;
+    (*v)["marching_summary"] =
+        "| scene | as written dB | draft speed-up | draft dB |\n"
+        "| --- | ---: | ---: | ---: |\n" +
+        verdicts;
 }
 
 std::string aliasingSections(Renderer& r, const std::vector<std::string>& names,

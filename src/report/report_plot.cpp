@@ -62,28 +62,31 @@ void drawSeries(std::ostringstream& svg, const PlotSeries& s, const char* colour
         if (vx <= 0.0 || vy <= 0.0) continue;
         const double px = x.map(vx, x0, x1), py = y.map(vy, y0, y1);
         if (i < s.xSpread.size() && s.xSpread[i].first > 0.0) {
-            const double lo = x.map(s.xSpread[i].first, x0, x1), hi = x.map(s.xSpread[i].second, x0, x1);
-            svg << "<path d='M" << lo << ',' << py - 3 << "v6M" << lo << ',' << py << "H" << hi << "M" << hi << ','
-                << py - 3 << "v6' stroke='" << colour << "' fill='none'/>\n";
+            const double lo = x.map(s.xSpread[i].first, x0, x1),
+                         hi = x.map(s.xSpread[i].second, x0, x1);
+            svg << "<path d='M" << lo << ',' << py - 3 << "v6M" << lo << ',' << py << "H" << hi
+                << "M" << hi << ',' << py - 3 << "v6' stroke='" << colour << "' fill='none'/>\n";
         }
         line << px << ',' << py << ' ';
         svg << "<circle cx='" << px << "' cy='" << py << "' r='3.5' fill='" << colour << "'/>\n";
     }
-    if (s.line) svg << "<polyline points='" << line.str() << "' fill='none' stroke='" << colour << "'/>\n";
+    if (s.line)
+        svg << "<polyline points='" << line.str() << "' fill='none' stroke='" << colour << "'/>\n";
     const double ly = kTop + 16 + 20 * index;
-    svg << "<line x1='" << x1 + 12 << "' y1='" << ly - 4 << "' x2='" << x1 + 32 << "' y2='" << ly - 4
-        << "' stroke='" << colour << "' stroke-width='2'/><text x='" << x1 + 38 << "' y='" << ly << "'>"
-        << s.name << "</text>\n";
+    svg << "<line x1='" << x1 + 12 << "' y1='" << ly - 4 << "' x2='" << x1 + 32 << "' y2='"
+        << ly - 4 << "' stroke='" << colour << "' stroke-width='2'/><text x='" << x1 + 38 << "' y='"
+        << ly << "'>" << s.name << "</text>\n";
 }
 
 }  // namespace
 
-std::string logLogPlotSvg(const std::string& title, const std::string& xLabel, const std::string& yLabel,
-                          const std::vector<PlotSeries>& series) {
+std::string logLogPlotSvg(const std::string& title, const std::string& xLabel,
+                          const std::string& yLabel, const std::vector<PlotSeries>& series) {
     const Decades x = decadesOf(series, true), y = decadesOf(series, false);
     std::ostringstream svg;
     svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << kWidth << "' height='" << kHeight
-        << "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n";
+        << "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' "
+           "fill='white'/>\n";
     svg << "<text x='" << kLeft << "' y='24' font-size='15'>" << title << "</text>\n";
     drawAxes(svg, x, y);
     for (size_t i = 0; i < series.size(); ++i)

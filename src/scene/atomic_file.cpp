@@ -27,7 +27,11 @@ const FileOps& posixOps() {
     // ::open is variadic; the table's fixed signature needs a wrapper.
     static const FileOps ops{
         [](const char* path, int flags, mode_t mode) { return ::open(path, flags, mode); },
-        ::write, ::fsync, ::close, ::rename, ::unlink};
+        ::write,
+        ::fsync,
+        ::close,
+        ::rename,
+        ::unlink};
     return ops;
 }
 
@@ -38,8 +42,8 @@ namespace {
 int createTemp(const std::string& path, mode_t mode, std::string* tmp) {
     static std::atomic<unsigned> counter{0};
     for (int attempt = 0; attempt < 100; ++attempt) {
-        std::string name = path + ".tmp" + std::to_string(::getpid()) + "." +
-                           std::to_string(counter++);
+        std::string name =
+            path + ".tmp" + std::to_string(::getpid()) + "." + std::to_string(counter++);
         int fd = fileOps().open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, mode);
         if (fd >= 0) *tmp = name;
         if (fd >= 0 || errno != EEXIST) return fd;
@@ -103,11 +107,14 @@ public:
     TerminationHeld() : lock_(mutex()) {
         pending() = 0;
         struct sigaction hold {};
-        hold.sa_handler = [](int sig) { if (!pending()) pending() = sig; };
+        hold.sa_handler = [](int sig) {
+            if (!pending()) pending() = sig;
+        };
         sigemptyset(&hold.sa_mask);
         for (int i = 0; i < kCount; ++i) {
             sigaction(kSignals[i], nullptr, &saved_[i]);
-            held_[i] = saved_[i].sa_handler == SIG_DFL && sigaction(kSignals[i], &hold, nullptr) == 0;
+            held_[i] =
+                saved_[i].sa_handler == SIG_DFL && sigaction(kSignals[i], &hold, nullptr) == 0;
         }
     }
     ~TerminationHeld() {

@@ -24,7 +24,8 @@ void sizeGrid(ObjectGrid* g, const Box& b, size_t objects, float objectsPerCell)
     // Cubic cells whose count matches `cells` for this extent; flat scenes get one layer.
     float side = std::cbrt(extent.x * extent.y * extent.z / cells);
     for (int a = 0; a < 3; ++a)
-        g->dims[a] = std::clamp(int(std::ceil(extent[a] / std::max(side, 1e-6f))), 1, kGridMaxCellsPerAxis);
+        g->dims[a] =
+            std::clamp(int(std::ceil(extent[a] / std::max(side, 1e-6f))), 1, kGridMaxCellsPerAxis);
     g->origin = b.lo;
     g->cellSize = extent / glm::vec3(g->dims);
 }
@@ -54,7 +55,8 @@ ObjectGrid buildObjectGrid(const SceneSdf& sdf, float objectsPerCell) {
             addIntersection(g, o, i, &lists);
             continue;
         }
-        glm::ivec3 lo = gridCellOf(g, o.pos - objectReach(o)), hi = gridCellOf(g, o.pos + objectReach(o));
+        glm::ivec3 lo = gridCellOf(g, o.pos - objectReach(o)),
+                   hi = gridCellOf(g, o.pos + objectReach(o));
         for (int z = lo.z; z <= hi.z; ++z)
             for (int y = lo.y; y <= hi.y; ++y)
                 for (int x = lo.x; x <= hi.x; ++x)

@@ -81,6 +81,8 @@ bool saveScene(const std::string& path, const Scene& scene, std::string* error) 
     return saveResult(path, replaceFile(path, formatScene(scene)), error);
 }
 
-bool checkSaveScene(const std::string& path, std::string* error) { return saveResult(path, checkReplaceFile(path), error); }
+bool checkSaveScene(const std::string& path, std::string* error) {
+    return saveResult(path, checkReplaceFile(path), error);
+}
 
 }  // namespace mb

@@ -32,10 +32,13 @@ std::string formatValue(const glm::vec3& v) {
     return formatFloat(v.x) + ',' + formatFloat(v.y) + ',' + formatFloat(v.z);
 }
 std::string formatValue(const glm::quat& q) {
-    return formatFloat(q.w) + ',' + formatFloat(q.x) + ',' + formatFloat(q.y) + ',' + formatFloat(q.z);
+    return formatFloat(q.w) + ',' + formatFloat(q.x) + ',' + formatFloat(q.y) + ',' +
+           formatFloat(q.z);
 }
 template <class T>
-std::string formatValue(const std::optional<T>& v) { return formatValue(*v); }  // written: set
+std::string formatValue(const std::optional<T>& v) {
+    return formatValue(*v);
+}  // written: set
 
 // Comment lines as they were read; anything else a program put there made one (commentLine).
 void writeComment(std::string& out, std::string_view text) {
@@ -86,7 +89,8 @@ std::string formatScene(const Scene& scene) {
     writeRecord(out, SceneHeader{kSceneVersion});
     writeRecord(out, scene.camera, c.camera);
     std::vector<Keyframe> keys = scene.keyframes;
-    std::stable_sort(keys.begin(), keys.end(), [](const Keyframe& a, const Keyframe& b) { return a.t < b.t; });
+    std::stable_sort(keys.begin(), keys.end(),
+                     [](const Keyframe& a, const Keyframe& b) { return a.t < b.t; });
     for (const Keyframe& k : keys) writeRecord(out, k, k.comment);
     writeRecord(out, scene.world, c.world);
     writeRecord(out, scene.render, c.render);
@@ -111,8 +115,7 @@ bool operator==(const Scene& a, const Scene& b) {
     return sameRecord(a.camera, b.camera) && sameRecord(a.world, b.world) &&
            sameRecord(a.render, b.render) && sameList(a.materials, b.materials) &&
            sameList(a.lights, b.lights) && sameList(a.objects, b.objects) &&
-           sameList(a.keyframes, b.keyframes) &&
-           a.comments == b.comments;
+           sameList(a.keyframes, b.keyframes) && a.comments == b.comments;
 }
 
 }  // namespace mb

@@ -38,7 +38,8 @@ struct Syntax {
     std::regex field{R"(([A-Za-z0-9_]+):(.*))"};
     std::regex number{kNumber};
     std::regex vector{std::string("(") + kNumber + "),(" + kNumber + "),(" + kNumber + ")"};
-    std::regex quaternion{std::string("(") + kNumber + "),(" + kNumber + "),(" + kNumber + "),(" + kNumber + ")"};
+    std::regex quaternion{std::string("(") + kNumber + "),(" + kNumber + "),(" + kNumber + "),(" +
+                          kNumber + ")"};
     std::regex name{"[A-Za-z0-9_.-]+"};
 };
 
@@ -125,7 +126,8 @@ Expect readValue(std::string_view s, glm::quat& q) {
     for (int i = 0; i < 4; ++i)
         if (readNumber(view(m[i + 1]), c[i])) return "a quaternion of numbers within float range";
     const glm::quat read(c[0], c[1], c[2], c[3]);
-    if (std::fabs(glm::length(read) - 1.0f) > 1e-3f) return "a unit quaternion (length within 1e-3 of 1)";
+    if (std::fabs(glm::length(read) - 1.0f) > 1e-3f)
+        return "a unit quaternion (length within 1e-3 of 1)";
     // Normalised only where it is off by more than rounding: a saved unit quaternion must read
     // back to the same floats, and normalize() is not exact twice over.
     q = std::fabs(glm::length(read) - 1.0f) > 1e-6f ? glm::normalize(read) : read;
@@ -165,7 +167,9 @@ bool obeys(const glm::vec3& v, const Rule& r) {
     return obeys(v.x, r) && obeys(v.y, r) && obeys(v.z, r) && !(r.nonZero && v == glm::vec3(0));
 }
 template <class T>
-bool obeys(const T&, const Rule&) { return true; }  // flags, names and enums have no range
+bool obeys(const T&, const Rule&) {
+    return true;
+}  // flags, names and enums have no range
 bool obeys(const std::optional<float>& v, const Rule& r) { return !v || obeys(*v, r); }
 
 // The text after "must be", e.g. "> 0", "1 to 179".
@@ -193,7 +197,9 @@ bool startsWith(std::string_view s, std::string_view prefix) {
 }
 
 template <class R>
-bool is(std::string_view kind) { return kind == Schema<R>::kind; }
+bool is(std::string_view kind) {
+    return kind == Schema<R>::kind;
+}
 
 struct Field {
     std::string_view key, value;
@@ -215,10 +221,14 @@ private:
     void header(Fields& fields);
     void object(Fields& fields, std::string comment);
     void keyframe(Fields& fields, std::string comment);
-    template <class R> void single(Fields& fields, R& rec);
-    template <class R> bool append(Fields& fields, std::vector<R>& list, int max, std::string comment);
-    template <class R> void readRecord(Fields& fields, R& rec);
-    template <class T> void readKey(const char* key, std::string_view text, T& v, const Rule& r);
+    template <class R>
+    void single(Fields& fields, R& rec);
+    template <class R>
+    bool append(Fields& fields, std::vector<R>& list, int max, std::string comment);
+    template <class R>
+    void readRecord(Fields& fields, R& rec);
+    template <class T>
+    void readKey(const char* key, std::string_view text, T& v, const Rule& r);
     const Field* take(Fields& fields, const char* key);
     void finish();
     void finishKeyframes();
@@ -279,8 +289,7 @@ void Parser::parseLine(std::string_view text) {
     if (readFields(tokens, first, &fields)) record(kind, fields, std::move(comment));
 }
 
-bool Parser::readFields(const std::vector<std::string_view>& tokens, size_t first,
-                        Fields* fields) {
+bool Parser::readFields(const std::vector<std::string_view>& tokens, size_t first, Fields* fields) {
     bool ok = true;
     for (size_t i = first; i < tokens.size(); ++i) {
         std::cmatch m;
@@ -298,7 +307,8 @@ void Parser::record(std::string_view kind, Fields& fields, std::string comment) 
     SceneComments& c = scene.comments;
     if (is<SceneHeader>(kind)) {
         header(fields);
-        comment_ = std::move(comment);  // a save starts with `scene version:1`: the next record keeps it
+        comment_ =
+            std::move(comment);  // a save starts with `scene version:1`: the next record keeps it
     } else if (is<Camera>(kind)) {
         single(fields, scene.camera);
         c.camera = std::move(comment);
@@ -329,10 +339,13 @@ void Parser::header(Fields& fields) {
 }
 
 void Parser::object(Fields& fields, std::string comment) {
-    const bool rot = std::any_of(fields.begin(), fields.end(), [](const Field& f) { return f.key == "rot"; });
-    const bool orient = std::any_of(fields.begin(), fields.end(), [](const Field& f) { return f.key == "orient"; });
+    const bool rot =
+        std::any_of(fields.begin(), fields.end(), [](const Field& f) { return f.key == "rot"; });
+    const bool orient =
+        std::any_of(fields.begin(), fields.end(), [](const Field& f) { return f.key == "orient"; });
     if (rot && orient) error("an object holds 'rot' or 'orient', not both");
-    if (append(fields, scene.objects, kMaxObjects, std::move(comment))) objectLines_.push_back(line_);
+    if (append(fields, scene.objects, kMaxObjects, std::move(comment)))
+        objectLines_.push_back(line_);
 }
 
 // The keys a keyframe leaves out come from the camera record, which may follow it: until the
@@ -351,8 +364,7 @@ void Parser::keyframe(Fields& fields, std::string comment) {
 
 template <class R>
 void Parser::single(Fields& fields, R& rec) {
-    if (++counts_[Schema<R>::kind] > 1)
-        error(std::string("second ") + Schema<R>::kind + " record");
+    if (++counts_[Schema<R>::kind] > 1) error(std::string("second ") + Schema<R>::kind + " record");
     readRecord(fields, rec);
 }
 
@@ -444,8 +456,9 @@ void Parser::finishKeyframes() {
     }
     std::vector<size_t> order(scene.keyframes.size());
     for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(),
-                     [&](size_t a, size_t b) { return scene.keyframes[a].t < scene.keyframes[b].t; });
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        return scene.keyframes[a].t < scene.keyframes[b].t;
+    });
     std::vector<Keyframe> sorted;
     for (size_t i = 0; i < order.size(); ++i) {
         if (i > 0 && scene.keyframes[order[i]].t == scene.keyframes[order[i - 1]].t)

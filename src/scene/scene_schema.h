@@ -130,9 +130,12 @@ struct Schema<Material> {
     static void keys(K& key) {
         const Need<Material> required{true};
         key("name", &Material::name);
-        key("r", [](auto& m) -> auto& { return m.color.r; }, atLeast(0), required);
-        key("g", [](auto& m) -> auto& { return m.color.g; }, atLeast(0), required);
-        key("b", [](auto& m) -> auto& { return m.color.b; }, atLeast(0), required);
+        key(
+            "r", [](auto& m) -> auto& { return m.color.r; }, atLeast(0), required);
+        key(
+            "g", [](auto& m) -> auto& { return m.color.g; }, atLeast(0), required);
+        key(
+            "b", [](auto& m) -> auto& { return m.color.b; }, atLeast(0), required);
         key("Ka", &Material::Ka, atLeast(0));
         key("Kd", &Material::Kd, atLeast(0));
         key("Ks", &Material::Ks, atLeast(0));
@@ -159,7 +162,9 @@ struct Schema<Object> {
     template <class K>
     static void keys(K& key) {
         const Need<Object> required{true};
-        auto since2 = [](bool (*written)(const Object&)) { return Need<Object>{false, nullptr, false, true, written}; };
+        auto since2 = [](bool (*written)(const Object&)) {
+            return Need<Object>{false, nullptr, false, true, written};
+        };
         key("type", &Object::type, Rule{}, required);
         key("name", &Object::name, Rule{}, since2(hasName));
         key("material", &Object::material, atLeast(0));  // existence is checked at end of file
@@ -196,7 +201,8 @@ inline std::string commentLine(std::string_view line) {
     std::string out(trimmed(line));
     size_t first = out.find_first_not_of(" \t");
     if (first != std::string::npos && out[first] != '#') out.insert(0, "# ");
-    if (out.size() > size_t(kMaxLineBytes)) out = std::string(trimmed(out.substr(0, kMaxLineBytes)));
+    if (out.size() > size_t(kMaxLineBytes))
+        out = std::string(trimmed(out.substr(0, kMaxLineBytes)));
     return out + '\n';
 }
 

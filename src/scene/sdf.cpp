@@ -76,11 +76,16 @@ glm::vec3 eulerFromRotation(const glm::mat3& r) {
 
 static float boundingRadius(const Object& o) {
     switch (o.type) {
-    case ShapeType::Sphere: return o.radius;
-    case ShapeType::Box: return glm::length(o.size);
-    case ShapeType::Torus: return o.radius + o.minor;
-    case ShapeType::Capsule: return 0.5f * o.height + o.radius;
-    case ShapeType::Cylinder: return std::hypot(0.5f * o.height, o.radius);
+        case ShapeType::Sphere:
+            return o.radius;
+        case ShapeType::Box:
+            return glm::length(o.size);
+        case ShapeType::Torus:
+            return o.radius + o.minor;
+        case ShapeType::Capsule:
+            return 0.5f * o.height + o.radius;
+        case ShapeType::Cylinder:
+            return std::hypot(0.5f * o.height, o.radius);
     }
     return 0.0f;
 }
@@ -104,11 +109,16 @@ SdfObject makeSdfObject(const Object& o) {
 
 float sdObjectLocal(const SdfObject& o, vec3 q) {
     switch (o.type) {
-    case ShapeType::Sphere: return sdSphere(q, o.radius);
-    case ShapeType::Box: return sdBox(q, o.size);
-    case ShapeType::Torus: return sdTorus(q, o.radius, o.minor);
-    case ShapeType::Capsule: return sdCapsule(q, o.height, o.radius);
-    case ShapeType::Cylinder: return sdCylinder(q, o.height, o.radius);
+        case ShapeType::Sphere:
+            return sdSphere(q, o.radius);
+        case ShapeType::Box:
+            return sdBox(q, o.size);
+        case ShapeType::Torus:
+            return sdTorus(q, o.radius, o.minor);
+        case ShapeType::Capsule:
+            return sdCapsule(q, o.height, o.radius);
+        case ShapeType::Cylinder:
+            return sdCylinder(q, o.height, o.radius);
     }
     return 1e10f;
 }

@@ -27,10 +27,12 @@ std::vector<std::pair<std::string, std::string>> documentedControls() {
     bool inSection = false;
     while (std::getline(in, line)) {
         if (line.rfind("## ", 0) == 0) inSection = line == "## Controls";
-        if (!inSection || line.rfind("| ", 0) != 0 || line.find("---") != std::string::npos) continue;
+        if (!inSection || line.rfind("| ", 0) != 0 || line.find("---") != std::string::npos)
+            continue;
         size_t mid = line.find(" | ");
         std::string keys = trim(line.substr(2, mid - 2)), action = trim(line.substr(mid + 3));
-        if (action.size() >= 2 && action.substr(action.size() - 2) == " |") action = trim(action.substr(0, action.size() - 2));
+        if (action.size() >= 2 && action.substr(action.size() - 2) == " |")
+            action = trim(action.substr(0, action.size() - 2));
         if (keys != "Keys") rows.emplace_back(keys, action);
     }
     return rows;

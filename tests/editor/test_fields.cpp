@@ -19,7 +19,8 @@ TEST(Fields, RangesFromTheFormat) {
     EXPECT_FALSE(validateField(Field::Gravity, -1, &why));
     EXPECT_TRUE(validateField(Field::Mass, 0, &why));
     EXPECT_TRUE(validateField(Field::Rolling, 0.0, &why));
-    EXPECT_TRUE(validateField(Field::Rolling, 5.0, &why));  // >= 0; the editor caps it at 100, as friction
+    EXPECT_TRUE(
+        validateField(Field::Rolling, 5.0, &why));  // >= 0; the editor caps it at 100, as friction
     EXPECT_FALSE(validateField(Field::Rolling, -0.001, &why));
     EXPECT_EQ(why, "rolling must be between 0 and 100");
     EXPECT_STREQ(fieldSpec(Field::Rolling).name, "rolling");
@@ -95,7 +96,8 @@ TEST(Fields, EveryTooltipGivesTheUnitAndTheRange) {
         EXPECT_NE(tip.find(s.meaning), std::string::npos) << tip;
         EXPECT_NE(tip.find("Range: " + fieldRangeText(Field(f)) + "."), std::string::npos) << tip;
         EXPECT_NE(tip.find(*s.unit ? "Unit: " + std::string(s.unit) + "." : "No unit."),
-                  std::string::npos) << tip;
+                  std::string::npos)
+            << tip;
     }
     EXPECT_EQ(fieldTooltip(Field::Radius),
               "Radius of a sphere, torus ring, capsule or cylinder.\n"
@@ -118,7 +120,8 @@ TEST(Fields, VectorsAndDirections) {
     EXPECT_FALSE(validateVec(Field::HalfExtent, {1, 0, 3}, &why));
     EXPECT_FALSE(validateVec(Field::LightDirection, {0, 0, 0}, &why));
     EXPECT_TRUE(validateVec(Field::LightDirection, {0, -1, 0}, &why));
-    EXPECT_FALSE(validateVec(Field::Position, {0, std::numeric_limits<float>::quiet_NaN(), 0}, &why));
+    EXPECT_FALSE(
+        validateVec(Field::Position, {0, std::numeric_limits<float>::quiet_NaN(), 0}, &why));
 }
 
 TEST(Fields, DragRangesLieInsideTheAllowedRange) {

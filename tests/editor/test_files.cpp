@@ -22,7 +22,8 @@ TEST(Files, ListsSceneFilesOfBothFoldersOnce) {
     std::ofstream(dir / "a.TXT") << "\n";
     std::ofstream(dir / "notes.md") << "\n";
     fs::create_directories(dir / "sub.txt");
-    auto files = listSceneFiles((dir / "b.txt").string(), std::string(MARCHBOX_SOURCE_DIR) + "/scenes");
+    auto files =
+        listSceneFiles((dir / "b.txt").string(), std::string(MARCHBOX_SOURCE_DIR) + "/scenes");
     auto has = [&](const fs::path& p) {
         return std::find(files.begin(), files.end(), p.lexically_normal().string()) != files.end();
     };
@@ -46,7 +47,8 @@ TEST(Files, WatchNoticesRewrites) {
     std::ofstream(dir / "a.glsl") << "one\n";
     FolderWatch watch(dir.string());
     EXPECT_FALSE(watch.changed());
-    fs::last_write_time(dir / "a.glsl", fs::last_write_time(dir / "a.glsl") + std::chrono::seconds(2));
+    fs::last_write_time(dir / "a.glsl",
+                        fs::last_write_time(dir / "a.glsl") + std::chrono::seconds(2));
     EXPECT_TRUE(watch.changed());
     EXPECT_FALSE(watch.changed());
     std::ofstream(dir / "b.glsl") << "two\n";

@@ -79,9 +79,11 @@ TEST(Document, DirtyFollowsUndoBackToTheSavedState) {
 
 TEST(Document, MergedDragAfterSaveIsDirty) {
     Document d;
-    d.apply("drag", [](Scene& s) { s.world.friction = 1; }, 9);
+    d.apply(
+        "drag", [](Scene& s) { s.world.friction = 1; }, 9);
     d.markSaved("a.txt");
-    d.apply("drag", [](Scene& s) { s.world.friction = 2; }, 9);
+    d.apply(
+        "drag", [](Scene& s) { s.world.friction = 2; }, 9);
     EXPECT_TRUE(d.dirty());
 }
 

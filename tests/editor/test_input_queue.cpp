@@ -11,9 +11,15 @@ namespace {
 // Codes as GLFW numbers them (the queue knows none of them).
 constexpr int kLeft = 0, kKeyA = 65, kKeyX = 88, kEnter = 257, kCtrl = 341, kModCtrl = 2;
 
-InputEvent move(float x, float y, double t = 0.0) { return {.kind = Kind::Move, .time = t, .at = {x, y}}; }
-InputEvent button(bool down, double t = 0.0) { return {.kind = Kind::Button, .time = t, .code = kLeft, .down = down}; }
-InputEvent key(int code, bool down, int mods = 0) { return {.kind = Kind::Key, .code = code, .down = down, .mods = mods}; }
+InputEvent move(float x, float y, double t = 0.0) {
+    return {.kind = Kind::Move, .time = t, .at = {x, y}};
+}
+InputEvent button(bool down, double t = 0.0) {
+    return {.kind = Kind::Button, .time = t, .code = kLeft, .down = down};
+}
+InputEvent key(int code, bool down, int mods = 0) {
+    return {.kind = Kind::Key, .code = code, .down = down, .mods = mods};
+}
 InputEvent text(char c) { return {.kind = Kind::Text, .code = c}; }
 
 struct Frames {
@@ -64,7 +70,8 @@ TEST(InputQueue, ADragInsideOneFramePressesWhereItStartsAndReleasesWhereItEnds) 
 TEST(InputQueue, EachKeyPressGetsItsOwnFrame) {
     // Ctrl+A: Ctrl is down in the frame that sees A go down.
     Frames f;
-    f.push({key(kCtrl, true), key(kKeyA, true, kModCtrl), key(kKeyA, false, kModCtrl), key(kCtrl, false)});
+    f.push({key(kCtrl, true), key(kKeyA, true, kModCtrl), key(kKeyA, false, kModCtrl),
+            key(kCtrl, false)});
     EXPECT_TRUE(f.next().keys[kCtrl]);
     EXPECT_FALSE(f.state.keys[kKeyA]);
     const InputState& a = f.next();
@@ -105,7 +112,8 @@ TEST(InputQueue, IntoAFieldTheTextUpToAKeyThatTypesNothingIsOneFrame) {
 TEST(InputQueue, OutsideAFieldEveryKeyIsSeenDown) {
     // W flies the camera while a frame sees it down.
     Frames f;
-    f.push({key('1', true), text('1'), key('1', false), key('W', true), text('w'), key('W', false)});
+    f.push(
+        {key('1', true), text('1'), key('1', false), key('W', true), text('w'), key('W', false)});
     EXPECT_TRUE(f.next().keys['1']);
     EXPECT_TRUE(f.next().keys['W']);
     EXPECT_FALSE(f.next().keys['W']);
@@ -134,7 +142,8 @@ TEST(InputQueue, TypingAfterAClickWaitsForTheNextFrame) {
 
 TEST(InputQueue, EventsThatChangeNothingNeverSplitAFrame) {
     Frames f;  // a release never seen pressed (pressed before the window opened), a bad code
-    f.push({key(kKeyA, false), key(-1, true), key(InputState::kKeys, true), key(kKeyA, true), key(kKeyX, true)});
+    f.push({key(kKeyA, false), key(-1, true), key(InputState::kKeys, true), key(kKeyA, true),
+            key(kKeyX, true)});
     const InputState& s = f.next();
     EXPECT_TRUE(s.keys[kKeyA]);
     EXPECT_EQ(s.presses.size(), 1u);
@@ -154,8 +163,9 @@ TEST(InputQueue, ABackloggedScrollWithMotionIsMergedNotReplayed) {
     // A touchpad's wheel and motion in turn, 20 notches over 0.2 s.
     Frames f;
     for (int i = 0; i < 20; ++i)
-        f.push({{.kind = Kind::Wheel, .time = 0.01 * i, .at = {0, 1}}, move(float(i), 0, 0.01 * i + 0.005)});
-    EXPECT_EQ(f.next(0.1).wheel, glm::vec2(0, 1));  // up to date: the motion waits for its frame
+        f.push({{.kind = Kind::Wheel, .time = 0.01 * i, .at = {0, 1}},
+                move(float(i), 0, 0.01 * i + 0.005)});
+    EXPECT_EQ(f.next(0.1).wheel, glm::vec2(0, 1));   // up to date: the motion waits for its frame
     EXPECT_EQ(f.next(1.0).wheel, glm::vec2(0, 19));  // a second behind: the rest in one frame
     EXPECT_EQ(f.state.mouse, glm::vec2(19, 0));
     EXPECT_TRUE(f.queue.empty());

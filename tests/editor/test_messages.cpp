@@ -71,7 +71,8 @@ TEST(Messages, ASettingsPanelKeepsItsMessageAcrossSelections) {
     *m.at(Place::View) = "fog must be between 0 and 10";
     frame(m, {Place::View}, selected(ItemKind::Object, 0));
     frame(m, {Place::View}, selected(ItemKind::Object, 1));
-    EXPECT_NE(m.text(Place::View), "") << "the camera and render settings do not depend on the selection";
+    EXPECT_NE(m.text(Place::View), "")
+        << "the camera and render settings do not depend on the selection";
     frame(m, {}, selected(ItemKind::Object, 1));  // closed
     EXPECT_EQ(m.text(Place::View), "");
 }
@@ -95,5 +96,6 @@ TEST(Messages, TheSameStatusSaidAgainStartsItsTimeAgain) {
     EXPECT_TRUE(m.isNew(Place::Status));
     frame(m, {}, Selection{}, 16.0);
     frame(m, {}, Selection{}, 10.0 + Messages::kStatusSeconds);
-    EXPECT_EQ(m.text(Place::Status), "this scene has no fog") << "timed from the first time it was said";
+    EXPECT_EQ(m.text(Place::Status), "this scene has no fog")
+        << "timed from the first time it was said";
 }

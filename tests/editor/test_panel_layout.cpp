@@ -8,7 +8,8 @@ using namespace mb;
 namespace {
 
 bool overlap(const PanelRect& a, const PanelRect& b) {
-    return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+    return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height &&
+           b.y < a.y + a.height;
 }
 
 // The window sizes people use (960x600 and 1280x720) and the e2e tests' small one; the menu bar and
@@ -23,7 +24,8 @@ TEST(PanelLayout, EveryChoiceOfOpenPanelsFitsTheWindowWithoutOverlap) {
             auto rects = layoutPanels(f, open);
             for (int i = 0; i < kPanelCount; ++i) {
                 const PanelRect& r = rects[size_t(i)];
-                SCOPED_TRACE(testing::Message() << f.width << "x" << f.height << " open " << open << " panel " << i);
+                SCOPED_TRACE(testing::Message()
+                             << f.width << "x" << f.height << " open " << open << " panel " << i);
                 if (!(open & panelBit(Panel(i)))) {
                     EXPECT_EQ(r, PanelRect{});
                     continue;
@@ -33,7 +35,8 @@ TEST(PanelLayout, EveryChoiceOfOpenPanelsFitsTheWindowWithoutOverlap) {
                 EXPECT_LE(r.x + r.width, f.width);
                 EXPECT_LE(r.y + r.height, f.height);
                 if (f.height >= 600) {
-                    EXPECT_GE(r.height, 90.0f) << "room for a few lines, however many panels share a column";
+                    EXPECT_GE(r.height, 90.0f)
+                        << "room for a few lines, however many panels share a column";
                 }
                 for (int j = i + 1; j < kPanelCount; ++j) {
                     if (open & panelBit(Panel(j))) {
@@ -59,5 +62,6 @@ TEST(PanelLayout, APanelAloneTakesItsWholeColumnAndSharesItWhenAnotherOpens) {
     EXPECT_EQ(alone.y + alone.height, f.height - kPanelMargin);
     auto both = layoutPanels(f, panelBit(Panel::Objects) | panelBit(Panel::Lights));
     EXPECT_LT(both[size_t(Panel::Objects)].height, alone.height * 0.55f);
-    EXPECT_GT(both[size_t(Panel::Lights)].y, both[size_t(Panel::Objects)].y) << "in the menu's order";
+    EXPECT_GT(both[size_t(Panel::Lights)].y, both[size_t(Panel::Objects)].y)
+        << "in the menu's order";
 }

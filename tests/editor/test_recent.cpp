@@ -39,7 +39,8 @@ TEST(RecentFiles, NewestFirstOnceAtMostTenAndKeptInTheFile) {
     const std::string file = (dir / "config" / "marchbox" / "recent.txt").string();
     RecentFiles r(file);  // no file yet: an empty list
     EXPECT_TRUE(r.paths().empty());
-    for (int i = 0; i < 12; ++i) EXPECT_EQ(r.add((dir / ("s" + std::to_string(i) + ".txt")).string()), "");
+    for (int i = 0; i < 12; ++i)
+        EXPECT_EQ(r.add((dir / ("s" + std::to_string(i) + ".txt")).string()), "");
     EXPECT_EQ(r.add((dir / "sub" / ".." / "s5.txt").string()), "");  // the same file again
     ASSERT_EQ(r.paths().size(), RecentFiles::kMax);
     EXPECT_EQ(r.paths()[0], (dir / "s5.txt").string());

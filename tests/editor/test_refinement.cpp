@@ -55,7 +55,8 @@ TEST(PreviewDivisor, KeepsThePreviousWhileNearTheBudget) {
     // 1280x720 at 1/3 is 102,400 pixels: 35 ms at this cost, 0.875 of the budget.
     const double cost = 35.0 / 102400;
     EXPECT_EQ(previewDivisor(cost, 1280, 720, 0, 8, kBudget), 3);
-    EXPECT_EQ(previewDivisor(cost * 1.3, 1280, 720, 3, 8, kBudget), 3);  // 46 ms: within 1.25 × budget
+    EXPECT_EQ(previewDivisor(cost * 1.3, 1280, 720, 3, 8, kBudget),
+              3);  // 46 ms: within 1.25 × budget
     EXPECT_EQ(previewDivisor(cost * 1.6, 1280, 720, 3, 8, kBudget), 4);  // 56 ms: too slow, coarser
     EXPECT_EQ(previewDivisor(cost * 0.6, 1280, 720, 3, 8, kBudget), 3);  // 21 ms: still over half
     EXPECT_EQ(previewDivisor(cost * 0.5, 1280, 720, 3, 8, kBudget), 2);  // 17.5 ms: sharper
@@ -95,7 +96,8 @@ TEST(Samples, TheScenesGridNearestTheCentreFirst) {
     for (int aa = 2; aa <= 4; ++aa) {
         std::set<std::pair<float, float>> seen, grid;
         for (int j = 0; j < aa; ++j)
-            for (int i = 0; i < aa; ++i) grid.insert({(i + 0.5f) / aa, (j + 0.5f) / aa});  // render_passes.cpp
+            for (int i = 0; i < aa; ++i)
+                grid.insert({(i + 0.5f) / aa, (j + 0.5f) / aa});  // render_passes.cpp
         float lastDistance = 0.0f;
         for (int k = 0; k < aa * aa; ++k) {
             glm::vec2 p = samplePosition(k, aa);
@@ -149,7 +151,8 @@ TEST(Refinement, EveryStepFitsTheBudget) {
         r.finished(r.next(), 160 * 90 * cost);  // the first preview teaches the cost
         r.restart(1280, 720, 1, true);
         for (const ViewStep& step : drawAll(r, cost)) {
-            bool smallest = step.kind == StepKind::Preview ? step.divisor == s.maxDivisor : step.rows <= kBandAlign;
+            bool smallest = step.kind == StepKind::Preview ? step.divisor == s.maxDivisor
+                                                           : step.rows <= kBandAlign;
             if (!smallest) {
                 EXPECT_LE(double(step.pixels()) * cost, s.frameBudgetMs - 12.0) << cost;
             }

@@ -59,7 +59,8 @@ void expectMatchesGolden(const Image& actual, const std::string& name) {
         return;
     }
     Image golden;
-    ASSERT_TRUE(loadPng(goldenPath, &golden, &error)) << error << " (MARCHBOX_UPDATE_GOLDEN=1 writes it)";
+    ASSERT_TRUE(loadPng(goldenPath, &golden, &error))
+        << error << " (MARCHBOX_UPDATE_GOLDEN=1 writes it)";
     ASSERT_EQ(golden.width, actual.width);
     ASSERT_EQ(golden.height, actual.height);
     ImageDiff d = diffImages(actual, golden);
@@ -67,8 +68,8 @@ void expectMatchesGolden(const Image& actual, const std::string& name) {
     savePng(outputPath(name + ".actual.png"), actual, &error);
     savePng(outputPath(name + ".diff.png"), d.visual, &error);
     ADD_FAILURE() << name << ": mean diff " << d.meanAbs << " (max " << kMaxMeanDiff << "), p99 "
-                  << d.p99 << " (max " << kMaxP99Diff << "); wrote " << outputPath(name + ".actual.png")
-                  << " and .diff.png";
+                  << d.p99 << " (max " << kMaxP99Diff << "); wrote "
+                  << outputPath(name + ".actual.png") << " and .diff.png";
 }
 
 }  // namespace mb::test

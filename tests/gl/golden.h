@@ -19,14 +19,14 @@ inline RenderOptions options(RenderMode mode, bool uber = false) {
     return o;
 }
 
-std::string sourcePath(const std::string& relative);   // inside the source tree
-std::string outputPath(const std::string& name);       // under build/test-output/
+std::string sourcePath(const std::string& relative);  // inside the source tree
+std::string outputPath(const std::string& name);      // under build/test-output/
 
-Scene loadSceneOrDie(const std::string& relative);     // fails the test on a load error
-Image renderOrDie(const Scene& scene, const RenderOptions& options = {},
-                  int width = kGoldenWidth, int height = kGoldenHeight);
+Scene loadSceneOrDie(const std::string& relative);  // fails the test on a load error
+Image renderOrDie(const Scene& scene, const RenderOptions& options = {}, int width = kGoldenWidth,
+                  int height = kGoldenHeight);
 
-std::vector<std::string> sceneNames();                // every scenes/*.txt, by stem, sorted
+std::vector<std::string> sceneNames();  // every scenes/*.txt, by stem, sorted
 
 // Compares with tests/golden/NAME.png. On a mismatch writes NAME.actual.png and NAME.diff.png
 // under build/test-output/. With MARCHBOX_UPDATE_GOLDEN=1 it rewrites the golden instead.

@@ -48,7 +48,8 @@ bool silhouette(const Image& img, int x, int row) {
     int id = objectIdAt(img, x, row);
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
-            int xx = std::clamp(x + dx, 0, img.width - 1), rr = std::clamp(row + dy, 0, img.height - 1);
+            int xx = std::clamp(x + dx, 0, img.width - 1),
+                rr = std::clamp(row + dy, 0, img.height - 1);
             if (objectIdAt(img, xx, rr) != id) return true;
         }
     return false;
@@ -92,7 +93,8 @@ TEST_P(Agreement, CpuAndGpuHitTheSameObject) {
         for (int x = 0; x < kWidth; ++x) {
             glm::vec2 pixel(x + 0.5f, kHeight - 1 - row + 0.5f);
             glm::vec3 dir = cameraRay(basis, pixel, glm::vec2(kWidth, kHeight));
-            int cpu = castRay(sdf, basis.pos, dir, scene.render.steps, scene.render.epsilon, far).object;
+            int cpu =
+                castRay(sdf, basis.pos, dir, scene.render.steps, scene.render.epsilon, far).object;
             int gpu = objectIdAt(ids, x, row);
             if (cpu < 0 && gpu < 0) continue;  // floor or sky on both sides
             ++objectPixels;
@@ -109,12 +111,14 @@ TEST_P(Agreement, CpuAndGpuHitTheSameObject) {
         }
 
     std::ostringstream report;
-    report << c.scene << ": objects on " << percent(objectPixels, kWidth * kHeight) << " of the frame";
+    report << c.scene << ": objects on " << percent(objectPixels, kWidth * kHeight)
+           << " of the frame";
     for (int type = 0; type < kTypes; ++type) {
         const Tally& t = tally[size_t(type)];
         if (t.pixels == 0) continue;
         report << "\n  " << kTypeNames[type] << ": " << t.agreed << "/" << t.pixels << " agree ("
-               << percent(t.agreed, t.pixels) << "); silhouette " << t.edgeAgreed << "/" << t.edgePixels;
+               << percent(t.agreed, t.pixels) << "); silhouette " << t.edgeAgreed << "/"
+               << t.edgePixels;
     }
     std::printf("%s\n", report.str().c_str());
 
@@ -123,13 +127,15 @@ TEST_P(Agreement, CpuAndGpuHitTheSameObject) {
         int allowed = std::max(1, int(kMaxDisagreement * t.pixels));
         EXPECT_LE(t.pixels - t.agreed, allowed)
             << kTypeNames[type] << ": CPU and GPU disagree on " << t.pixels - t.agreed << " of "
-            << t.pixels << " pixels (at most " << allowed << ")\n" << report.str();
+            << t.pixels << " pixels (at most " << allowed << ")\n"
+            << report.str();
         if (c.close) {
             EXPECT_GE(t.pixels, kMinTypePixels) << kTypeNames[type] << " is too small in the frame";
         }
     }
     if (c.close) {
-        EXPECT_GE(objectPixels, kMinObjectShare * kWidth * kHeight) << "objects must fill the frame";
+        EXPECT_GE(objectPixels, kMinObjectShare * kWidth * kHeight)
+            << "objects must fill the frame";
     }
 }
 
@@ -147,14 +153,12 @@ INSTANTIATE_TEST_SUITE_P(Close, Agreement,
 
 // The example scenes: objects fill less of their frames, but they add the legacy format, many
 // lights and the 124-object pile.
-INSTANTIATE_TEST_SUITE_P(Scenes, Agreement,
-                         ::testing::Values(AgreementCase{"scenes/primitives", false},
-                                           AgreementCase{"scenes/csg", false},
-                                           AgreementCase{"scenes/default", false},
-                                           AgreementCase{"scenes/lights", false},
-                                           AgreementCase{"scenes/legacy", false},
-                                           AgreementCase{"scenes/pile", false}),
-                         [](const auto& info) {
-                             std::string s = info.param.scene;
-                             return s.substr(s.rfind('/') + 1);
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, Agreement,
+    ::testing::Values(AgreementCase{"scenes/primitives", false}, AgreementCase{"scenes/csg", false},
+                      AgreementCase{"scenes/default", false}, AgreementCase{"scenes/lights", false},
+                      AgreementCase{"scenes/legacy", false}, AgreementCase{"scenes/pile", false}),
+    [](const auto& info) {
+        std::string s = info.param.scene;
+        return s.substr(s.rfind('/') + 1);
+    });

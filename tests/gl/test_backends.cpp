@@ -11,7 +11,8 @@ TEST(Backends, EglDrawsWhatOsMesaDraws) {
     std::string error;
     OffscreenRun run;
     run.backend = OffscreenBackend::Egl;
-    if (!renderOffscreen(s, {}, 160, 90, &egl, &error, run)) GTEST_SKIP() << "no EGL here: " << error;
+    if (!renderOffscreen(s, {}, 160, 90, &egl, &error, run))
+        GTEST_SKIP() << "no EGL here: " << error;
     ImageDiff d = diffImages(osmesa, egl);
     // Both are llvmpipe on this machine; on a GPU the shaders' rounding would differ more.
     EXPECT_LE(d.meanAbs, 0.5);

@@ -11,7 +11,8 @@ namespace {
 int countDifferentIds(const Image& a, const Image& b) {
     int n = 0;
     for (int y = 0; y < a.height; ++y)
-        for (int x = 0; x < a.width; ++x) n += a.pixel(x, y)[0] != b.pixel(x, y)[0] || a.pixel(x, y)[1] != b.pixel(x, y)[1];
+        for (int x = 0; x < a.width; ++x)
+            n += a.pixel(x, y)[0] != b.pixel(x, y)[0] || a.pixel(x, y)[1] != b.pixel(x, y)[1];
     return n;
 }
 
@@ -38,5 +39,6 @@ TEST(BoundedMarch, StepsAreSpentWhereObjectsAre) {
     Image ids64 = test::renderOrDie(s, test::options(RenderMode::ObjectId), 160, 90);
     s.render.steps = 4096;
     Image ids4096 = test::renderOrDie(s, test::options(RenderMode::ObjectId), 160, 90);
-    EXPECT_LE(countDifferentIds(ids64, ids4096), 160 * 90 / 200) << "64 steps converge but for a few grazing silhouettes";
+    EXPECT_LE(countDifferentIds(ids64, ids4096), 160 * 90 / 200)
+        << "64 steps converge but for a few grazing silhouettes";
 }

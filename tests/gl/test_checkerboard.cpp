@@ -37,7 +37,8 @@ Image fill(const Picture& picture, int w = kW, int h = kH) {
     ColorTarget in, out;
     EXPECT_TRUE(in.resize(half, h, GL_RGBA32F) && out.resize(w, h, GL_RGBA8));
     in.bindTexture(0);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, half, h, 0, GL_RGBA, GL_FLOAT, packed.data());  // re-specified with data: resize allocated none
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, half, h, 0, GL_RGBA, GL_FLOAT,
+                 packed.data());  // re-specified with data: resize allocated none
     out.bind();
     glViewport(0, 0, w, h);
     CheckerboardFill checkerboard;
@@ -64,8 +65,10 @@ int largestError(const Picture& picture, int margin = 0) {
 // Across an edge the two neighbours differ; along it they agree, and the fill takes theirs.
 // Where the edge meets the border only the pair across is whole: those pixels are left out.
 TEST(Checkerboard, EdgesComeBackExactly) {
-    EXPECT_EQ(largestError([](int x, int) { return x < 7 ? 40 / 255.0f : 220 / 255.0f; }, 1), 0) << "vertical";
-    EXPECT_EQ(largestError([](int, int y) { return y < 5 ? 200 / 255.0f : 30 / 255.0f; }, 1), 0) << "horizontal";
+    EXPECT_EQ(largestError([](int x, int) { return x < 7 ? 40 / 255.0f : 220 / 255.0f; }, 1), 0)
+        << "vertical";
+    EXPECT_EQ(largestError([](int, int y) { return y < 5 ? 200 / 255.0f : 30 / 255.0f; }, 1), 0)
+        << "horizontal";
 }
 
 // Inside, either pair's mean is exact on a ramp; on the border the pair inside is taken, and in
@@ -104,7 +107,8 @@ TEST(Checkerboard, OddSizesReadOnlyPixelsInside) {
     for (auto [w, h] : {std::pair{15, 11}, {1, 8}, {1, 7}, {8, 1}, {7, 1}, {3, 2}, {1, 1}}) {
         Image image = fill([w](int x, int) { return x < w ? 100 / 255.0f : 1.0f; }, w, h);
         for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) EXPECT_EQ(image.pixel(x, y)[0], 100) << w << "x" << h << " at " << x << "," << y;
+            for (int x = 0; x < w; ++x)
+                EXPECT_EQ(image.pixel(x, y)[0], 100) << w << "x" << h << " at " << x << "," << y;
     }
 }
 

@@ -15,7 +15,9 @@ namespace {
 // that the operators meet. The seed fixes it: a failure names the seed that shows it.
 Scene randomScene(unsigned seed) {
     std::mt19937 rng(seed);
-    auto uniform = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); };
+    auto uniform = [&](float lo, float hi) {
+        return std::uniform_real_distribution<float>(lo, hi)(rng);
+    };
     auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
     Scene s;
     s.camera = Camera{{0, 2.5f, -5}, {0, 0.8f, 0}, 45};
@@ -64,7 +66,8 @@ void expectSamePicture(const Scene& s, const std::string& name) {
 }  // namespace
 
 TEST(Compiled, RandomScenesDrawAsTheGeneralProgramDoes) {
-    for (unsigned seed = 1; seed <= 12; ++seed) expectSamePicture(randomScene(seed), "seed " + std::to_string(seed));
+    for (unsigned seed = 1; seed <= 12; ++seed)
+        expectSamePicture(randomScene(seed), "seed " + std::to_string(seed));
 }
 
 TEST(Compiled, TheRandomScenesCoverEveryTypeOperatorBlendAndRotation) {
@@ -94,11 +97,16 @@ TEST(Compiled, OnlyAStructuralEditCompilesAnew) {
     edited.materials[0].color = {0.1f, 0.9f, 0.1f};
     EXPECT_EQ(shaderFeatures(edited, RenderMode::Shaded, false, 65536), before);
 
-    for (auto change : {+[](Scene& e) { e.objects.push_back(Object{}); },
-                        +[](Scene& e) { e.objects.pop_back(); },
-                        +[](Scene& e) { e.objects[0].type = ShapeType((int(e.objects[0].type) + 1) % kShapeTypeCount); },
-                        +[](Scene& e) { e.objects[1].op = CsgOp((int(e.objects[1].op) + 1) % kCsgOpCount); },
-                        +[](Scene& e) { e.objects[0].rot = e.objects[0].rot == glm::vec3(0.0f) ? glm::vec3(10, 0, 0) : glm::vec3(0.0f); }}) {
+    for (auto change :
+         {+[](Scene& e) { e.objects.push_back(Object{}); }, +[](Scene& e) { e.objects.pop_back(); },
+          +[](Scene& e) {
+              e.objects[0].type = ShapeType((int(e.objects[0].type) + 1) % kShapeTypeCount);
+          },
+          +[](Scene& e) { e.objects[1].op = CsgOp((int(e.objects[1].op) + 1) % kCsgOpCount); },
+          +[](Scene& e) {
+              e.objects[0].rot =
+                  e.objects[0].rot == glm::vec3(0.0f) ? glm::vec3(10, 0, 0) : glm::vec3(0.0f);
+          }}) {
         Scene e = s;
         change(e);
         EXPECT_FALSE(shaderFeatures(e, RenderMode::Shaded, false, 65536) == before);
@@ -112,7 +120,9 @@ TEST(Compiled, TheFeatureListNamesWhatTheSceneUses) {
     std::vector<std::string> lines = describeFeatures(f);
     std::string all;
     for (const std::string& l : lines) all += l + "\n";
-    EXPECT_EQ(lines.front(), "compiled: " + std::to_string(s.objects.size()) + " objects, a line each") << all;
+    EXPECT_EQ(lines.front(),
+              "compiled: " + std::to_string(s.objects.size()) + " objects, a line each")
+        << all;
     for (const char* word : {"sphere", "box", "torus", "capsule", "subtract", "blended"})
         EXPECT_NE(all.find(word), std::string::npos) << word << " missing from\n" << all;
     f.shadows = 2;
@@ -121,7 +131,8 @@ TEST(Compiled, TheFeatureListNamesWhatTheSceneUses) {
     for (const std::string& l : describeFeatures(f)) all += l + "\n";
     EXPECT_NE(all.find("soft shadows"), std::string::npos) << all;
     EXPECT_NE(all.find("fog"), std::string::npos) << all;
-    EXPECT_EQ(describeFeatures(shaderFeatures(s, RenderMode::Shaded, true, 65536)).size(), 1u) << "the uber shader";
+    EXPECT_EQ(describeFeatures(shaderFeatures(s, RenderMode::Shaded, true, 65536)).size(), 1u)
+        << "the uber shader";
 }
 
 // What `marchbox shader` prints for a compiled scene: one line per object, in file order,
@@ -129,16 +140,23 @@ TEST(Compiled, TheFeatureListNamesWhatTheSceneUses) {
 TEST(Compiled, TheSceneMapIsOneLinePerObject) {
     Scene s = test::loadSceneOrDie("scenes/default.txt");
     std::string src, error;
-    ASSERT_TRUE(fragmentSource(shaderFeatures(s, RenderMode::Shaded, false, 65536), &src, &error)) << error;
+    ASSERT_TRUE(fragmentSource(shaderFeatures(s, RenderMode::Shaded, false, 65536), &src, &error))
+        << error;
     size_t begin = src.find("vec2 mapObjects(vec3 p) {"), end = src.find("\n}\n", begin);
     ASSERT_NE(begin, std::string::npos);
     std::string map = src.substr(begin, end - begin);
-    EXPECT_EQ(map.find("uObjects["), std::string::npos) << "objects are read once per pixel, not per step";
+    EXPECT_EQ(map.find("uObjects["), std::string::npos)
+        << "objects are read once per pixel, not per step";
     EXPECT_EQ(map.find("for ("), std::string::npos);
-    const char* lines[] = {"sdBox(o0.toLocal * (p - o0.posBound.xyz), o0.sizeMinor.xyz), 0.0, 0.0);  // 0: box, turned",
-                           "joinSubtract(res, sdSphere(p - o1.posBound.xyz, o1.shape.x), o1.shape.z, 1.0);  // 1: sphere, subtract, blended",
-                           "sdTorus(p - o2.posBound.xyz, o2.shape.x, o2.sizeMinor.w), 0.0, 2.0);  // 2: torus",
-                           "sdCapsule(o6.toLocal * (p - o6.posBound.xyz), o6.shape.y, o6.shape.x), 0.0, 6.0);  // 6: capsule, turned"};
-    for (const char* line : lines) EXPECT_NE(map.find(line), std::string::npos) << line << "\nin\n" << map;
+    const char* lines[] = {
+        "sdBox(o0.toLocal * (p - o0.posBound.xyz), o0.sizeMinor.xyz), 0.0, 0.0);  // 0: box, "
+        "turned",
+        "joinSubtract(res, sdSphere(p - o1.posBound.xyz, o1.shape.x), o1.shape.z, 1.0);  // 1: "
+        "sphere, subtract, blended",
+        "sdTorus(p - o2.posBound.xyz, o2.shape.x, o2.sizeMinor.w), 0.0, 2.0);  // 2: torus",
+        "sdCapsule(o6.toLocal * (p - o6.posBound.xyz), o6.shape.y, o6.shape.x), 0.0, 6.0);  // 6: "
+        "capsule, turned"};
+    for (const char* line : lines)
+        EXPECT_NE(map.find(line), std::string::npos) << line << "\nin\n" << map;
     EXPECT_EQ(map.find("sdObjectLocal("), std::string::npos) << "no type switch in a compiled map";
 }

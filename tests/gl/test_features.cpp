@@ -131,7 +131,8 @@ TEST(Features, SoftShadowsWidenTheShadowEdge) {
     auto penumbra = [](const Image& img) {
         int n = 0;
         for (int row = 0; row < img.height; ++row)
-            for (int x = 0; x < img.width; ++x) n += luma(img, x, row) > 20 && luma(img, x, row) < 235;
+            for (int x = 0; x < img.width; ++x)
+                n += luma(img, x, row) > 20 && luma(img, x, row) < 235;
         return n;
     };
     Image hard = test::renderOrDie(s, test::options(RenderMode::Shadow), kW, kH);
@@ -151,7 +152,8 @@ TEST(Features, NormalViewIsTheNormalTimesHalfPlusHalf) {
     for (int row = 2; row < kH - 2; row += 3)
         for (int x = 2; x < kW - 2; x += 3) {
             vec3 dir = cameraRay(b, {x + 0.5f, kH - 1 - row + 0.5f}, {kW, kH});
-            RayHit hit = castRay(sdf, b.pos, dir, s.render.steps, s.render.epsilon, maxRayDistance(s));
+            RayHit hit =
+                castRay(sdf, b.pos, dir, s.render.steps, s.render.epsilon, maxRayDistance(s));
             if (!hit.hit) continue;
             vec3 expected = sceneNormal(sdf, b.pos + dir * hit.t) * 0.5f + 0.5f;
             const uint8_t* p = img.pixel(x, row);
@@ -180,6 +182,7 @@ TEST(Features, ObjectsBeyondAPointLightCastNoShadow) {
         s.objects.push_back(roof);
         Image roofed = test::renderOrDie(s, test::options(RenderMode::Shaded), kW, kH);
         ImageDiff d = diffImages(open, roofed);
-        EXPECT_EQ(d.maxAbs, 0.0) << "shadows " << kind << ": the roof above the light darkened the floor";
+        EXPECT_EQ(d.maxAbs, 0.0) << "shadows " << kind
+                                 << ": the roof above the light darkened the floor";
     }
 }

@@ -12,14 +12,16 @@ static std::string resolve(const std::string& src, const Defines& d) {
 }
 
 TEST(GlslConditionals, KeepsTheTakenBranchOfAChain) {
-    const std::string src = "a\n#if SHADOWS == 1\nhard\n#elif SHADOWS == 2\nsoft\n#else\nnone\n#endif\nb\n";
+    const std::string src =
+        "a\n#if SHADOWS == 1\nhard\n#elif SHADOWS == 2\nsoft\n#else\nnone\n#endif\nb\n";
     EXPECT_EQ(resolve(src, {{"SHADOWS", 1}}), "a\nhard\nb\n");
     EXPECT_EQ(resolve(src, {{"SHADOWS", 2}}), "a\nsoft\nb\n");
     EXPECT_EQ(resolve(src, {}), "a\nnone\nb\n");
 }
 
 TEST(GlslConditionals, NestsAndEvaluatesOperators) {
-    const std::string src = "#if A || (B && !C)\n  #if MODE >= 4 && MODE != 5\nx\n  #endif\ny\n#endif\n";
+    const std::string src =
+        "#if A || (B && !C)\n  #if MODE >= 4 && MODE != 5\nx\n  #endif\ny\n#endif\n";
     EXPECT_EQ(resolve(src, {{"A", 1}, {"MODE", 4}}), "x\ny\n");
     EXPECT_EQ(resolve(src, {{"B", 1}, {"C", 0}, {"MODE", 5}}), "y\n");
     EXPECT_EQ(resolve(src, {{"B", 1}, {"C", 1}}), "");

@@ -25,5 +25,6 @@ INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
 TEST(GoldenPost, FxaaOnTheDefaultScene) {
     RenderOptions o;
     o.post = PostMode::Fxaa;
-    test::expectMatchesGolden(test::renderOrDie(test::loadSceneOrDie("scenes/default.txt"), o), "default_fxaa");
+    test::expectMatchesGolden(test::renderOrDie(test::loadSceneOrDie("scenes/default.txt"), o),
+                              "default_fxaa");
 }

@@ -24,7 +24,8 @@ Image drawSelected(const Scene& s, int selected, RenderMode mode = RenderMode::S
     std::string error;
     RenderOptions options = test::options(mode);
     options.outline = true;  // as the editor draws
-    EXPECT_TRUE(context.create(1, 1, &error) && r.init(&error) && r.setScene(s, options, &error)) << error;
+    EXPECT_TRUE(context.create(1, 1, &error) && r.init(&error) && r.setScene(s, options, &error))
+        << error;
     EXPECT_TRUE(target.resize(kW, kH, GL_RGBA8));
     target.bind();
     glUseProgram(r.program()->id());
@@ -43,9 +44,12 @@ std::vector<int> stepsToObject(const Image& ids, int object) {
             if (objectIdAt(ids, x, y) == object) d[size_t(y) * kW + size_t(x)] = 0;
     for (int pass = 0; pass < 2; ++pass)  // two sweeps give the exact city-block distance
         for (int k = 0; k < kW * kH; ++k) {
-            int i = pass ? kW * kH - 1 - k : k, x = i % kW, dx = pass ? 1 : -1, dy = pass ? kW : -kW;
-            if (x + dx >= 0 && x + dx < kW) d[size_t(i)] = std::min(d[size_t(i)], d[size_t(i + dx)] + 1);
-            if (i + dy >= 0 && i + dy < kW * kH) d[size_t(i)] = std::min(d[size_t(i)], d[size_t(i + dy)] + 1);
+            int i = pass ? kW * kH - 1 - k : k, x = i % kW, dx = pass ? 1 : -1,
+                dy = pass ? kW : -kW;
+            if (x + dx >= 0 && x + dx < kW)
+                d[size_t(i)] = std::min(d[size_t(i)], d[size_t(i + dx)] + 1);
+            if (i + dy >= 0 && i + dy < kW * kH)
+                d[size_t(i)] = std::min(d[size_t(i)], d[size_t(i + dy)] + 1);
         }
     return d;
 }
@@ -58,7 +62,7 @@ int largestDifference(const uint8_t* a, const uint8_t* b) {
 
 TEST(Highlight, TheSelectionIsAnOrangeRingAndTheObjectKeepsItsColour) {
     Scene s = test::loadSceneOrDie("scenes/primitives.txt");
-    s.render.aa = 1;  // one ray a pixel: each pixel is on the object or off it
+    s.render.aa = 1;         // one ray a pixel: each pixel is on the object or off it
     const int selected = 1;  // the green box: a tint made it look olive
     std::vector<int> steps = stepsToObject(drawSelected(s, -1, RenderMode::ObjectId), selected);
     Image plain = drawSelected(s, -1), outlined = drawSelected(s, selected);
@@ -78,6 +82,7 @@ TEST(Highlight, TheSelectionIsAnOrangeRingAndTheObjectKeepsItsColour) {
         }
     ASSERT_GT(own, 1000) << "the box must be in view";
     EXPECT_EQ(ownChanged, 0) << "the selected object's own pixels must keep their colour";
-    EXPECT_GE(ringOrange, ring * 95 / 100) << ringOrange << " of the " << ring << " pixels beside the box are orange";
+    EXPECT_GE(ringOrange, ring * 95 / 100)
+        << ringOrange << " of the " << ring << " pixels beside the box are orange";
     EXPECT_EQ(farChanged, 0) << "pixels away from the box must not change";
 }

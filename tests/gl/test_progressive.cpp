@@ -94,8 +94,9 @@ TEST_P(Progressive, BandsOfSamplesEndWhereTheSupersampledRenderDoes) {
     EXPECT_LE(overOne, GetParam() ? 12 : 0) << "largest " << largest;
 }
 
-INSTANTIATE_TEST_SUITE_P(Checkerboard, Progressive, ::testing::Bool(),
-                         [](const auto& info) { return info.param ? "checkerboard" : "every_pixel"; });
+INSTANTIATE_TEST_SUITE_P(Checkerboard, Progressive, ::testing::Bool(), [](const auto& info) {
+    return info.param ? "checkerboard" : "every_pixel";
+});
 
 TEST(Progressive, ARendererBindsItsOwnSceneAgainAfterAnother) {
     Scene red = test::loadSceneOrDie("scenes/primitives.txt"), blue = red;

@@ -43,7 +43,8 @@ TEST(QualityPreset, NamesRoundTripAndNormalChangesNothing) {
 // largest channel times the intensity.
 TEST(QualityPreset, ShadowsFromTheLightsAtLeastHalfAsBrightAsTheBrightest) {
     Scene scene;
-    scene.lights = {Light{true, {0, -1, 0}, {1, 1, 1}, 1.0f}, Light{false, {0, 5, 0}, {0.5f, 0.2f, 0.1f}, 1.0f},
+    scene.lights = {Light{true, {0, -1, 0}, {1, 1, 1}, 1.0f},
+                    Light{false, {0, 5, 0}, {0.5f, 0.2f, 0.1f}, 1.0f},
                     Light{false, {1, 5, 0}, {1, 1, 1}, 0.4f}};
     EXPECT_EQ(shadowCasters(scene, 0.5f), 0b101u);  // the point light at 0.5, the sun
     EXPECT_EQ(shadowCasters(scene, 0.0f), 0b111u);

@@ -1,5 +1,6 @@
 // test_reference.cpp — every scene in scenes/, shaded by the GPU and by the CPU reference
-// (include/marchbox/reference/reference_render.h, docs/shading-model.md), agrees within stated bounds.
+// (include/marchbox/reference/reference_render.h, docs/shading-model.md), agrees within stated
+// bounds.
 //
 // The reference is written from the shading model, not from the GLSL, so this is the one check
 // that a bug both shaders share (say a wrong specular exponent in lighting.glsl) cannot pass.
@@ -62,7 +63,8 @@ bool interior(const Image& ids, const ReferenceImage& ref, int x, int row) {
     return true;
 }
 
-double largestChannelDiff(const Image& gpu, const ReferenceImage& ref, int x, int row, double* sum) {
+double largestChannelDiff(const Image& gpu, const ReferenceImage& ref, int x, int row,
+                          double* sum) {
     double worst = 0;
     for (int c = 0; c < 3; ++c) {
         double d = std::abs(double(gpu.pixel(x, row)[c]) - 255.0 * double(ref.color(x, row)[c]));
@@ -73,10 +75,10 @@ double largestChannelDiff(const Image& gpu, const ReferenceImage& ref, int x, in
 }
 
 struct Agreement {
-    double idShare = 0;       // pixels whose primary ray hits the same thing on both sides
-    int compared = 0;         // interior pixels
-    double mean = 0, p99 = 0; // over their channels; p99 of each pixel's largest channel
-    double maxOpen = 0;       // largest pixel difference outside soft penumbrae
+    double idShare = 0;        // pixels whose primary ray hits the same thing on both sides
+    int compared = 0;          // interior pixels
+    double mean = 0, p99 = 0;  // over their channels; p99 of each pixel's largest channel
+    double maxOpen = 0;        // largest pixel difference outside soft penumbrae
     int penumbraPixels = 0;
     double penumbraMean = 0, maxPenumbra = 0;
     int worstX = 0, worstRow = 0;  // where maxOpen is
@@ -138,23 +140,26 @@ TEST_P(Reference, GpuAgreesWithTheCpuReference) {
     ASSERT_EQ(ids.width, kW);
     ReferenceImage ref = renderReference(scene, kW, kH);
     Agreement a = compare(gpu, ids, ref);
-    std::printf("[ measured ] %-13s ids %.4f compared %4d mean %.2f p99 %.2f open max %.1f "
-                "penumbra %d px mean %.2f max %.1f\n",
-                name.c_str(), a.idShare, a.compared, a.mean, a.p99, a.maxOpen, a.penumbraPixels,
-                a.penumbraMean, a.maxPenumbra);
+    std::printf(
+        "[ measured ] %-13s ids %.4f compared %4d mean %.2f p99 %.2f open max %.1f "
+        "penumbra %d px mean %.2f max %.1f\n",
+        name.c_str(), a.idShare, a.compared, a.mean, a.p99, a.maxOpen, a.penumbraPixels,
+        a.penumbraMean, a.maxPenumbra);
 
     EXPECT_GE(a.idShare, kMinIdShare) << name << ": the two hit different objects";
     EXPECT_GE(a.compared, kMinComparedShare * kW * kH) << name << ": too few interior pixels";
     EXPECT_LE(a.mean, kMaxMean) << name;
     EXPECT_LE(a.p99, kMaxP99) << name;
-    EXPECT_LE(a.maxOpen, kMaxOpen) << name << ": worst at column " << a.worstX << ", row " << a.worstRow;
+    EXPECT_LE(a.maxOpen, kMaxOpen)
+        << name << ": worst at column " << a.worstX << ", row " << a.worstRow;
     EXPECT_LE(a.penumbraMean, kMaxPenumbraMean) << name << " (soft penumbrae)";
     EXPECT_LE(a.maxPenumbra, kMaxPenumbra) << name << " (soft penumbrae)";
     if (::testing::Test::HasFailure()) {
         std::string error;
         savePng(test::outputPath("reference_" + name + ".gpu.png"), gpu, &error);
         savePng(test::outputPath("reference_" + name + ".cpu.png"), toImage(ref), &error);
-        ADD_FAILURE() << "wrote " << test::outputPath("reference_" + name + ".gpu.png") << " and .cpu.png";
+        ADD_FAILURE() << "wrote " << test::outputPath("reference_" + name + ".gpu.png")
+                      << " and .cpu.png";
     }
 }
 

@@ -36,13 +36,15 @@ void expectEveryLineFound(const ShaderFeatures& f) {
     ASSERT_EQ(map.size(), lines.size());
     std::map<std::string, std::vector<std::string>> origins = {
         {"<defines>", splitLines(shaderPrefix(f))},
-        {"<scene code>", splitLines((f.compiled ? compileSceneMap(f.layout) + "\n" : "") + compileShapeSwitch(f.shapes))}};
+        {"<scene code>", splitLines((f.compiled ? compileSceneMap(f.layout) + "\n" : "") +
+                                    compileShapeSwitch(f.shapes))}};
     for (size_t i = 0; i < lines.size(); ++i) {
         const LineOrigin& o = map[i];
         if (!origins.count(o.file)) origins[o.file] = fileLines(o.file);
         const std::vector<std::string>& file = origins[o.file];
         ASSERT_TRUE(o.line >= 1 && o.line <= int(file.size())) << o.file << ':' << o.line;
-        EXPECT_EQ(lines[i], file[size_t(o.line - 1)]) << "line " << i + 1 << " mapped to " << o.file << ':' << o.line;
+        EXPECT_EQ(lines[i], file[size_t(o.line - 1)])
+            << "line " << i + 1 << " mapped to " << o.file << ':' << o.line;
     }
 }
 
@@ -54,14 +56,16 @@ TEST(ShaderLines, RewritesEachDriversLocationForm) {
               "b.glsl:42(14): error: syntax error\n<scene code>:3(1): warning: unused\n");  // Mesa
     EXPECT_EQ(rewriteShaderLog("ERROR: 0:1: 'x' : undeclared identifier", map),  // AMD, Intel
               "ERROR: a.glsl:7: 'x' : undeclared identifier");
-    EXPECT_EQ(rewriteShaderLog("0(2) : error C0000: syntax error", map), "b.glsl:42 : error C0000: syntax error");
+    EXPECT_EQ(rewriteShaderLog("0(2) : error C0000: syntax error", map),
+              "b.glsl:42 : error C0000: syntax error");
 }
 
 TEST(ShaderLines, LeavesOtherLinesAndLocationsPastTheMapAlone) {
     LineMap map = {{"a.glsl", 7}};
-    for (const char* log : {"0:2(1): error: past the end", "0:0(1): error: before the start",
-                            "1:1(1): error: another source string", "link error: 0:1 not at the start",
-                            "0:99999999999999999999(1): error: absurd", "", "\n\n"})
+    for (const char* log :
+         {"0:2(1): error: past the end", "0:0(1): error: before the start",
+          "1:1(1): error: another source string", "link error: 0:1 not at the start",
+          "0:99999999999999999999(1): error: absurd", "", "\n\n"})
         EXPECT_EQ(rewriteShaderLog(log, map), log);
 }
 

@@ -17,7 +17,8 @@ namespace {
 
 std::string sourceFor(const Scene& s, bool uber = false) {
     std::string src, error;
-    EXPECT_TRUE(fragmentSource(shaderFeatures(s, RenderMode::Shaded, uber, 65536), &src, &error)) << error;
+    EXPECT_TRUE(fragmentSource(shaderFeatures(s, RenderMode::Shaded, uber, 65536), &src, &error))
+        << error;
     return src;
 }
 

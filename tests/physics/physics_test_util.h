@@ -8,11 +8,14 @@
 
 namespace mb {
 
-inline int stepsFor(double seconds, const PhysicsSettings& s) { return int(std::llround(seconds / s.dt)); }
+inline int stepsFor(double seconds, const PhysicsSettings& s) {
+    return int(std::llround(seconds / s.dt));
+}
 
 inline bool finiteBody(const PhysicsBody& b) {
     for (int k = 0; k < 3; ++k)
-        if (!std::isfinite(b.pos[k]) || !std::isfinite(b.vel[k]) || !std::isfinite(b.spin[k])) return false;
+        if (!std::isfinite(b.pos[k]) || !std::isfinite(b.vel[k]) || !std::isfinite(b.spin[k]))
+            return false;
     return true;
 }
 

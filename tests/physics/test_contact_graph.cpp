@@ -31,7 +31,8 @@ std::vector<Contact> randomContacts(int count) {
 std::vector<int> levelsOf(const ContactGraph& g, int contacts) {
     std::vector<int> level(size_t(contacts), -1);
     for (int k = 0; k < g.levels(); ++k)
-        for (int s = g.levelBegin[size_t(k)] * kLanes; s < g.levelBegin[size_t(k) + 1] * kLanes; ++s)
+        for (int s = g.levelBegin[size_t(k)] * kLanes; s < g.levelBegin[size_t(k) + 1] * kLanes;
+             ++s)
             if (g.slots[size_t(s)] >= 0) level[size_t(g.slots[size_t(s)])] = k;
     return level;
 }
@@ -47,7 +48,8 @@ ContactGraph graphOf(const std::vector<Contact>& contacts, const int split[2]) {
 
 TEST(ContactGraph, LevelsShareNoDynamicBodyAndKeepEachBodysOrder) {
     const std::vector<Contact> contacts = randomContacts(300);
-    const int split[2] = {100, 180};  // the first two runs share bodies here: the graph must not care
+    const int split[2] = {100,
+                          180};  // the first two runs share bodies here: the graph must not care
     const ContactGraph g = graphOf(contacts, split);
     const std::vector<int> level = levelsOf(g, 300);
     for (int i = 0; i < 300; ++i) {
@@ -59,14 +61,17 @@ TEST(ContactGraph, LevelsShareNoDynamicBodyAndKeepEachBodysOrder) {
         for (int i = 0; i < 300; ++i) {
             if (level[size_t(i)] != k) continue;
             for (int body : {contacts[size_t(i)].a, contacts[size_t(i)].b})
-                EXPECT_TRUE(body == kStatic || bodies.insert(body).second) << "level " << k << " body " << body;
+                EXPECT_TRUE(body == kStatic || bodies.insert(body).second)
+                    << "level " << k << " body " << body;
         }
     }
-    // A later contact on the same dynamic body is solved in a later level, as in the one-at-a-time order.
+    // A later contact on the same dynamic body is solved in a later level, as in the one-at-a-time
+    // order.
     for (int i = 0; i < 300; ++i)
         for (int j = i + 1; j < 300; ++j) {
             const Contact &ci = contacts[size_t(i)], &cj = contacts[size_t(j)];
-            const bool shared = ci.b == cj.a || ci.b == cj.b || (ci.a != kStatic && (ci.a == cj.a || ci.a == cj.b));
+            const bool shared =
+                ci.b == cj.a || ci.b == cj.b || (ci.a != kStatic && (ci.a == cj.a || ci.a == cj.b));
             EXPECT_TRUE(!shared || level[size_t(i)] < level[size_t(j)]) << i << " before " << j;
         }
 }
@@ -93,7 +98,8 @@ TEST(ContactGraph, LoadedContactsLeadEachLevel) {
     for (int k = 0; k < g.levels(); ++k) {
         int last[2] = {-1, -1};  // the last open and loaded contact seen in the level
         bool openSeen = false, padSeen = false;
-        for (int s = g.levelBegin[size_t(k)] * kLanes; s < g.levelBegin[size_t(k) + 1] * kLanes; ++s) {
+        for (int s = g.levelBegin[size_t(k)] * kLanes; s < g.levelBegin[size_t(k) + 1] * kLanes;
+             ++s) {
             const int i = g.slots[size_t(s)];
             if (i < 0) {
                 padSeen = true;
@@ -101,7 +107,8 @@ TEST(ContactGraph, LoadedContactsLeadEachLevel) {
             }
             EXPECT_FALSE(padSeen) << "level " << k << ": a contact after padding";
             const bool loaded = contacts[size_t(i)].normalImpulse > 0.0;
-            EXPECT_FALSE(loaded && openSeen) << "level " << k << ": loaded contact " << i << " after an open one";
+            EXPECT_FALSE(loaded && openSeen)
+                << "level " << k << ": loaded contact " << i << " after an open one";
             openSeen = openSeen || !loaded;
             EXPECT_GT(i, last[loaded]) << "level " << k << ": out of solve order";
             last[loaded] = i;
@@ -114,7 +121,9 @@ TEST(ContactGraph, LoadedContactsLeadEachLevel) {
 TEST(ContactGraph, TheKeptXOrderFollowsTheBodies) {
     std::vector<PhysicsBody> bodies(size_t(kBodies) + 1);  // the static body last
     std::uint32_t state = 99;
-    auto next = [&] { return double((state = state * 1664525u + 1013904223u) >> 8) / double(1u << 24); };
+    auto next = [&] {
+        return double((state = state * 1664525u + 1013904223u) >> 8) / double(1u << 24);
+    };
     for (int i = 0; i < kBodies; ++i) bodies[size_t(i)].pos.x = next();
     std::vector<BodyX> kept;
     std::vector<char> side, fresh;
@@ -136,7 +145,8 @@ TEST(ContactGraph, TheKeptXOrderFollowsTheBodies) {
 TEST(ContactGraph, HalvesShareNoBody) {
     std::vector<PhysicsBody> bodies(size_t(kBodies) + 1);  // the static body last
     std::uint32_t state = 4242;
-    for (int i = 0; i < kBodies; ++i) bodies[size_t(i)].pos.x = double((state = state * 1664525u + 1013904223u) >> 8);
+    for (int i = 0; i < kBodies; ++i)
+        bodies[size_t(i)].pos.x = double((state = state * 1664525u + 1013904223u) >> 8);
     std::vector<BodyX> byX;
     std::vector<char> side;
     sideByMedianX(bodies, byX, side);
@@ -162,7 +172,8 @@ TEST(ContactGraph, HalvesShareNoBody) {
     std::set<int> touched[2];  // dynamic bodies in the worker's levels, and in this thread's
     for (int half = 0; half < 2; ++half)
         for (int k = half == 0 ? 0 : g.runEnd[0]; k < g.runEnd[half]; ++k)
-            for (int s = g.levelBegin[size_t(k)] * kLanes; s < g.levelBegin[size_t(k) + 1] * kLanes; ++s) {
+            for (int s = g.levelBegin[size_t(k)] * kLanes; s < g.levelBegin[size_t(k) + 1] * kLanes;
+                 ++s) {
                 if (g.slots[size_t(s)] < 0) continue;
                 const Contact& c = byRun[size_t(g.slots[size_t(s)])];
                 for (int body : {c.a, c.b})
@@ -170,5 +181,6 @@ TEST(ContactGraph, HalvesShareNoBody) {
             }
     EXPECT_FALSE(touched[0].empty());
     EXPECT_FALSE(touched[1].empty());
-    for (int body : touched[0]) EXPECT_EQ(touched[1].count(body), 0u) << "body " << body << " is in both halves";
+    for (int body : touched[0])
+        EXPECT_EQ(touched[1].count(body), 0u) << "body " << body << " is in both halves";
 }

@@ -1,4 +1,5 @@
-// test_physics_broadphase.cpp — the grid and its kept list find exactly the pairs a brute-force test finds.
+// test_physics_broadphase.cpp — the grid and its kept list find exactly the pairs a brute-force
+// test finds.
 #include "broadphase.h"
 
 #include <gtest/gtest.h>
@@ -31,7 +32,8 @@ std::vector<std::pair<int, int>> bruteForce(const Spheres& s) {
         for (size_t j = i + 1; j < s.centres.size(); ++j) {
             const double reach = s.extents[i] + s.extents[j];
             const glm::dvec3 d = s.centres[j] - s.centres[i];
-            if (d.x * d.x + d.y * d.y + d.z * d.z < reach * reach) pairs.emplace_back(int(i), int(j));
+            if (d.x * d.x + d.y * d.y + d.z * d.z < reach * reach)
+                pairs.emplace_back(int(i), int(j));
         }
     return pairs;
 }
@@ -40,11 +42,13 @@ std::vector<std::pair<int, int>> bruteForce(const Spheres& s) {
 
 TEST(PhysicsBroadphase, MatchesBruteForceWithMixedSizesAndMotion) {
     std::uint32_t state = 12345;
-    auto next = [&] { return float((state = state * 1664525u + 1013904223u) >> 8) / float(1u << 24); };
+    auto next = [&] {
+        return float((state = state * 1664525u + 1013904223u) >> 8) / float(1u << 24);
+    };
     auto [centres, extents] = scattered(next);
     Broadphase bp;
-    // Later rounds reuse the sorted cells, and the list of pairs while every sphere stays within its
-    // skin: moves of 5 mm keep it, growing every extent by half or moving 0.3 m must not.
+    // Later rounds reuse the sorted cells, and the list of pairs while every sphere stays within
+    // its skin: moves of 5 mm keep it, growing every extent by half or moving 0.3 m must not.
     const double moves[6] = {0.0, 0.005, 0.0, 0.005, 0.3, 0.005};
     for (int round = 0; round < 6; ++round) {
         if (round == 2)
@@ -61,13 +65,17 @@ TEST(PhysicsBroadphase, MatchesBruteForceWithMixedSizesAndMotion) {
 // drift together: the list is refreshed for those alone, and must still hold every pair.
 TEST(PhysicsBroadphase, RefreshingTheMovedSpheresKeepsEveryPair) {
     std::uint32_t state = 777;
-    auto next = [&] { return float((state = state * 1664525u + 1013904223u) >> 8) / float(1u << 24); };
+    auto next = [&] {
+        return float((state = state * 1664525u + 1013904223u) >> 8) / float(1u << 24);
+    };
     Spheres s = scattered(next);
     Broadphase bp;
     for (int round = 0; round < 40; ++round) {
         for (size_t i = 0; i < s.centres.size(); ++i) {
-            s.centres[i] += glm::dvec3(0.0, -0.05, 0.01);  // the common move, beside which moves count
-            if (next() < 0.04) s.centres[i] += 0.4 * glm::dvec3(next() - 0.5, next() - 0.5, next() - 0.5);
+            s.centres[i] +=
+                glm::dvec3(0.0, -0.05, 0.01);  // the common move, beside which moves count
+            if (next() < 0.04)
+                s.centres[i] += 0.4 * glm::dvec3(next() - 0.5, next() - 0.5, next() - 0.5);
             if (next() < 0.01) s.extents[i] *= 1.3;
         }
         std::vector<std::pair<int, int>> pairs;

@@ -81,8 +81,10 @@ TEST_P(PhysicsResting, SphereStaysPut) {
 }
 
 INSTANTIATE_TEST_SUITE_P(PhysicsScales, PhysicsResting,
-                         ::testing::Values(std::make_tuple(0.001f, 0.0f), std::make_tuple(1000.0f, 0.0f),
-                                           std::make_tuple(0.5f, 1e5f), std::make_tuple(0.001f, 1e5f)));
+                         ::testing::Values(std::make_tuple(0.001f, 0.0f),
+                                           std::make_tuple(1000.0f, 0.0f),
+                                           std::make_tuple(0.5f, 1e5f),
+                                           std::make_tuple(0.001f, 1e5f)));
 
 namespace {
 
@@ -118,7 +120,8 @@ TEST(PhysicsExtreme, PileComesToRest) {
     EXPECT_LE(highest, e0 + 1e-9 * std::abs(e0));
     EXPECT_EQ(w.stats().awake, 0);
     double moved = 0.0;
-    for (int k = 0; k < w.bodyCount(); ++k) moved = std::max(moved, glm::length(w.body(k).pos - before[size_t(k)]));
+    for (int k = 0; k < w.bodyCount(); ++k)
+        moved = std::max(moved, glm::length(w.body(k).pos - before[size_t(k)]));
     EXPECT_LT(moved, 1e-9) << "still moving in the last second";
     const double deepest = deepestOverlap(w, scene);
     EXPECT_LT(deepest, 1.5 * w.settings().linearSlop);
@@ -131,8 +134,8 @@ TEST(PhysicsExtreme, PileComesToRest) {
 // law with e = 1 on one pair, Δu = −2·u along n with the pair's effective mass, conserves the
 // pair's kinetic energy exactly, whatever else happens in the step. Without gravity nothing
 // rests, so every impact bounces (bounceThreshold). What is left is rounding, about 1e-16 per
-// impact over some 10⁴ impacts: bound 1e-9 (0.5 % would pass a plain solver). The spheres must not sink
-// into each other or the walls beyond the slop while they do it.
+// impact over some 10⁴ impacts: bound 1e-9 (0.5 % would pass a plain solver). The spheres must not
+// sink into each other or the walls beyond the slop while they do it.
 TEST(PhysicsExtreme, ElasticGasConservesEnergy) {
     PhysicsWorld w(gasScene(64, 3));
     const double e0 = w.kineticEnergy();

@@ -64,7 +64,8 @@ TEST(PhysicsGuards, FrictionlessSphereFollowsTheCurveOfATorus) {
     torus.minor = 0.25f;
     s.objects.push_back(torus);
     const double rho = 0.45, theta0 = 10.0 * M_PI / 180.0;
-    const glm::vec3 start(float(1.0 + rho * std::sin(theta0)), float(0.25 + rho * std::cos(theta0)), 0.0f);
+    const glm::vec3 start(float(1.0 + rho * std::sin(theta0)), float(0.25 + rho * std::cos(theta0)),
+                          0.0f);
     s.objects.push_back(dynamicSphere(start, 0.2f, 1.0f));
     PhysicsWorld w(s);
     const dvec3 core(1.0, 0.25, 0.0);
@@ -93,7 +94,8 @@ TEST_P(PhysicsWaking, ARollingSphereWakesTheSleeperItHits) {
     s.world.rolling = 0.0f;
     const Object sleeper = dynamicSphere({0, 0.2f, 0}, 0.2f, 1.0f);
     const Object roller = spinningSphere({-4, 0.2f, 0}, 0.2f, {2, 0, 0}, {0, 0, -10});
-    s.objects = sleeperFirst ? std::vector<Object>{sleeper, roller} : std::vector<Object>{roller, sleeper};
+    s.objects =
+        sleeperFirst ? std::vector<Object>{sleeper, roller} : std::vector<Object>{roller, sleeper};
     const int index = sleeperFirst ? 0 : 1;
     PhysicsWorld w(s);
     run(w, 1.2);
@@ -114,8 +116,8 @@ TEST(PhysicsGuards, ASceneMovedDownTenMetresGivesTheSameResult) {
         s.world.floor = floor;
         for (int c = 0; c < 3; ++c)
             for (int k = 0; k < 6; ++k)
-                s.objects.push_back(dynamicSphere({0.5f * float(c), floor + 0.1f + 0.205f * float(k), 0},
-                                                  0.1f, 1.0f + float(k)));
+                s.objects.push_back(dynamicSphere(
+                    {0.5f * float(c), floor + 0.1f + 0.205f * float(k), 0}, 0.1f, 1.0f + float(k)));
         return s;
     };
     PhysicsWorld high(columns(0.0f)), low(columns(-10.0f));
@@ -123,7 +125,8 @@ TEST(PhysicsGuards, ASceneMovedDownTenMetresGivesTheSameResult) {
     run(low, 1.0);
     double worst = 0.0;
     for (int i = 0; i < high.bodyCount(); ++i)
-        worst = std::max(worst, glm::length(high.body(i).pos - (low.body(i).pos + dvec3(0, 10, 0))));
+        worst =
+            std::max(worst, glm::length(high.body(i).pos - (low.body(i).pos + dvec3(0, 10, 0))));
     EXPECT_LT(worst, 1e-5) << "the same columns 10 m lower end elsewhere";
 }
 
@@ -142,5 +145,6 @@ TEST(PhysicsGuards, SphereOnSphereFrictionIsTheWorldsCoefficient) {
     run(w, 0.05);
     const double change = 1.0 - w.body(1).vel.x, expected = double(mu) * 9.81 * 0.05;
     EXPECT_NEAR(change, expected, 0.02 * expected)
-        << "sliding on a sphere decelerates at " << change / 0.05 << " m/s², not μ·g = " << expected / 0.05;
+        << "sliding on a sphere decelerates at " << change / 0.05
+        << " m/s², not μ·g = " << expected / 0.05;
 }

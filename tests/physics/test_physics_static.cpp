@@ -112,12 +112,15 @@ TEST_P(PhysicsBowl, FrictionlessBallKeepsItsSwingEnergy) {
     EXPECT_LT(drift, 0.02 * swing);
     EXPECT_LT(off, 0.1 * w.settings().linearSlop);
     EXPECT_GT(std::abs(w.body(0).vel.x) + std::abs(w.body(0).pos.x), 0.1) << "still swinging";
-    std::printf("bowl R %g, r %g, %g°: energy drift %.3g of the swing over 10 periods, %.3g m off "
-                "the circle\n", double(bowlRadius), double(ballRadius), double(degrees), drift / swing, off);
+    std::printf(
+        "bowl R %g, r %g, %g°: energy drift %.3g of the swing over 10 periods, %.3g m off "
+        "the circle\n",
+        double(bowlRadius), double(ballRadius), double(degrees), drift / swing, off);
 }
 
 INSTANTIATE_TEST_SUITE_P(PhysicsBowls, PhysicsBowl,
-                         ::testing::Values(std::make_tuple(1.5f, 0.2f, 20.0f), std::make_tuple(1.5f, 0.2f, 40.0f),
+                         ::testing::Values(std::make_tuple(1.5f, 0.2f, 20.0f),
+                                           std::make_tuple(1.5f, 0.2f, 40.0f),
                                            std::make_tuple(0.5f, 0.2f, 30.0f)));
 
 // A sphere set on a tilted plank (a rotated box: its top face is flat, so its contact keeps its
@@ -133,7 +136,8 @@ TEST_P(PhysicsRamp, AccelerationDownTheSlope) {
     const auto [degrees, mu, c, rolls] = GetParam();
     PhysicsWorld w(rampScene(degrees, mu, c));
     const PhysicsSettings& s = w.settings();
-    const double theta = double(degrees) * M_PI / 180.0, g = double(9.81f), h = s.dt / s.substeps, T = 1.0;
+    const double theta = double(degrees) * M_PI / 180.0, g = double(9.81f), h = s.dt / s.substeps,
+                 T = 1.0;
     const dvec3 down(-std::cos(theta), -std::sin(theta), 0.0), start = w.body(0).pos;
     const double a = rolls ? 5.0 / 7.0 * g * (std::sin(theta) - double(c) * std::cos(theta))
                            : g * (std::sin(theta) - double(mu) * std::cos(theta));
@@ -143,16 +147,19 @@ TEST_P(PhysicsRamp, AccelerationDownTheSlope) {
     EXPECT_NEAR(v, a * T, 2.0 * a * h);
     EXPECT_NEAR(d, 0.5 * a * T * T, 0.5 * a * T * h + 2.0 * a * h * T);
     EXPECT_NEAR(2.0 * d / (T * T), a, 0.01 * a);
-    const double slip = glm::length(b.vel + glm::cross(b.spin, dvec3(std::sin(theta), -std::cos(theta), 0) * b.radius));
+    const double slip = glm::length(
+        b.vel + glm::cross(b.spin, dvec3(std::sin(theta), -std::cos(theta), 0) * b.radius));
     if (rolls) {
         // Within a substep the rolling row, solved after friction, turns the spin back by
         // c·r·N·h / I: a slip of 5/2·c·g·cos θ·h that the next substep's friction row takes out.
-        EXPECT_LT(slip, 2.5 * double(c) * g * std::cos(theta) * h + 1e-9) << "rolls without slipping";
+        EXPECT_LT(slip, 2.5 * double(c) * g * std::cos(theta) * h + 1e-9)
+            << "rolls without slipping";
     } else {
         EXPECT_GT(slip, 0.1) << "slides";
     }
-    std::printf("ramp %g°, μ %g, c %g: a from v %.6f, from distance %.6f, exact %.6f; slip %.3g m/s\n",
-                double(degrees), double(mu), double(c), v / T, 2.0 * d / (T * T), a, slip);
+    std::printf(
+        "ramp %g°, μ %g, c %g: a from v %.6f, from distance %.6f, exact %.6f; slip %.3g m/s\n",
+        double(degrees), double(mu), double(c), v / T, 2.0 * d / (T * T), a, slip);
 }
 
 INSTANTIATE_TEST_SUITE_P(PhysicsRamps, PhysicsRamp,
@@ -185,11 +192,13 @@ TEST(PhysicsStatic, KeptClearanceFindsWhatMeasuringFinds) {
     std::vector<StaticHit> a, b;
     int seen = 0;
     for (int i = 0; i < 400; ++i) {
-        const double x = 2.0 - 0.0075 * (i < 200 ? i : 400 - i);  // into the box (its face at 0.5) and back
+        const double x =
+            2.0 - 0.0075 * (i < 200 ? i : 400 - i);  // into the box (its face at 0.5) and back
         kept.query(0, dvec3(x, 0.1, 0), 0.05, 0.02, a);
         fresh.query(i, dvec3(x, 0.1, 0), 0.05, 0.02, b);
         ASSERT_EQ(a.size(), b.size()) << "at x = " << x;
-        for (size_t k = 0; k < a.size(); ++k) EXPECT_EQ(a[k].separation, b[k].separation) << "at x = " << x;
+        for (size_t k = 0; k < a.size(); ++k)
+            EXPECT_EQ(a[k].separation, b[k].separation) << "at x = " << x;
         seen += a.empty() ? 0 : 1;
     }
     EXPECT_GT(seen, 0) << "the walk never reached the box: the test would see nothing";

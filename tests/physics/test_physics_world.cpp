@@ -19,7 +19,8 @@ std::uint64_t stateHash(const PhysicsWorld& w) {
     std::uint64_t h = 1469598103934665603ull;
     for (int i = 0; i < w.bodyCount(); ++i) {
         const PhysicsBody& b = w.body(i);
-        const double values[9] = {b.pos.x, b.pos.y, b.pos.z, b.vel.x, b.vel.y, b.vel.z, b.spin.x, b.spin.y, b.spin.z};
+        const double values[9] = {b.pos.x, b.pos.y,  b.pos.z,  b.vel.x, b.vel.y,
+                                  b.vel.z, b.spin.x, b.spin.y, b.spin.z};
         unsigned char bytes[sizeof values];
         std::memcpy(bytes, values, sizeof values);
         for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
@@ -59,7 +60,8 @@ TEST(PhysicsWorld, SimulateReportsEachHundredthOfItsSteps) {
     Scene s = projectileScene({1.0f, 2.0f, 0.0f}), quiet = s;
     EXPECT_EQ(simulate(s, 250.0 / 120, {}, [](double done) { reported.push_back(done); }), 250);
     ASSERT_EQ(reported.size(), 100u);
-    for (size_t i = 0; i < reported.size(); ++i)  // step ceil(2.5 (i + 1)) is the first past i + 1 %
+    for (size_t i = 0; i < reported.size();
+         ++i)  // step ceil(2.5 (i + 1)) is the first past i + 1 %
         EXPECT_DOUBLE_EQ(reported[i], std::ceil(2.5 * double(i + 1)) / 250.0) << i;
     simulate(quiet, 250.0 / 120);
     EXPECT_EQ(s.objects[0].pos, quiet.objects[0].pos);
@@ -143,7 +145,8 @@ TEST(PhysicsWorld, TwoLanesGiveTheSameBytesAsThisCpusLanes) {
 TEST(PhysicsWorld, TheCliThreadsSceneSplitsItsContacts) {
     Scene scene;
     std::vector<std::string> errors;
-    ASSERT_TRUE(loadScene(std::string(MARCHBOX_SOURCE_DIR) + "/tests/scenes/split_pile.txt", &scene, &errors))
+    ASSERT_TRUE(loadScene(std::string(MARCHBOX_SOURCE_DIR) + "/tests/scenes/split_pile.txt", &scene,
+                          &errors))
         << (errors.empty() ? "" : errors[0]);
     PhysicsSettings two;
     two.threads = 2;

@@ -16,15 +16,15 @@ using glm::dvec3;
 
 namespace {
 
-constexpr double kH = 1.0 / 480.0;          // the default 1/120 s step with 4 substeps
-constexpr int kTenSeconds = 4800;           // steps of kH
+constexpr double kH = 1.0 / 480.0;  // the default 1/120 s step with 4 substeps
+constexpr int kTenSeconds = 4800;   // steps of kH
 constexpr double kOneDegree = 3.14159265358979323846 / 180.0;
 
 Object shape(ShapeType type) {
     Object o;
     o.type = type;
     o.mass = 3.0f;
-    o.radius = 0.25f;                       // every size here is exact in binary
+    o.radius = 0.25f;  // every size here is exact in binary
     o.size = glm::vec3(0.1f, 0.2f, 0.4f);
     o.minor = 0.125f;
     o.height = 0.5f;
@@ -66,7 +66,11 @@ struct Tumbler {
 
     dvec3 momentum() const { return q * (inertia * (glm::conjugate(q) * spin)); }  // world L
     double energy() const { return 0.5 * glm::dot(spin, momentum()); }
-    dvec3 axis(int k) const { dvec3 e(0.0); e[k] = 1.0; return q * e; }          // in the world
+    dvec3 axis(int k) const {
+        dvec3 e(0.0);
+        e[k] = 1.0;
+        return q * e;
+    }  // in the world
     void step() { rotateFree(q, spin, inertia, kH); }
 };
 
@@ -127,13 +131,12 @@ TEST(RigidBodyMass, CapsuleLimitsAreTheSphereAndTheRod) {
 // the bound, 1e-3, is far under the smallest planted formula error (a capsule without its caps'
 // −9r²/64 is 4.6 % off here).
 TEST(RigidBodyMass, EachShapeMatchesASampledIntegralOfItsSdf) {
-    for (ShapeType type : {ShapeType::Sphere, ShapeType::Box, ShapeType::Torus,
-                           ShapeType::Capsule, ShapeType::Cylinder}) {
+    for (ShapeType type : {ShapeType::Sphere, ShapeType::Box, ShapeType::Torus, ShapeType::Capsule,
+                           ShapeType::Cylinder}) {
         const Object o = shape(type);
         const dvec3 closed = massProperties(o).inertia, sampled = sampledInertia(o, 160);
         for (int k = 0; k < 3; ++k)
-            EXPECT_NEAR(closed[k] / sampled[k], 1.0, 1e-3)
-                << shapeTypeName(type) << " axis " << k;
+            EXPECT_NEAR(closed[k] / sampled[k], 1.0, 1e-3) << shapeTypeName(type) << " axis " << k;
     }
 }
 

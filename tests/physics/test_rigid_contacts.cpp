@@ -45,7 +45,8 @@ Scene slopeScene(float degrees, float friction, Object body) {
     s.objects.push_back(plank);
     const double t = double(degrees) * M_PI / 180.0;
     const dvec3 along(std::cos(t), std::sin(t), 0.0), up(-std::sin(t), std::cos(t), 0.0);
-    const double lift = 0.5 + (body.type == ShapeType::Box ? double(body.size.y) : double(body.radius));
+    const double lift =
+        0.5 + (body.type == ShapeType::Box ? double(body.size.y) : double(body.radius));
     body.pos = glm::vec3(3.0 * along + lift * up);
     if (body.type == ShapeType::Box) body.rot = {0.0f, 0.0f, degrees};
     s.objects.push_back(body);
@@ -75,7 +76,8 @@ TEST(RigidContacts, BoxSlidesDownASlopeAtTheCoulombAcceleration) {
     const double t = 1.0, theta = double(degrees) * M_PI / 180.0;
     const double a = 9.81 * (std::sin(theta) - double(mu) * std::cos(theta));
     const double s = slid(w, t, degrees);
-    EXPECT_NEAR(-s, 0.5 * a * t * t, 0.01 * 0.5 * a * t * t) << "a = " << -2.0 * s / (t * t) << ", not " << a;
+    EXPECT_NEAR(-s, 0.5 * a * t * t, 0.01 * 0.5 * a * t * t)
+        << "a = " << -2.0 * s / (t * t) << ", not " << a;
 }
 
 // A solid cylinder rolling without slipping: a = ⅔·g·sin θ (I = ½·m·r²); a capsule rolls with
@@ -97,7 +99,8 @@ TEST_P(RigidRolling, RollsDownASlopeAtItsClosedFormAcceleration) {
     }
     const double a = 9.81 * std::sin(theta) / (1.0 + ratio), t = 1.0;
     const double s = slid(w, t, degrees);
-    EXPECT_NEAR(-s, 0.5 * a * t * t, 0.01 * 0.5 * a * t * t) << "a = " << -2.0 * s / (t * t) << ", not " << a;
+    EXPECT_NEAR(-s, 0.5 * a * t * t, 0.01 * 0.5 * a * t * t)
+        << "a = " << -2.0 * s / (t * t) << ", not " << a;
 }
 
 INSTANTIATE_TEST_SUITE_P(CylinderAndCapsule, RigidRolling,
@@ -127,11 +130,13 @@ TEST(RigidContacts, BoxDroppedFlatBouncesStraight) {
 // Ten unit boxes stacked: the top moves less than 1 cm in 60 s.
 TEST(RigidContacts, TenBoxStackStands) {
     Scene s = physicsWorld(9.81f, 0.3f, 0.6f, true);
-    for (int k = 0; k < 10; ++k) s.objects.push_back(dynamicBox({0, 0.5f + float(k), 0}, {0.5f, 0.5f, 0.5f}));
+    for (int k = 0; k < 10; ++k)
+        s.objects.push_back(dynamicBox({0, 0.5f + float(k), 0}, {0.5f, 0.5f, 0.5f}));
     PhysicsWorld w(s);
     const dvec3 top = w.rigid(9).pos;
     run(w, 60.0);
-    std::printf("stack: top moved %.4g m, %d awake\n", glm::length(w.rigid(9).pos - top), w.stats().awake);
+    std::printf("stack: top moved %.4g m, %d awake\n", glm::length(w.rigid(9).pos - top),
+                w.stats().awake);
     EXPECT_LT(glm::length(w.rigid(9).pos - top), 0.01);
 }
 

@@ -19,8 +19,9 @@ std::uint64_t rigidHash(const PhysicsWorld& w) {
     std::uint64_t h = 1469598103934665603ull;
     for (int i = 0; i < w.rigidCount(); ++i) {
         const RigidState b = w.rigid(i);
-        const double values[13] = {b.pos.x,  b.pos.y,  b.pos.z,  b.vel.x,    b.vel.y,    b.vel.z,    b.spin.x,
-                                   b.spin.y, b.spin.z, b.orient.w, b.orient.x, b.orient.y, b.orient.z};
+        const double values[13] = {b.pos.x,    b.pos.y,    b.pos.z,   b.vel.x,  b.vel.y,
+                                   b.vel.z,    b.spin.x,   b.spin.y,  b.spin.z, b.orient.w,
+                                   b.orient.x, b.orient.y, b.orient.z};
         unsigned char bytes[sizeof values];
         std::memcpy(bytes, values, sizeof values);
         for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
@@ -62,7 +63,8 @@ TEST(RigidWorld, TumblingBoxKeepsEnergyAndMomentum) {
     auto momentum = [&] {
         const RigidState b = w.rigid(0);
         const glm::dmat3 r = glm::mat3_cast(b.orient);
-        const dvec3 inertia = glm::dvec3(0.2 * 0.2 + 0.4 * 0.4, 0.1 * 0.1 + 0.4 * 0.4, 0.1 * 0.1 + 0.2 * 0.2) / 3.0;
+        const dvec3 inertia =
+            glm::dvec3(0.2 * 0.2 + 0.4 * 0.4, 0.1 * 0.1 + 0.4 * 0.4, 0.1 * 0.1 + 0.2 * 0.2) / 3.0;
         return r * (inertia * (glm::transpose(r) * b.spin));
     };
     const double e0 = w.kineticEnergy();
@@ -83,12 +85,14 @@ TEST(RigidWorld, PyramidSettlesAndSleeps) {
             Object box;
             box.type = ShapeType::Box;
             box.size = glm::vec3(0.25f);
-            box.pos = {0.5f * float(k) - 0.25f * float(base - row - 1), 0.25f + 0.5f * float(row), 0.0f};
+            box.pos = {0.5f * float(k) - 0.25f * float(base - row - 1), 0.25f + 0.5f * float(row),
+                       0.0f};
             s.objects.push_back(box);
         }
     PhysicsWorld w(s);
     const dvec3 top = w.rigid(w.rigidCount() - 1).pos;
-    for (int i = 0; i < stepsFor(10.0, w.settings()) && (i == 0 || w.stats().awake > 0); ++i) w.step();
+    for (int i = 0; i < stepsFor(10.0, w.settings()) && (i == 0 || w.stats().awake > 0); ++i)
+        w.step();
     EXPECT_EQ(w.stats().awake, 0) << "still awake after 10 s";
     EXPECT_LT(glm::length(w.rigid(w.rigidCount() - 1).pos - top), 0.02);
 }
@@ -119,6 +123,7 @@ TEST(RigidWorld, ASceneSavedMidRunContinuesAsTheRunDoes) {
     ASSERT_TRUE(parseScene(formatScene(halves), &again, &errors));
     simulate(again, 0.5);
     EXPECT_LT(glm::length(dvec3(again.objects[0].pos) - whole.rigid(0).pos), 1e-5);
-    EXPECT_LT(glm::length(glm::dquat(again.objects[0].orientation()) - whole.rigid(0).orient), 1e-5);
+    EXPECT_LT(glm::length(glm::dquat(again.objects[0].orientation()) - whole.rigid(0).orient),
+              1e-5);
     EXPECT_LT(glm::length(dvec3(again.objects[1].pos) - whole.rigid(1).pos), 1e-3);
 }

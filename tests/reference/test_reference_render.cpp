@@ -35,7 +35,8 @@ Light bulbAt(dvec3 pos, float intensity = 1.0f) {
     return Light{false, glm::vec3(pos), glm::vec3(1.0f), intensity};
 }
 
-// The shadow tests' scene: a default sphere (r = 0.5) 1 m above (0.5, 0, 0.5), the sun straight above.
+// The shadow tests' scene: a default sphere (r = 0.5) 1 m above (0.5, 0, 0.5), the sun straight
+// above.
 Scene ballUnderSun(int shadows) {
     Scene s = openFloor(sunFrom(dvec3(0, -1, 0)));
     s.render.shadows = shadows;
@@ -56,7 +57,8 @@ dvec3 floorPhong(double albedo, dvec3 l, dvec3 d, double intensity, double s = 1
 }
 
 void expectColor(dvec3 actual, dvec3 expected, double tol, const char* what) {
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(actual[c], expected[c], tol) << what << ", channel " << c;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(actual[c], expected[c], tol) << what << ", channel " << c;
 }
 
 // A ray from `eye` that meets the floor at `p`.
@@ -71,9 +73,10 @@ TEST(ReferenceRender, LitFloorIsAmbientPlusDiffusePlusSpecular) {
     Scene s = openFloor(sunFrom(travel, 0.9f));
     dvec3 eye(0, 2, -4);
     // The last point lies near the highlight, at (-0.6, 0, -4.4) where d mirrored about n is l.
-    for (auto [p, albedo] : {std::pair{dvec3(0.5, 0, 0.5), kLight}, std::pair{dvec3(1.5, 0, 0.5), kDark},
-                             std::pair{dvec3(-0.5, 0, -0.5), kLight}, std::pair{dvec3(-0.5, 0, -1.5), kDark},
-                             std::pair{dvec3(-0.5, 0, -4.0), kDark}}) {
+    for (auto [p, albedo] :
+         {std::pair{dvec3(0.5, 0, 0.5), kLight}, std::pair{dvec3(1.5, 0, 0.5), kDark},
+          std::pair{dvec3(-0.5, 0, -0.5), kLight}, std::pair{dvec3(-0.5, 0, -1.5), kDark},
+          std::pair{dvec3(-0.5, 0, -4.0), kDark}}) {
         ReferenceSample r = traceTo(s, eye, p);
         EXPECT_EQ(r.object, kHitGround);
         EXPECT_NEAR(r.t, glm::length(p - eye), 1e-9);
@@ -92,10 +95,12 @@ TEST(ReferenceRender, SpecularPeaksAlongTheMirrorDirection) {
 TEST(ReferenceRender, HardShadowLeavesOnlyAmbientUnderASphere) {
     Scene s = ballUnderSun(1);
     dvec3 eye(0, 3, -4);
-    expectColor(traceTo(s, eye, dvec3(0.6, 0, 0.4)).color, dvec3(kKa * kLight), 1e-6, "under the ball");
+    expectColor(traceTo(s, eye, dvec3(0.6, 0, 0.4)).color, dvec3(kKa * kLight), 1e-6,
+                "under the ball");
     dvec3 open(2.5, 0, 0.5);  // light square, straight-down light: n·l = 1
-    expectColor(traceTo(s, eye, open).color, floorPhong(kLight, dvec3(0, 1, 0), glm::normalize(open - eye), 1.0),
-                1e-6, "in the open");
+    expectColor(traceTo(s, eye, open).color,
+                floorPhong(kLight, dvec3(0, 1, 0), glm::normalize(open - eye), 1.0), 1e-6,
+                "in the open");
 }
 
 // Light straight up from (x, 0, z) past a ball of radius R centred h above (x0, z0): the field
@@ -136,7 +141,8 @@ TEST(ReferenceRender, SkyIsAGradientWithASunDisc) {
     expectColor(traceReference(s, dvec3(0), up).color, kZenith + 0.5 * glowUp, 1e-6, "zenith");
     double e = towards.y;
     dvec3 gradient = kHorizon + (kZenith - kHorizon) * std::sqrt(e);
-    expectColor(traceReference(s, dvec3(0), towards).color, gradient + 0.5 * (4.0 + 0.25), 1e-6, "sun");
+    expectColor(traceReference(s, dvec3(0), towards).color, gradient + 0.5 * (4.0 + 0.25), 1e-6,
+                "sun");
     EXPECT_EQ(traceReference(s, dvec3(0), towards).object, kHitNone);
 }
 
@@ -169,15 +175,15 @@ TEST(ReferenceRender, MirrorSphereReflectsTheSkyAndTheFloor) {
     // Half a mirror keeps half of its own colour (Ka = 1, nothing else: the albedo itself).
     Scene half = s;
     half.materials[0] = Material{"half", {0.2f, 0.4f, 0.6f}, 1.0f, 0.0f, 0.0f, 32.0f, 0.5f};
-    expectColor(traceReference(half, hit30 - 2.0 * down, down).color, 0.5 * dvec3(0.2, 0.4, 0.6) + 0.5 * skyThere,
-                2e-3, "half a mirror");
+    expectColor(traceReference(half, hit30 - 2.0 * down, down).color,
+                0.5 * dvec3(0.2, 0.4, 0.6) + 0.5 * skyThere, 2e-3, "half a mirror");
     // At 60° the mirror ray (0, -0.5, -0.866) meets the floor 2.5 m on, in a dark square.
     dvec3 n60(0, 0.5, -std::sin(M_PI / 3)), hit60 = centre + 0.5 * n60;
     dvec3 bounce = down - 2.0 * glm::dot(down, n60) * n60, floorPoint = hit60 + 2.5 * bounce;
     ASSERT_NEAR(floorPoint.y, 0.0, 1e-12);
     dvec3 l = glm::normalize(dvec3(3, 6, -3) - floorPoint);
-    expectColor(traceReference(s, hit60 - 2.0 * down, down).color, floorPhong(kDark, l, bounce, 1.0), 2e-3,
-                "floor in the mirror");
+    expectColor(traceReference(s, hit60 - 2.0 * down, down).color,
+                floorPhong(kDark, l, bounce, 1.0), 2e-3, "floor in the mirror");
 }
 
 TEST(ReferenceRender, AmbientOcclusionBesideAWall) {

@@ -66,11 +66,10 @@ TEST(ObjectGrid, SpreadsManyObjectsThinly) {
     }
     ObjectGrid grid = buildObjectGrid(makeSceneSdf(s), 1.0f);
     size_t most = 0;
-    for (int c = 0; c < grid.cellCount(); ++c) most = std::max<size_t>(most, grid.cellStart[c + 1] - grid.cellStart[c]);
+    for (int c = 0; c < grid.cellCount(); ++c)
+        most = std::max<size_t>(most, grid.cellStart[c + 1] - grid.cellStart[c]);
     EXPECT_LE(most, 16u) << "a step should visit a handful of spheres, not thousands";
     EXPECT_EQ(grid.cellStart.back(), grid.items.size());
 }
 
-TEST(ObjectGrid, EmptySceneHasNoCells) {
-    EXPECT_EQ(buildObjectGrid(SceneSdf{}).cellCount(), 0);
-}
+TEST(ObjectGrid, EmptySceneHasNoCells) { EXPECT_EQ(buildObjectGrid(SceneSdf{}).cellCount(), 0); }

@@ -57,7 +57,7 @@ object type:sphere material:1 pos:2,0.9,0 radius:0.6 static:1 op:subtract blend:
 - type:0 material:2 pos:-1.5,3,0.5 radius:0.4 mass:1
 )";
 
-const char* kMat = "material r:1 g:1 b:1";                     // one valid material, line 1
+const char* kMat = "material r:1 g:1 b:1";                           // one valid material, line 1
 const char* kObj = "material r:1 g:1 b:1\nobject type:0 pos:0,0,0";  // an object on line 2
 
 // A fatal failure where the text does not parse: callers that go on to index the scene wrap
@@ -66,7 +66,8 @@ Scene parseOk(const std::string& text) {
     Scene s;
     std::vector<SceneError> errors;
     [&] {
-        ASSERT_TRUE(parseScene(text, &s, &errors)) << text << "\nfirst error: "
+        ASSERT_TRUE(parseScene(text, &s, &errors))
+            << text << "\nfirst error: "
             << (errors.empty() ? "" : std::to_string(errors[0].line) + ": " + errors[0].message);
     }();
     return s;
@@ -82,8 +83,8 @@ std::vector<SceneError> parseErrors(const std::string& text) {
 // Expects `text` to fail with exactly one error, at `line`, saying `message`.
 void expectError(const std::string& text, int line, const std::string& message) {
     std::vector<SceneError> errors = parseErrors(text);
-    ASSERT_EQ(errors.size(), 1u) << text << "\nfirst: "
-                                 << (errors.empty() ? "" : errors[0].message);
+    ASSERT_EQ(errors.size(), 1u) << text
+                                 << "\nfirst: " << (errors.empty() ? "" : errors[0].message);
     EXPECT_EQ(errors[0].line, line) << text;
     EXPECT_EQ(errors[0].message, message) << text;
 }
@@ -116,7 +117,7 @@ TEST(SceneParse, ExampleFromSpecLoadsWithItsValues) {
     EXPECT_EQ(s.render.epsilon, 0.001f);  // default
     ASSERT_EQ(s.materials.size(), 3u);
     EXPECT_EQ(s.materials[1].name, "mirror");
-    EXPECT_EQ(s.materials[1].Ka, 0.1f);  // default
+    EXPECT_EQ(s.materials[1].Ka, 0.1f);           // default
     EXPECT_EQ(s.materials[2].name, "material2");  // the legacy line, unnamed
     EXPECT_EQ(s.materials[2].color, glm::vec3(0.2f, 0.8f, 0.3f));
     EXPECT_EQ(s.materials[2].C, 16.0f);
@@ -145,18 +146,20 @@ TEST(SceneParse, EmptyTextIsTheDefaultScene) {
 TEST(SceneParse, CrlfCommentsBlanksTabsAndIndentAreIgnored) {
     std::string crlf = std::regex_replace(std::string(kExample), std::regex("\n"), "\r\n");
     EXPECT_EQ(parseOk(crlf), parseOk(kExample));
-    Scene s = parseOk("# comment\n\n  \t\n   # indented comment\r\n"
-                      "\tcamera\tfov:30  pos:1,2,3\t\n");
+    Scene s = parseOk(
+        "# comment\n\n  \t\n   # indented comment\r\n"
+        "\tcamera\tfov:30  pos:1,2,3\t\n");
     EXPECT_EQ(s.camera.fov, 30.0f);
     EXPECT_EQ(s.camera.pos, glm::vec3(1, 2, 3));
 }
 
 TEST(SceneParse, LegacyLinesAndDashPrefix) {
-    Scene s = parseOk("- r:0.2 g:0.8 b:0.3 Ka:0.1 Kd:0.7 Ks:0.3 C:16\n"
-                      "r:1 g:1 b:1\n"
-                      "- type:0 material:1 pos:-1.5,3,0.5 radius:0.4 mass:1\n"
-                      "type:4 pos:0,0,0\n"
-                      "- camera fov:30\n");
+    Scene s = parseOk(
+        "- r:0.2 g:0.8 b:0.3 Ka:0.1 Kd:0.7 Ks:0.3 C:16\n"
+        "r:1 g:1 b:1\n"
+        "- type:0 material:1 pos:-1.5,3,0.5 radius:0.4 mass:1\n"
+        "type:4 pos:0,0,0\n"
+        "- camera fov:30\n");
     ASSERT_EQ(s.materials.size(), 2u);
     EXPECT_EQ(s.materials[0].color, glm::vec3(0.2f, 0.8f, 0.3f));
     EXPECT_EQ(s.materials[0].Kd, 0.7f);
@@ -188,7 +191,8 @@ TEST(SceneParse, TypeByNameOrNumberAndOpByName) {
         EXPECT_EQ(s.objects[1].type, ShapeType(i));
     }
     Scene s;
-    ASSERT_NO_FATAL_FAILURE(s = parseOk(std::string(kObj) + " op:union\n" + "object type:0 pos:0,0,0 op:intersect\n"));
+    ASSERT_NO_FATAL_FAILURE(
+        s = parseOk(std::string(kObj) + " op:union\n" + "object type:0 pos:0,0,0 op:intersect\n"));
     EXPECT_EQ(s.objects[0].op, CsgOp::Union);
     EXPECT_EQ(s.objects[1].op, CsgOp::Intersect);
 }
@@ -205,7 +209,8 @@ TEST(SceneParse, NumberForms) {
 
 TEST(SceneParse, WholeNumberKeysAcceptIntegerValuedNumbers) {
     Scene s;
-    ASSERT_NO_FATAL_FAILURE(s = parseOk("scene version:1.0\nrender steps:256.0 aa:2e0 shadows:0\n"));
+    ASSERT_NO_FATAL_FAILURE(
+        s = parseOk("scene version:1.0\nrender steps:256.0 aa:2e0 shadows:0\n"));
     EXPECT_EQ(s.render.steps, 256);
     EXPECT_EQ(s.render.aa, 2);
     EXPECT_EQ(s.render.shadows, 0);
@@ -215,7 +220,8 @@ TEST(SceneParse, WholeNumberKeysAcceptIntegerValuedNumbers) {
 
 TEST(SceneParse, ObjectMayComeBeforeItsMaterial) {
     Scene s;
-    ASSERT_NO_FATAL_FAILURE(s = parseOk("object type:box pos:0,0,0 material:1\n" + repeatLines(kMat, 2)));
+    ASSERT_NO_FATAL_FAILURE(
+        s = parseOk("object type:box pos:0,0,0 material:1\n" + repeatLines(kMat, 2)));
     EXPECT_EQ(s.objects[0].material, 1);
 }
 
@@ -233,7 +239,11 @@ TEST(SceneParse, FailureLeavesTheSceneUntouched) {
 // Errors
 //-----------------------------------------------------------------------------
 TEST(SceneErrors, EachKindWithItsLine) {
-    struct Case { std::string text; int line; const char* message; };
+    struct Case {
+        std::string text;
+        int line;
+        const char* message;
+    };
     const std::string obj = kObj;
     const Case cases[] = {
         {"camera fov:45\nsphere pos:0,0,0", 2, "unknown record kind 'sphere'"},
@@ -291,7 +301,8 @@ TEST(SceneErrors, QuotedTextHasNoControlBytesAndWholeCharacters) {
     expectError("camera fov:40\r fov:30", 1, "expected key:value, got 'fov:40?'");
     expectError(std::string("camera fov:4\0", 13), 1, "'fov' must be a number, got '4?'");
     const std::string e39 = std::string(39, 'e') + "\xC3\xA9";  // 'é' straddles byte 40
-    expectError("camera " + e39 + ":1", 1, "expected key:value, got '" + std::string(39, 'e') + "...'");
+    expectError("camera " + e39 + ":1", 1,
+                "expected key:value, got '" + std::string(39, 'e') + "...'");
 }
 
 // Every range in the spec's table: the value just outside fails, the bound itself loads.
@@ -389,8 +400,8 @@ TEST(SceneLimits, MegabyteLineIsAnErrorAtItsLineAndReadingGoesOn) {
 
 TEST(SceneLimits, LongestNumberAllowedOnALine) {
     std::string digits(4000, '1');  // regexes run on tokens this long without trouble
-    expectError("camera fov:" + digits, 1, "'fov' must be a number within float range, got '" +
-                                               digits.substr(0, 40) + "...'");
+    expectError("camera fov:" + digits, 1,
+                "'fov' must be a number within float range, got '" + digits.substr(0, 40) + "...'");
     EXPECT_NEAR(parseOk("camera fov:1." + digits).camera.fov, 1.1111111f, 1e-6f);
 }
 
@@ -450,11 +461,15 @@ TEST(SceneFormat, EveryKeyWrittenAndUnnamedMaterialsGetTheirIndexName) {
     s.objects[0].op = CsgOp::Subtract;
     std::string text = formatScene(s);
     EXPECT_NE(text.find("\nmaterial name:red r:1 g:1 b:1 Ka:0.1 Kd:0.8 Ks:0.5 C:32 Kr:0\n"
-                        "material name:material1 "), std::string::npos) << text;
+                        "material name:material1 "),
+              std::string::npos)
+        << text;
     EXPECT_NE(text.find("\nlight dir:0,-1,0 color:1,1,1 intensity:1\n"), std::string::npos);
     EXPECT_NE(text.find("\nobject type:sphere material:0 pos:0,0,0 radius:0.5 size:0.5,0.5,0.5 "
                         "minor:0.1 height:1 orient:1,0,0,0 mass:1 vel:0,0,0 spin:0,0,0 static:0 "
-                        "op:subtract blend:0\n"), std::string::npos) << "a body writes orient" << text;
+                        "op:subtract blend:0\n"),
+              std::string::npos)
+        << "a body writes orient" << text;
 }
 
 void expectRoundTrip(const Scene& s) {
@@ -560,7 +575,8 @@ std::vector<std::string> recordLines(Scene s) {
     for (Object& o : s.objects) o.comment.clear();
     std::vector<std::string> lines;
     std::string text = formatScene(s);
-    for (size_t start = 0, end; (end = text.find('\n', start)) != std::string::npos; start = end + 1)
+    for (size_t start = 0, end; (end = text.find('\n', start)) != std::string::npos;
+         start = end + 1)
         lines.push_back(text.substr(start, end - start + 1));
     return lines;
 }
@@ -587,17 +603,16 @@ const char* kCommented =
 TEST(SceneComments, EachRunStaysAboveItsRecordInTheCanonicalOrder) {
     Scene s;
     ASSERT_NO_FATAL_FAILURE(s = parseOk(kCommented));
-    std::vector<std::string> r = recordLines(s);  // scene camera world render 2×material light 2×object
+    std::vector<std::string> r =
+        recordLines(s);  // scene camera world render 2×material light 2×object
     ASSERT_EQ(r.size(), 9u);
     // A save starts with `scene version:1` (SCENE_FORMAT.md): the lines above it go with the
     // record that followed it, here the first object.
-    EXPECT_EQ(formatScene(s),
-              r[0] +
-              "\n# the camera, last in this file\n" + r[1] + r[2] + r[3] + r[4] +
-              "\n# blue\n" + r[5] + r[6] +
-              "# Notes on the whole file\n# the objects come first here\n" + r[7] +
-              "  # indented, with trailing blanks\n" + r[8] +
-              "\n# the end\n");
+    EXPECT_EQ(formatScene(s), r[0] + "\n# the camera, last in this file\n" + r[1] + r[2] + r[3] +
+                                  r[4] + "\n# blue\n" + r[5] + r[6] +
+                                  "# Notes on the whole file\n# the objects come first here\n" +
+                                  r[7] + "  # indented, with trailing blanks\n" + r[8] +
+                                  "\n# the end\n");
     EXPECT_EQ(s.objects[1].comment, "  # indented, with trailing blanks\n");
     EXPECT_EQ(s.comments.end, "\n# the end\n");
 }
@@ -607,8 +622,8 @@ TEST(SceneComments, RoundTripKeepsEveryCommentAndSavingTwiceGivesTheSameBytes) {
     ASSERT_NO_FATAL_FAILURE(s = parseOk(kCommented));
     const std::string saved = formatScene(s);
     for (const char* note : {"# Notes on the whole file", "# the objects come first here",
-                             "  # indented, with trailing blanks", "# the camera, last in this file",
-                             "# blue", "# the end"})
+                             "  # indented, with trailing blanks",
+                             "# the camera, last in this file", "# blue", "# the end"})
         EXPECT_NE(saved.find(std::string(note) + "\n"), std::string::npos) << note;
     Scene again;
     ASSERT_NO_FATAL_FAILURE(again = parseOk(saved));
@@ -654,12 +669,15 @@ TEST(SceneComments, AnythingAProgramPutsThereSavesAsCommentsThatReadBack) {
     s.objects[0].comment = "#" + std::string(5000, 'x') + "\n";
     const std::string saved = formatScene(s);
     EXPECT_NE(saved.find("\n# not a comment\n  # spaced\n\n# \r# carriage\n# no newline\ncamera "),
-              std::string::npos) << saved;
-    EXPECT_NE(saved.find("\n#" + std::string(kMaxLineBytes - 1, 'x') + "\nobject "), std::string::npos);
+              std::string::npos)
+        << saved;
+    EXPECT_NE(saved.find("\n#" + std::string(kMaxLineBytes - 1, 'x') + "\nobject "),
+              std::string::npos);
     Scene back;
     ASSERT_NO_FATAL_FAILURE(back = parseOk(saved));
     EXPECT_EQ(formatScene(back), saved);
-    EXPECT_EQ(back.comments.camera, "# not a comment\n  # spaced\n\n# \r# carriage\n# no newline\n");
+    EXPECT_EQ(back.comments.camera,
+              "# not a comment\n  # spaced\n\n# \r# carriage\n# no newline\n");
 }
 
 // rolling is written after friction, in the order of the spec's table, and reads back exactly.
@@ -667,8 +685,11 @@ TEST(SceneFormat, RollingIsWrittenAndRoundTrips) {
     Scene s;
     s.world.rolling = 0.0375f;
     const std::string text = formatScene(s);
-    EXPECT_NE(text.find("\nworld gravity:9.81 restitution:0.8 friction:0.3 rolling:0.0375 floor:0 ground:1\n"),
-              std::string::npos) << text;
+    EXPECT_NE(
+        text.find(
+            "\nworld gravity:9.81 restitution:0.8 friction:0.3 rolling:0.0375 floor:0 ground:1\n"),
+        std::string::npos)
+        << text;
     expectRoundTrip(s);
     s.world.rolling = 0.0f;
     EXPECT_NE(formatScene(s).find(" rolling:0 "), std::string::npos);
@@ -837,15 +858,17 @@ TEST(SceneVersion2, AVersion1BoxStaysStillAndSavesAsStatic) {
     EXPECT_TRUE(s.objects[0].dynamic());
     const std::string text = formatScene(s);
     EXPECT_NE(text.find("object type:box material:1 pos:2,0.5,0 size:0.5,1.5,0.5"), 0u);
-    EXPECT_NE(text.find("rot:0,30,0 mass:1 vel:0,0,0 spin:0,0,0 static:1"), std::string::npos) << text;
+    EXPECT_NE(text.find("rot:0,30,0 mass:1 vel:0,0,0 spin:0,0,0 static:1"), std::string::npos)
+        << text;
 }
 
 TEST(SceneVersion2, OwnFrictionRestitutionNameAndOrientRoundTrip) {
     Scene s;
-    ASSERT_NO_FATAL_FAILURE(s = parseOk(
-        "scene version:2\n" + std::string(kMat) +
-        "\nobject type:capsule name:peg.1 pos:0,1,0 orient:0.7071068,0,0.7071068,0 mass:2 friction:0.9"
-        " restitution:0.1\nobject type:box pos:0,3,0 static:1 orient:1,0,0,0\n"));
+    ASSERT_NO_FATAL_FAILURE(
+        s = parseOk("scene version:2\n" + std::string(kMat) +
+                    "\nobject type:capsule name:peg.1 pos:0,1,0 orient:0.7071068,0,0.7071068,0 "
+                    "mass:2 friction:0.9"
+                    " restitution:0.1\nobject type:box pos:0,3,0 static:1 orient:1,0,0,0\n"));
     ASSERT_EQ(s.objects.size(), 2u);
     const Object& o = s.objects[0];
     EXPECT_EQ(o.name, "peg.1");
@@ -871,7 +894,8 @@ TEST(SceneVersion2, EachNewErrorWithItsLine) {
     const std::string v2 = "scene version:2\n", obj = "object type:box pos:0,0,0 ";
     const Case cases[] = {
         {v2 + obj + "rot:0,1,0 orient:1,0,0,0", 2, "an object holds 'rot' or 'orient', not both"},
-        {v2 + obj + "orient:1,0,0,0.1", 2, "'orient' must be a unit quaternion (length within 1e-3 of 1), got '1,0,0,0.1'"},
+        {v2 + obj + "orient:1,0,0,0.1", 2,
+         "'orient' must be a unit quaternion (length within 1e-3 of 1), got '1,0,0,0.1'"},
         {v2 + obj + "orient:1,0,0", 2, "'orient' must be a quaternion w,x,y,z, got '1,0,0'"},
         {obj + "orient:1,0,0,0", 1, "'orient' needs scene version:2"},
         {obj + "name:a", 1, "'name' needs scene version:2"},
@@ -883,7 +907,8 @@ TEST(SceneVersion2, EachNewErrorWithItsLine) {
         {v2 + "keyframe t:-1", 2, "'t' must be >= 0"},
         {v2 + obj + "friction:-1", 2, "'friction' must be >= 0"},
         {v2 + obj + "restitution:2", 2, "'restitution' must be 0 to 1"},
-        {v2 + obj + "name:a,b", 2, "'name' must be a name of letters, digits, '_', '.' or '-', got 'a,b'"},
+        {v2 + obj + "name:a,b", 2,
+         "'name' must be a name of letters, digits, '_', '.' or '-', got 'a,b'"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.text);

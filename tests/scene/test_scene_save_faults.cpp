@@ -161,17 +161,16 @@ TEST_P(EachStepFails, OldFileWholeSceneIntactOneLineError) {
     expectFailedSaveKeptEverything(std::strerror(GetParam().err));
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Save, EachStepFails,
-    ::testing::Values(StepCase{Step::Open, EACCES, "Open"},
-                      StepCase{Step::Open, EMFILE, "OpenNoDescriptors"},
-                      StepCase{Step::Write, EIO, "Write"},
-                      StepCase{Step::ShortWrite, ENOSPC, "DiskFillsMidWrite"},
-                      StepCase{Step::ZeroWrite, EIO, "WriteTakesNothing"},
-                      StepCase{Step::Fsync, EIO, "Fsync"},
-                      StepCase{Step::Close, EDQUOT, "Close"},
-                      StepCase{Step::Rename, EXDEV, "Rename"}),
-    [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(Save, EachStepFails,
+                         ::testing::Values(StepCase{Step::Open, EACCES, "Open"},
+                                           StepCase{Step::Open, EMFILE, "OpenNoDescriptors"},
+                                           StepCase{Step::Write, EIO, "Write"},
+                                           StepCase{Step::ShortWrite, ENOSPC, "DiskFillsMidWrite"},
+                                           StepCase{Step::ZeroWrite, EIO, "WriteTakesNothing"},
+                                           StepCase{Step::Fsync, EIO, "Fsync"},
+                                           StepCase{Step::Close, EDQUOT, "Close"},
+                                           StepCase{Step::Rename, EXDEV, "Rename"}),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 TEST_F(SaveFaults, InterruptedWriteIsRetriedAndTheSaveSucceeds) {
     g.interruptNextWrite = true;
@@ -254,7 +253,8 @@ TEST_F(SaveFaults, SignalActionsAreAsBeforeAfterASave) {
         std::signal(SIGHUP, SIG_IGN);
         std::string error;
         if (!saveScene(target(), scene_, &error)) return 3;
-        struct sigaction interrupt {}, hangup {};
+        struct sigaction interrupt {
+        }, hangup{};
         sigaction(SIGINT, nullptr, &interrupt);
         sigaction(SIGHUP, nullptr, &hangup);
         return interrupt.sa_handler == SIG_DFL && hangup.sa_handler == SIG_IGN ? 0 : 4;

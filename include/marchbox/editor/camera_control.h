@@ -13,10 +13,10 @@ namespace mb {
 
 struct CameraControls {
     float orbitRadiansPerPixel = 0.005f;
-    float zoomPerWheelStep = 0.85f;     // distance factor for one wheel notch forward
+    float zoomPerWheelStep = 0.85f;  // distance factor for one wheel notch forward
     float minDistance = 0.05f, maxDistance = 1e4f;
-    float maxPitch = 1.54f;             // rad from the horizon: never quite over the pole
-    float flySpeed = 4.0f;              // m/s
+    float maxPitch = 1.54f;  // rad from the horizon: never quite over the pole
+    float flySpeed = 4.0f;   // m/s
     float previewRadiansPerSecond = 0.4f;
 };
 

@@ -19,9 +19,9 @@ using SceneChange = std::function<void(Scene&)>;
 class Document {
 public:
     const Scene& scene() const { return scene_; }
-    const std::string& path() const { return path_; }   // empty for a scene never saved
+    const std::string& path() const { return path_; }  // empty for a scene never saved
     std::string name() const;  // the file's name without its folder, "untitled" without one
-    bool dirty() const;  // the scene differs from its file (from New's scene), camera aside
+    bool dirty() const;        // the scene differs from its file (from New's scene), camera aside
     const History& history() const { return history_; }
 
     // New or Open: a fresh history, clean.
@@ -35,7 +35,10 @@ public:
 
     // Changes kept out of the history: the view moving, the simulator running. commit() later
     // records everything that changed since `before` as one step.
-    Scene& live() { ++version_; return scene_; }
+    Scene& live() {
+        ++version_;
+        return scene_;
+    }
     void commit(const std::string& label, const Scene& before);
 
     // Both keep the current camera unless the step itself changed the camera: looking around
@@ -52,9 +55,9 @@ private:
     Scene scene_;
     std::string path_;
     History history_;
-    mutable Scene saved_;                    // as the file holds it; its camera follows scene_'s
+    mutable Scene saved_;  // as the file holds it; its camera follows scene_'s
     mutable uint64_t checkedVersion_ = ~uint64_t(0);
-    mutable bool dirty_ = false;             // as of checkedVersion_
+    mutable bool dirty_ = false;  // as of checkedVersion_
     uint64_t version_ = 0;
 };
 

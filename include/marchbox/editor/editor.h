@@ -52,7 +52,7 @@ public:
     bool redo();
 
     bool add(ItemKind k, std::string* why);  // selects the new item; an object as placeNewObject()
-    bool duplicate(ItemKind k, int index, std::string* why);   // selects the copy
+    bool duplicate(ItemKind k, int index, std::string* why);  // selects the copy
     bool remove(ItemKind k, int index, std::string* why);
     void clear(ItemKind k);
     int kick();  // J: random velocities for the dynamic bodies; returns how many
@@ -84,7 +84,7 @@ public:
 private:
     void leaveNow(Leave what, const std::string& path);
     void replace(const Scene& scene, const std::string& path);  // New or Open
-    void edited();    // after any change of the scene outside the simulator
+    void edited();  // after any change of the scene outside the simulator
 
     Document doc_;
     Selection sel_;
@@ -94,7 +94,7 @@ private:
     Scene opening_;  // an Open's scene, read before anything was asked
     std::string lastFile_;
     bool quit_ = false;
-    uint32_t kicks_ = 0;  // seeds J: different each press, the same in every run
+    uint32_t kicks_ = 0;      // seeds J: different each press, the same in every run
     uint64_t loggedKey_ = 0;  // the merge key of the edit last told to the event log
 };
 

@@ -14,27 +14,56 @@ namespace mb {
 
 enum class Field : int {
     // camera, world, render
-    CameraPosition, CameraTarget, Fov, Gravity, Restitution, Friction, Rolling, Floor,
-    Steps, Epsilon, Shadows, Reflections, Fog, Aa,
+    CameraPosition,
+    CameraTarget,
+    Fov,
+    Gravity,
+    Restitution,
+    Friction,
+    Rolling,
+    Floor,
+    Steps,
+    Epsilon,
+    Shadows,
+    Reflections,
+    Fog,
+    Aa,
     // material
-    ColorChannel, Ka, Kd, Ks, Shininess, Reflectivity,
+    ColorChannel,
+    Ka,
+    Kd,
+    Ks,
+    Shininess,
+    Reflectivity,
     // light
-    LightColor, Intensity, LightPosition, LightDirection,
+    LightColor,
+    Intensity,
+    LightPosition,
+    LightDirection,
     // object
-    Position, Radius, HalfExtent, Minor, Height, Rotation, Mass, Velocity, Spin, Blend,
+    Position,
+    Radius,
+    HalfExtent,
+    Minor,
+    Height,
+    Rotation,
+    Mass,
+    Velocity,
+    Spin,
+    Blend,
     Count
 };
 
 struct FieldSpec {
-    const char* name;          // the key in the file: "fov", "restitution", ...
-    double min, max;           // the range the editor accepts, inside the format's
-    bool minExclusive;         // "> 0" rather than ">= 0"
-    float dragMin, dragMax;    // a sensible range for sliders; typing may go beyond it
-    bool integer;              // steps, shadows, reflections, aa
-    bool slider;               // a slider over dragMin..dragMax; otherwise a drag field
-    const char* format;        // printf format for widgets
-    const char* unit;          // "m", "m/s", "degrees", ...; "" for a pure number
-    const char* meaning;       // one line for the tooltip
+    const char* name;        // the key in the file: "fov", "restitution", ...
+    double min, max;         // the range the editor accepts, inside the format's
+    bool minExclusive;       // "> 0" rather than ">= 0"
+    float dragMin, dragMax;  // a sensible range for sliders; typing may go beyond it
+    bool integer;            // steps, shadows, reflections, aa
+    bool slider;             // a slider over dragMin..dragMax; otherwise a drag field
+    const char* format;      // printf format for widgets
+    const char* unit;        // "m", "m/s", "degrees", ...; "" for a pure number
+    const char* meaning;     // one line for the tooltip
 };
 
 const FieldSpec& fieldSpec(Field f);

@@ -14,7 +14,7 @@
 namespace mb {
 
 struct HistoryStep {
-    std::string label;      // "Delete object", "Simulation run", ...
+    std::string label;  // "Delete object", "Simulation run", ...
     Scene before, after;
     uint64_t id = 0;        // names the state `after`; see History::state()
     uint64_t mergeKey = 0;  // nonzero: later pushes with the same key fold into this step
@@ -46,9 +46,9 @@ public:
 
 private:
     std::deque<HistoryStep> steps_;
-    size_t cursor_ = 0;     // steps_[0, cursor_) are done, the rest can be redone
+    size_t cursor_ = 0;  // steps_[0, cursor_) are done, the rest can be redone
     size_t maxSteps_;
-    uint64_t baseId_ = 0;   // the state before steps_.front()
+    uint64_t baseId_ = 0;  // the state before steps_.front()
     uint64_t nextId_ = 1;
     bool sealed_ = true;
 };

@@ -56,7 +56,7 @@ struct InputState {
     bool mouseIn = false;  // false until the mouse moves over the window, and after it leaves
     std::bitset<kButtons> buttons;
     std::bitset<kKeys> keys;
-    double time = 0.0;     // the moment this state stands for
+    double time = 0.0;  // the moment this state stands for
     // This frame's alone.
     double seconds = 0.0;  // time since the last frame's state
     glm::vec2 wheel{0.0f};

@@ -12,7 +12,16 @@
 
 namespace mb {
 
-enum class Place : int { Objects, Materials, Lights, ObjectPopup, View, Simulation, SaveAs, Status };
+enum class Place : int {
+    Objects,
+    Materials,
+    Lights,
+    ObjectPopup,
+    View,
+    Simulation,
+    SaveAs,
+    Status
+};
 constexpr int kPlaceCount = 8;
 
 Place itemPlace(ItemKind k);  // the list panel of k: Objects, Materials or Lights

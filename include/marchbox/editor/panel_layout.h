@@ -27,7 +27,7 @@ struct PanelFrame {
     float rightTop = 0;           // below the statistics overlay, which sits top right
 };
 
-constexpr float kPanelMargin = 10.0f;  // from the window's edges
+constexpr float kPanelMargin = 10.0f;     // from the window's edges
 constexpr float kPanelMinHeight = 40.0f;  // a title bar and a line: kept even in a tiny window
 
 // The place of each panel whose panelBit is set in `open`; the others' are left empty.

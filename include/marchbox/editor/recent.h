@@ -19,8 +19,8 @@ class RecentFiles {
 public:
     static constexpr size_t kMax = 10;
 
-    RecentFiles() = default;                  // in memory only: nothing read or written
-    explicit RecentFiles(std::string file);   // reads `file` when it exists
+    RecentFiles() = default;                 // in memory only: nothing read or written
+    explicit RecentFiles(std::string file);  // reads `file` when it exists
 
     const std::vector<std::string>& paths() const { return paths_; }  // newest first
     // Puts `path` first, made absolute, once (an older mention goes), at most kMax kept; then

@@ -90,8 +90,8 @@ public:
     // With draftPreview it is drawn at cheaper settings than the passes, so even a full-size
     // preview is not the first pass: the bands draw that too.
     void restart(int width, int height, int aa, bool canAverage, bool draftPreview = false);
-    ViewStep next() const;                            // what to draw now; None once done
-    void finished(const ViewStep& step, double ms);   // it was drawn, taking ms
+    ViewStep next() const;                           // what to draw now; None once done
+    void finished(const ViewStep& step, double ms);  // it was drawn, taking ms
     void otherWork(double ms);  // the rest of a frame (UI, showing the picture, the swap) took ms
     double budgetMs() const;    // the scene's share: the frame budget less the rest, measured
 
@@ -99,9 +99,9 @@ public:
     bool previewing() const {
         return !previewed_ || ((divisor_ > 1 || draftPreview_) && sample_ == 0 && rowsDone_ == 0);
     }
-    int pass() const { return sample_ + 1; }          // the full-size pass under way, 1-based
+    int pass() const { return sample_ + 1; }  // the full-size pass under way, 1-based
     int samples() const { return samples_; }
-    int divisor() const { return divisor_; }          // of the last preview
+    int divisor() const { return divisor_; }             // of the last preview
     double msPerPixel() const { return cost_.value(); }  // of the passes
     // "160x90 (1/8) preview", "1280x720 (1/1) draft preview", "1280x720 refining 2/4",
     // "1280x720 done".

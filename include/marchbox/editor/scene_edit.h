@@ -15,9 +15,9 @@ namespace mb {
 enum class ItemKind : int { Object = 0, Material = 1, Light = 2 };
 constexpr int kItemKindCount = 3;
 
-const char* itemKindName(ItemKind k);        // "object", "material", "light"
+const char* itemKindName(ItemKind k);  // "object", "material", "light"
 int itemCount(const Scene& s, ItemKind k);
-int itemLimit(ItemKind k);                   // kMaxObjects, kMaxMaterials, kMaxLights
+int itemLimit(ItemKind k);  // kMaxObjects, kMaxMaterials, kMaxLights
 
 Object defaultObject();      // a dynamic sphere of radius 0.5, 2 m above the origin
 Material defaultMaterial();  // light grey, the format's default coefficients
@@ -32,8 +32,9 @@ int addItem(Scene& s, ItemKind k, std::string* why);
 // index, or -1 with *why.
 int duplicateItem(Scene& s, ItemKind k, int index, std::string* why);
 
-// Removes item `index`, and the comment lines above it in the file. Deleting a material renumbers the objects' indices; objects that used it
-// take material 0. The last material cannot go while objects remain.
+// Removes item `index`, and the comment lines above it in the file. Deleting a material renumbers
+// the objects' indices; objects that used it take material 0. The last material cannot go while
+// objects remain.
 bool deleteItem(Scene& s, ItemKind k, int index, std::string* why);
 
 // Empties a list. Clearing materials leaves one default material when objects remain.

@@ -21,9 +21,9 @@ public:
     const PhysicsSettings& settings() const { return settings_; }
 
     void play(Document& doc);
-    void pause(Document& doc);   // records the run since play() as "Simulation run"
-    void step(Document& doc);    // one fixed step, as its own undo step; pauses first
-    void reset(Document& doc);   // back to the scene when Play was pressed, as an undo step
+    void pause(Document& doc);  // records the run since play() as "Simulation run"
+    void step(Document& doc);   // one fixed step, as its own undo step; pauses first
+    void reset(Document& doc);  // back to the scene when Play was pressed, as an undo step
 
     // Each frame: the steps the accumulator owes for frameSeconds, taken and written back.
     // Returns the number of steps; 0 while paused.

@@ -74,7 +74,8 @@ public:
 
     void upload(const uint32_t* data, size_t count) {
         uint32_t none = 0;  // a zero-sized buffer texture is not complete
-        buffer_.upload(count ? data : &none, (count ? count : 1) * sizeof(uint32_t), GL_DYNAMIC_DRAW);
+        buffer_.upload(count ? data : &none, (count ? count : 1) * sizeof(uint32_t),
+                       GL_DYNAMIC_DRAW);
         if (!texture_) glGenTextures(1, &texture_);
         glBindTexture(GL_TEXTURE_BUFFER, texture_);
         glTexBuffer(GL_TEXTURE_BUFFER, GL_R32UI, buffer_.id());

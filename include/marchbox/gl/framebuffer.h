@@ -13,7 +13,10 @@ public:
     ColorTarget() = default;
     ~ColorTarget() { release(); }
     ColorTarget(ColorTarget&& o) noexcept
-        : fbo_(std::exchange(o.fbo_, 0)), texture_(std::exchange(o.texture_, 0)), width_(o.width_), height_(o.height_),
+        : fbo_(std::exchange(o.fbo_, 0)),
+          texture_(std::exchange(o.texture_, 0)),
+          width_(o.width_),
+          height_(o.height_),
           format_(o.format_) {}
     ColorTarget& operator=(ColorTarget&& o) noexcept {
         std::swap(fbo_, o.fbo_);

@@ -30,7 +30,8 @@ struct Gl11 {
     void(GLAPIENTRY* GenTextures)(GLsizei, GLuint*);
     void(GLAPIENTRY* DeleteTextures)(GLsizei, const GLuint*);
     void(GLAPIENTRY* BindTexture)(GLenum, GLuint);
-    void(GLAPIENTRY* TexImage2D)(GLenum, GLint, GLint, GLsizei, GLsizei, GLint, GLenum, GLenum, const void*);
+    void(GLAPIENTRY* TexImage2D)(GLenum, GLint, GLint, GLsizei, GLsizei, GLint, GLenum, GLenum,
+                                 const void*);
     void(GLAPIENTRY* TexParameteri)(GLenum, GLenum, GLint);
     void(GLAPIENTRY* DrawArrays)(GLenum, GLint, GLsizei);
     void(GLAPIENTRY* BlendFunc)(GLenum, GLenum);

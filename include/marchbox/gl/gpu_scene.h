@@ -22,21 +22,21 @@ struct GpuObject {
 static_assert(sizeof(GpuObject) == 112, "std140 Object is 112 bytes");
 
 struct GpuMaterial {
-    float color[4];       // r g b, Kr
-    float coeffs[4];      // Ka Kd Ks C
+    float color[4];   // r g b, Kr
+    float coeffs[4];  // Ka Kd Ks C
 };
 static_assert(sizeof(GpuMaterial) == 32, "std140 Material is 32 bytes");
 
 struct GpuLight {
-    float vec[4];         // point: position; directional: unit vector towards the light
-    float color[4];       // rgb × intensity, unused
+    float vec[4];    // point: position; directional: unit vector towards the light
+    float color[4];  // rgb × intensity, unused
 };
 static_assert(sizeof(GpuLight) == 32, "std140 Light is 32 bytes");
 
 struct GpuScene {
     std::vector<GpuObject> objects;
     std::vector<GpuMaterial> materials;
-    std::vector<GpuLight> lights;   // point lights first, then directional ones
+    std::vector<GpuLight> lights;  // point lights first, then directional ones
     int pointLights = 0, dirLights = 0;
 };
 

@@ -23,10 +23,10 @@ bool checkSavePng(const std::string& path, std::string* error);
 bool loadPng(const std::string& path, Image* out, std::string* error);
 
 struct ImageDiff {
-    double meanAbs = 0;      // mean |a-b| over all RGB channels, in 0..255 units
-    double p99 = 0;          // 99th percentile of the per-pixel max channel difference
+    double meanAbs = 0;  // mean |a-b| over all RGB channels, in 0..255 units
+    double p99 = 0;      // 99th percentile of the per-pixel max channel difference
     double maxAbs = 0;
-    Image visual;            // per-pixel max channel difference, amplified ×8, as grey
+    Image visual;  // per-pixel max channel difference, amplified ×8, as grey
 };
 
 // Requires equal sizes; the caller checks.

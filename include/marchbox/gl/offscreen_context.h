@@ -31,7 +31,7 @@ public:
 
 private:
     void destroy();
-    void* context_ = nullptr;          // OSMesaContext or EGLContext
+    void* context_ = nullptr;  // OSMesaContext or EGLContext
     OffscreenBackend backend_ = OffscreenBackend::OsMesa;
     std::string platform_;
     std::vector<unsigned char> buffer_;

@@ -13,7 +13,7 @@ namespace mb {
 enum class QualityPreset : int { Draft = 0, Normal, Final };
 constexpr int kQualityPresetCount = 3;
 
-const char* qualityPresetName(QualityPreset p);                      // "draft", "normal", "final"
+const char* qualityPresetName(QualityPreset p);  // "draft", "normal", "final"
 bool parseQualityPreset(const std::string& s, QualityPreset* out);
 
 // What a preset does to the scene's settings. A cap only lowers a value, a floor only raises it,
@@ -21,14 +21,14 @@ bool parseQualityPreset(const std::string& s, QualityPreset* out);
 // setting as the scene has it.
 struct QualityPresetSettings {
     const char* name;
-    int maxSteps, minSteps;            // march steps
-    float minEpsilon, maxEpsilon;      // hit distance
-    int maxReflections;                // -1: the scene's own
-    int minAa, maxAa;                  // supersamples per axis
-    int shadowSteps;                   // RenderQuality::shadowSteps; 0: the renderer's own
-    bool coneEpsilon;                  // true turns RenderQuality::coneEpsilon on
-    float shadowCutoff;                // RenderQuality::shadowCutoff; 0: every light casts
-    bool checkerboard;                 // true turns RenderQuality::checkerboard on
+    int maxSteps, minSteps;        // march steps
+    float minEpsilon, maxEpsilon;  // hit distance
+    int maxReflections;            // -1: the scene's own
+    int minAa, maxAa;              // supersamples per axis
+    int shadowSteps;               // RenderQuality::shadowSteps; 0: the renderer's own
+    bool coneEpsilon;              // true turns RenderQuality::coneEpsilon on
+    float shadowCutoff;            // RenderQuality::shadowCutoff; 0: every light casts
+    bool checkerboard;             // true turns RenderQuality::checkerboard on
 };
 const QualityPresetSettings& qualityPresetSettings(QualityPreset p);
 

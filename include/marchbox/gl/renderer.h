@@ -29,7 +29,7 @@ struct RenderOptions {
     bool uber = false;  // the general shader with every feature behind uniforms
     RenderQuality quality;
     PostMode post = PostMode::None;
-    bool fog = true;    // false draws the scene's fog as 0 (the editor's F key); the file keeps it
+    bool fog = true;  // false draws the scene's fog as 0 (the editor's F key); the file keeps it
     // The editor's selection ring (uHighlight). Off, the shader leaves it out: it costs a
     // frame 8% though nothing is selected, and renders of files select nothing.
     bool outline = false;
@@ -42,7 +42,7 @@ struct RenderOptions {
 // the uber program that stands in while that one compiles. Every way to a program starts here,
 // so a change is copied and examined once, however many questions are asked of it.
 struct SceneRequest {
-    Scene scene;              // as drawn: fog 0 where options.fog is off
+    Scene scene;  // as drawn: fog 0 where options.fog is off
     RenderOptions options;
     ShaderFeatures features;  // the program's
     ShaderFeatures standIn;   // the uber program's
@@ -74,7 +74,9 @@ public:
     bool requestScene(SceneRequest request, std::string* error);
     bool poll(std::string* error);
     bool compiling() const { return pending_ || uberBuild_; }  // poll() has work left
-    bool compilingScene() const { return pending_ != nullptr; }  // the scene's own program is on its way
+    bool compilingScene() const {
+        return pending_ != nullptr;
+    }  // the scene's own program is on its way
     // True when requestScene would start building a program: none is built or on its way for
     // the request's features (a driver without background compiles then blocks).
     bool wouldCompile(const SceneRequest& request) const;
@@ -122,7 +124,7 @@ private:
         std::string vertexSource;
         Shader vs, fs;
         std::unique_ptr<Program> program;
-        SceneRequest request;      // what the scene's own program draws once it links
+        SceneRequest request;  // what the scene's own program draws once it links
     };
     Cached* cached(const ShaderFeatures& f);
     bool startBuild(const ShaderFeatures& f, Build* b, std::string* error);
@@ -131,7 +133,8 @@ private:
     ShaderFeatures featuresFor(const Scene& scene, const RenderOptions& options) const;
     void use(Program* p, const ShaderFeatures& f, const SceneRequest& request);
     void upload(const GpuScene& g, const ShaderFeatures& f);
-    void setUniforms(const Scene& scene, const GpuScene& g, const ShaderFeatures& f, const RenderQuality& q);
+    void setUniforms(const Scene& scene, const GpuScene& g, const ShaderFeatures& f,
+                     const RenderQuality& q);
     void uploadGrid(const SceneSdf& sdf);
     const Program* postProgram(PostMode mode, std::string* error);
     ColorTarget& marchTarget() { return frameCheckerboard_ ? packed_ : accum_; }
@@ -155,22 +158,22 @@ private:
     TextureBuffer gridCells_, gridItems_;
     int maxUniformBlock_ = 16384;
     float tanHalfFov_ = 0.0f;
-    int samples_ = 1;                // supersamples per axis
+    int samples_ = 1;  // supersamples per axis
     PostMode post_ = PostMode::None;
     std::unique_ptr<Program> postPrograms_[kPostModeCount];
     ColorTarget accum_;
-    bool checkerboard_ = false;      // the program shades half the pixels into packed_
+    bool checkerboard_ = false;  // the program shades half the pixels into packed_
     ColorTarget packed_;
     CheckerboardFill fill_;
     int frameWidth_ = 0, frameHeight_ = 0;
-    GLint frameTarget_ = 0;          // the framebuffer bound at beginFrame
+    GLint frameTarget_ = 0;  // the framebuffer bound at beginFrame
     // Latched by beginFrame: a setScene before endFrame changes neither the frame's layout, nor
     // its samples, nor how it is resolved.
     bool frameCheckerboard_ = false;
     int frameSamples_ = 1;
     PostMode framePost_ = PostMode::None;
     bool accumulating_ = false;
-    bool blending_ = false;          // samples add up in the march target; else one is written
+    bool blending_ = false;  // samples add up in the march target; else one is written
 };
 
 // Reads the bound framebuffer's bottom-left width × height pixels into an image, top row first.
@@ -183,9 +186,9 @@ public:
     TiledRender(Renderer& renderer, int width, int height, int tileSize = 256);
     bool start(std::string* error);
     bool done() const { return next_ >= tileCount(); }
-    void step();                       // draws the next tile
+    void step();  // draws the next tile
     float progress() const { return tileCount() ? float(next_) / float(tileCount()) : 1.0f; }
-    Image finish();                    // resolves and reads back; row 0 at the top
+    Image finish();  // resolves and reads back; row 0 at the top
 
 private:
     int tileCount() const { return tilesX_ * tilesY_; }

@@ -22,6 +22,7 @@ private:
 
 // shaders/fullscreen.vert and shaders/<fragment> behind `prefix` (the #version line first);
 // null with the log in *error.
-std::unique_ptr<Program> screenProgram(const std::string& fragment, const std::string& prefix, std::string* error);
+std::unique_ptr<Program> screenProgram(const std::string& fragment, const std::string& prefix,
+                                       std::string* error);
 
 }  // namespace mb

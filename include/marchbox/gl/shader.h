@@ -14,7 +14,8 @@ namespace mb {
 // Reads a GLSL file and replaces each `#include "name"` line with the file shaders/name,
 // recursively (each file once), and gives each line's origin. Errors say which file could not
 // be read.
-bool readShaderSource(const std::string& path, std::string* out, LineMap* lines, std::string* error);
+bool readShaderSource(const std::string& path, std::string* out, LineMap* lines,
+                      std::string* error);
 
 // Where shaders/ is: $MARCHBOX_SHADERS if set, else the source tree's shaders/.
 std::string shaderDir();
@@ -29,9 +30,11 @@ public:
     Shader& operator=(const Shader&) = delete;
 
     // The log names lines by `lines`, the origin of each line of `source`, where it has one.
-    bool compile(GLenum type, const std::string& source, LineMap lines = {});  // keeps the log either way
-    void start(GLenum type, const std::string& source, LineMap lines = {});    // compile without waiting
-    bool finish();  // wait, keep the log, say if it built
+    bool compile(GLenum type, const std::string& source,
+                 LineMap lines = {});  // keeps the log either way
+    void start(GLenum type, const std::string& source,
+               LineMap lines = {});  // compile without waiting
+    bool finish();                   // wait, keep the log, say if it built
     bool compileFile(GLenum type, const std::string& path, const std::string& prefix = "");
 
     GLuint id() const { return id_; }

@@ -18,7 +18,7 @@ namespace mb {
 
 enum class RenderMode : int { Shaded = 0, Normals, Depth, Steps, Ao, Shadow, ObjectId };
 constexpr int kRenderModeCount = 7;
-const char* renderModeName(RenderMode m);               // "shaded", "normals", ... "id"
+const char* renderModeName(RenderMode m);  // "shaded", "normals", ... "id"
 bool parseRenderMode(const std::string& s, RenderMode* out);
 // The id view (RenderMode::ObjectId) writes a pixel's object id minus kHitNone (0 nothing, 1 the
 // ground, 2 the first object) as red + 256·green; this reads it back: the object's index,
@@ -45,13 +45,13 @@ struct RenderQuality {
 struct ShaderFeatures {
     bool uber = false;
     RenderMode mode = RenderMode::Shaded;
-    unsigned shapes = 0;        // bit i set: ShapeType i is present
+    unsigned shapes = 0;  // bit i set: ShapeType i is present
     bool subtract = false, intersect = false, blend = false;
     int objects = 0, materials = 0, pointLights = 0, dirLights = 0;
     bool ground = true;
-    int steps = 256;            // march steps, a compile-time loop bound
-    int shadows = 0;            // 0 none, 1 hard, 2 soft
-    int reflections = 0;        // bounces actually possible: 0 when nothing reflects
+    int steps = 256;      // march steps, a compile-time loop bound
+    int shadows = 0;      // 0 none, 1 hard, 2 soft
+    int reflections = 0;  // bounces actually possible: 0 when nothing reflects
     bool fog = false, ao = false;
     bool objectsInStorage = false;  // past the uniform-block limit objects go in an SSBO
     bool grid = false;              // steps visit one cell of the object grid, not every object
@@ -60,9 +60,9 @@ struct ShaderFeatures {
     int shadowSteps = 128;
     unsigned shadowCasters = (1u << kMaxLights) - 1;  // bit i: light i of the Lights block casts
     bool checkerboard = false;
-    bool outline = false;               // the editor's selection ring, shaded views only
-    bool compiled = false;              // the chain is straight-line code, per `layout`
-    std::vector<ObjectLayout> layout;   // empty unless compiled
+    bool outline = false;              // the editor's selection ring, shaded views only
+    bool compiled = false;             // the chain is straight-line code, per `layout`
+    std::vector<ObjectLayout> layout;  // empty unless compiled
 
     bool operator==(const ShaderFeatures&) const = default;  // every field: no stale program
 };
@@ -74,7 +74,7 @@ struct ShaderFeatures {
 constexpr int kGridMinObjects = 64;
 
 // The rules both the specialised and the uber shader follow, each written once.
-int shadowKind(const Scene& scene);                              // 0 without lights
+int shadowKind(const Scene& scene);  // 0 without lights
 // Bit i set: light i, in the Lights block's order (point lights, then directional), is at least
 // `cutoff` times as bright as the brightest light, brightness being its colour's largest
 // channel times its intensity.

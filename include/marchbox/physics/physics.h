@@ -40,15 +40,15 @@ enum class Integrator : int {
 };
 
 struct PhysicsSettings {
-    double dt = 1.0 / 120;              // fixed step, s
-    int substeps = 4;                   // soft steps per step
-    int iterations = 1;                 // solve and relax passes per substep
-    double maxFrame = 0.25;             // a longer frame is clamped to this (StepAccumulator)
+    double dt = 1.0 / 120;   // fixed step, s
+    int substeps = 4;        // soft steps per step
+    int iterations = 1;      // solve and relax passes per substep
+    double maxFrame = 0.25;  // a longer frame is clamped to this (StepAccumulator)
     Integrator integrator = Integrator::ExactGravity;
-    double contactHertz = 30;           // contact stiffness, capped at a quarter of the substep rate
-    double contactDampingRatio = 10;    // heavily over-damped: pushes out, never bounces
-    double maxPushSpeed = 3;            // m/s, fastest overlap recovery
-    double linearSlop = 0.005;          // m, allowed overlap; at most 5 % of the smaller radius
+    double contactHertz = 30;         // contact stiffness, capped at a quarter of the substep rate
+    double contactDampingRatio = 10;  // heavily over-damped: pushes out, never bounces
+    double maxPushSpeed = 3;          // m/s, fastest overlap recovery
+    double linearSlop = 0.005;        // m, allowed overlap; at most 5 % of the smaller radius
     double restitutionThreshold = 0.5;  // m/s: slower impacts do not bounce (no jitter at rest);
                                         // without gravity nothing rests, and every impact bounces
     bool impacts = true;                // bounce at the time of impact, in order (impacts.h)
@@ -57,14 +57,14 @@ struct PhysicsSettings {
     int restitutionIterations = 4;      // bounce passes: simultaneous impacts tend to Newton's law
     bool continuous = true;             // sweep fast spheres against static surfaces
     bool sleep = true;
-    double sleepSpeed = 0.05;           // m/s (and rad/s · radius) below which a body may sleep
-    double timeToSleep = 0.5;           // s an island must stay slow before it sleeps
-    double maxSpeed = 1e4;              // m/s, a guard against runaway input
-    int threads = 1;                    // 1 or 2: a second thread loads and solves half the
-                                        // contacts where they are many; the same result either way
-    bool twoLanes = false;              // the solver's baseline x86-64 code (a batch in halves)
-                                        // whatever the CPU has: tests compare the two, which
-                                        // give the same bytes
+    double sleepSpeed = 0.05;  // m/s (and rad/s · radius) below which a body may sleep
+    double timeToSleep = 0.5;  // s an island must stay slow before it sleeps
+    double maxSpeed = 1e4;     // m/s, a guard against runaway input
+    int threads = 1;           // 1 or 2: a second thread loads and solves half the
+                               // contacts where they are many; the same result either way
+    bool twoLanes = false;     // the solver's baseline x86-64 code (a batch in halves)
+                               // whatever the CPU has: tests compare the two, which
+                               // give the same bytes
 };
 
 //-----------------------------------------------------------------------------
@@ -73,17 +73,17 @@ struct PhysicsSettings {
 // The fields the contact solver reads and writes come first, together: it visits bodies in
 // contact order, not memory order, so each visit should touch as few cache lines as it can.
 struct PhysicsBody {
-    glm::dvec3 vel{0.0}, spin{0.0};            // m/s, rad/s
-    glm::dvec3 delta{0.0};                     // displacement during the current step
-    double invMass = 0.0;                      // 0 for the static body
-    double invInertia = 0.0;                   // 1 / (2/5·m·r²)
-    glm::dvec3 pos{0.0};                       // m
+    glm::dvec3 vel{0.0}, spin{0.0};  // m/s, rad/s
+    glm::dvec3 delta{0.0};           // displacement during the current step
+    double invMass = 0.0;            // 0 for the static body
+    double invInertia = 0.0;         // 1 / (2/5·m·r²)
+    glm::dvec3 pos{0.0};             // m
     double radius = 0.5;
-    double sleepTime = 0.0;                    // s spent slow
+    double sleepTime = 0.0;  // s spent slow
     bool awake = true;
-    bool supported = false;                    // a contact pushed it this substep (solve pass)
-    int island = -1;                           // sleeping island, for waking it whole
-    int object = -1;                           // index in Scene::objects; -1 for the static body
+    bool supported = false;  // a contact pushed it this substep (solve pass)
+    int island = -1;         // sleeping island, for waking it whole
+    int object = -1;         // index in Scene::objects; -1 for the static body
 };
 
 // A dynamic body of any shape but the sphere, turned by a unit quaternion (body to world).
@@ -91,7 +91,7 @@ struct RigidState {
     glm::dvec3 pos, vel, spin;  // m, m/s, rad/s (world)
     glm::dquat orient;
     bool awake;
-    int object;                 // index in Scene::objects
+    int object;  // index in Scene::objects
 };
 
 struct PhysicsStats {
@@ -112,32 +112,32 @@ public:
     PhysicsWorld(const PhysicsWorld&) = delete;
     PhysicsWorld& operator=(const PhysicsWorld&) = delete;
 
-    void step();                           // advance by one fixed step, settings().dt
-    void writeBack(Scene& scene) const;    // pos, vel, spin (and orient) into the dynamic objects
+    void step();                         // advance by one fixed step, settings().dt
+    void writeBack(Scene& scene) const;  // pos, vel, spin (and orient) into the dynamic objects
 
     int bodyCount() const { return int(bodies_.size()) - 1; }            // dynamic spheres
     const PhysicsBody& body(int i) const { return bodies_[size_t(i)]; }  // in scene order
-    int rigidCount() const;                // dynamic bodies of the other shapes
-    RigidState rigid(int i) const;         // in scene order
+    int rigidCount() const;         // dynamic bodies of the other shapes
+    RigidState rigid(int i) const;  // in scene order
     const PhysicsSettings& settings() const { return settings_; }
     const PhysicsStats& stats() const { return stats_; }
-    double kineticEnergy() const;          // J, translation and rotation
-    double potentialEnergy() const;        // J, m·g·y
+    double kineticEnergy() const;    // J, translation and rotation
+    double potentialEnergy() const;  // J, m·g·y
     long long stepCount() const { return steps_; }
 
 private:
-    struct Impl;  // static colliders, broad phase, contacts: see src/physics/physics_world.cpp
-    void collide();                  // this step's contacts, warm started from the last step
+    struct Impl;     // static colliders, broad phase, contacts: see src/physics/physics_world.cpp
+    void collide();  // this step's contacts, warm started from the last step
     void collideStatic(int body);
-    void orderAndWarmStart();        // bottom-up solve order; impulses of persisting contacts
-    void sortBottomUp();             // ... the order, without the runs of splitInHalves
-    void splitInHalves();            // which contacts two threads may solve at once
-    void keepImpulses();             // for the next step's warm start
+    void orderAndWarmStart();  // bottom-up solve order; impulses of persisting contacts
+    void sortBottomUp();       // ... the order, without the runs of splitInHalves
+    void splitInHalves();      // which contacts two threads may solve at once
+    void keepImpulses();       // for the next step's warm start
     void integrateVelocities(double h);
     void integratePositions(double h);
-    void bendCurved(double h);       // curved static surfaces: how they bend along this substep
-    void followCurved();             // ... and their normals where the bodies are now
-    void sweepFast();                // continuous collision against static surfaces
+    void bendCurved(double h);  // curved static surfaces: how they bend along this substep
+    void followCurved();        // ... and their normals where the bodies are now
+    void sweepFast();           // continuous collision against static surfaces
     void updateStats();
     PhysicsSettings settings_;
     std::vector<PhysicsBody> bodies_;  // the dynamic spheres, then the static body

@@ -1,5 +1,5 @@
-// marchbox/reference/reference_render.h — the CPU reference: a scene shaded on the CPU, with no GL, from
-// docs/shading-model.md. It is written from that model and the SDF mirror, not from the GLSL,
+// marchbox/reference/reference_render.h — the CPU reference: a scene shaded on the CPU, with no GL,
+// from docs/shading-model.md. It is written from that model and the SDF mirror, not from the GLSL,
 // so a bug the shaders share cannot also hide here. One thread, double precision: 5 to 230 ms
 // for a 96x54 image of an example scene. For tests and checks, not for the editor.
 //
@@ -30,8 +30,8 @@ struct ReferenceOptions {
 //-----------------------------------------------------------------------------
 struct ReferenceImage {
     int width = 0, height = 0;
-    std::vector<glm::vec3> rgb;    // linear colour, each channel clamped to [0, 1]; row 0 at the top
-    std::vector<int> object;       // primary ray at the pixel centre: object index, kHitGround, kHitNone
+    std::vector<glm::vec3> rgb;  // linear colour, each channel clamped to [0, 1]; row 0 at the top
+    std::vector<int> object;  // primary ray at the pixel centre: object index, kHitGround, kHitNone
     // Pixels with equal keys see the same surfaces, checker squares, lit sides and hard-shadow
     // states along the whole path, reflections included, and none of them on a crease (where
     // the normal is an edge's blend): the colour is smooth between them. A 3x3 block of one key

@@ -21,14 +21,15 @@ Object staticBox(glm::vec3 pos, glm::vec3 halfExtents);
 // Static walls around the x-z rectangle |x|, |z| < inner, from the ground to `height`.
 void addWalls(Scene& scene, float inner, float height, float thickness);
 
-Scene freeFallScene(float height);                     // no ground; one sphere at rest
-Scene projectileScene(glm::vec3 vel);                  // no ground; launched from the origin
-Scene bounceScene(float height, float restitution);    // dropped from its lowest point at height
-Scene headOnScene(float restitution, float m1, float m2, float v1, float v2);  // along x, no gravity
-Scene slideScene(float speed, float friction);         // resting on the ground, sliding along +x
-Scene rollScene(float speed, float rolling);           // on the ground, rolling without slip along +x
-Scene spinScene(float spin, float friction);           // on the ground, at rest, spinning about −z
-Scene cradleScene(int count, float speed);             // a touching row along x, and a striker
+Scene freeFallScene(float height);                   // no ground; one sphere at rest
+Scene projectileScene(glm::vec3 vel);                // no ground; launched from the origin
+Scene bounceScene(float height, float restitution);  // dropped from its lowest point at height
+Scene headOnScene(float restitution, float m1, float m2, float v1,
+                  float v2);                    // along x, no gravity
+Scene slideScene(float speed, float friction);  // resting on the ground, sliding along +x
+Scene rollScene(float speed, float rolling);    // on the ground, rolling without slip along +x
+Scene spinScene(float spin, float friction);    // on the ground, at rest, spinning about −z
+Scene cradleScene(int count, float speed);      // a touching row along x, and a striker
 // A box (top at y = 1) with a sphere of bowlRadius subtracted from its top, the bowl's bottom
 // 0.3·bowlRadius deep; a sphere of ballRadius at rest on the bowl, `degrees` from its bottom,
 // on the +x side. Its centre swings on a circle of bowlRadius − ballRadius about bowlCentre().
@@ -37,13 +38,13 @@ glm::vec3 bowlCentre(float bowlRadius);
 // A 40 m plank tilted `degrees` about z (its top rises along +x), no ground; a sphere of 0.2 at
 // rest on its top face, 3 m up the slope from its middle.
 Scene rampScene(float degrees, float friction, float rolling);
-Scene stackScene(float massRatio);                     // heavy on light, in a well barely wider
-Scene tunnelScene(float speed, float angleDegrees);    // at a 2 cm plate, angle from its normal
-Scene restingScene(float radius, float x);             // at rest on the ground at x
+Scene stackScene(float massRatio);                   // heavy on light, in a well barely wider
+Scene tunnelScene(float speed, float angleDegrees);  // at a 2 cm plate, angle from its normal
+Scene restingScene(float radius, float x);           // at rest on the ground at x
 // Dropped into a walled bin, about 8 layers deep: radii from 0.8·r to r.
 Scene pileScene(int count, std::uint32_t seed, float r = 0.1f);
 // The same bin with boxes, capsules, cylinders and spheres of about r in turn, each turned.
 Scene mixedPileScene(int count, std::uint32_t seed, float r = 0.2f);
-Scene gasScene(int count, std::uint32_t seed);         // elastic, frictionless, in a closed box
+Scene gasScene(int count, std::uint32_t seed);  // elastic, frictionless, in a closed box
 
 }  // namespace mb

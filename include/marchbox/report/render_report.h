@@ -1,4 +1,5 @@
-// marchbox/report/render_report.h — `marchbox report render`: docs/render-report.md and its SVG plots.
+// marchbox/report/render_report.h — `marchbox report render`: docs/render-report.md and its SVG
+// plots.
 #pragma once
 
 #include "marchbox/gl/offscreen_context.h"

@@ -18,9 +18,9 @@
 namespace mb {
 
 struct ObjectGrid {
-    glm::vec3 origin{0.0f};      // minimum corner
+    glm::vec3 origin{0.0f};  // minimum corner
     glm::vec3 cellSize{1.0f};
-    glm::ivec3 dims{0};          // cells per axis; 0 when there are no objects
+    glm::ivec3 dims{0};               // cells per axis; 0 when there are no objects
     std::vector<uint32_t> cellStart;  // cells + 1 prefix sums into items
     std::vector<uint32_t> items;      // object indices
 

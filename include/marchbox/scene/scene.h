@@ -18,7 +18,7 @@ namespace mb {
 //-----------------------------------------------------------------------------
 // [SECTION] Limits
 //-----------------------------------------------------------------------------
-constexpr int kMaxObjects = 4096;    // more objects in a file is a load error
+constexpr int kMaxObjects = 4096;  // more objects in a file is a load error
 constexpr int kMaxMaterials = 256;
 constexpr int kMaxLights = 16;
 constexpr int kMaxLineBytes = 4096;  // longer lines are an error, checked before any regex runs
@@ -40,7 +40,7 @@ struct Camera {
 // A point of the camera's path over time (format version 2). The loader fills the keys a record
 // leaves out from the `camera` record.
 struct Keyframe {
-    float t = 0.0f;             // s, >= 0; no two keyframes share one
+    float t = 0.0f;  // s, >= 0; no two keyframes share one
     glm::vec3 pos{0.0f};
     glm::vec3 target{0.0f};
     float fov = 50.0f;
@@ -48,36 +48,36 @@ struct Keyframe {
 };
 
 struct World {
-    float gravity = 9.81f;      // m/s² along -y, >= 0
-    float restitution = 0.8f;   // 0..1
-    float friction = 0.3f;      // Coulomb coefficient, >= 0
-    float rolling = 0.02f;      // rolling resistance: torque = rolling · radius · normal force, >= 0
-    float floor = 0.0f;         // height of the ground plane
-    bool ground = true;         // false removes the ground plane
+    float gravity = 9.81f;     // m/s² along -y, >= 0
+    float restitution = 0.8f;  // 0..1
+    float friction = 0.3f;     // Coulomb coefficient, >= 0
+    float rolling = 0.02f;  // rolling resistance: torque = rolling · radius · normal force, >= 0
+    float floor = 0.0f;     // height of the ground plane
+    bool ground = true;     // false removes the ground plane
 };
 
 struct RenderSettings {
-    int steps = 256;            // max march steps, 1..4096
-    float epsilon = 0.001f;     // hit distance, > 0
-    int shadows = 1;            // 0 none, 1 hard, 2 soft
-    int reflections = 3;        // max mirror bounces, 0..8
-    float fog = 0.0f;           // exp² density, >= 0
+    int steps = 256;         // max march steps, 1..4096
+    float epsilon = 0.001f;  // hit distance, > 0
+    int shadows = 1;         // 0 none, 1 hard, 2 soft
+    int reflections = 3;     // max mirror bounces, 0..8
+    float fog = 0.0f;        // exp² density, >= 0
     bool ao = false;
-    int aa = 1;                 // samples per pixel per axis, 1..4
+    int aa = 1;  // samples per pixel per axis, 1..4
 };
 
 struct Material {
-    std::string name;           // [A-Za-z0-9_.-]+; the loader names unnamed materials "materialN"
-    glm::vec3 color{1.0f};      // r g b, each >= 0
+    std::string name;       // [A-Za-z0-9_.-]+; the loader names unnamed materials "materialN"
+    glm::vec3 color{1.0f};  // r g b, each >= 0
     float Ka = 0.1f, Kd = 0.8f, Ks = 0.5f;
-    float C = 32.0f;            // shininess, > 0
-    float Kr = 0.0f;            // mirror reflectivity, 0..1
-    std::string comment{};      // the file's lines just above this record (see SceneComments)
+    float C = 32.0f;        // shininess, > 0
+    float Kr = 0.0f;        // mirror reflectivity, 0..1
+    std::string comment{};  // the file's lines just above this record (see SceneComments)
 };
 
 struct Light {
-    bool directional = false;   // true: `dir` record, `vec` is the direction light travels
-    glm::vec3 vec{0.0f};        // point light position, or direction
+    bool directional = false;  // true: `dir` record, `vec` is the direction light travels
+    glm::vec3 vec{0.0f};       // point light position, or direction
     glm::vec3 color{1.0f};
     float intensity = 1.0f;
     std::string comment{};
@@ -88,20 +88,20 @@ struct Object {
     glm::vec3 pos{0.0f};
     int material = 0;
     float radius = 0.5f;
-    glm::vec3 size{0.5f};       // box half-extents
-    float minor = 0.1f;         // torus tube radius
-    float height = 1.0f;        // capsule segment / cylinder length along local y
-    glm::vec3 rot{0.0f};        // Euler degrees, R = Rz(z)·Ry(y)·Rx(x)
+    glm::vec3 size{0.5f};             // box half-extents
+    float minor = 0.1f;               // torus tube radius
+    float height = 1.0f;              // capsule segment / cylinder length along local y
+    glm::vec3 rot{0.0f};              // Euler degrees, R = Rz(z)·Ry(y)·Rx(x)
     std::optional<glm::quat> orient;  // the exact turn (unit, w,x,y,z); where set, rot is unused
     float mass = 1.0f;
-    glm::vec3 vel{0.0f};        // m/s
-    glm::vec3 spin{0.0f};       // angular velocity, rad/s
+    glm::vec3 vel{0.0f};   // m/s
+    glm::vec3 spin{0.0f};  // angular velocity, rad/s
     bool isStatic = false;
     CsgOp op = CsgOp::Union;
-    float blend = 0.0f;         // smooth-blend radius, 0 = sharp
-    std::string name{};         // [A-Za-z0-9_.-]+, or empty: none
+    float blend = 0.0f;                              // smooth-blend radius, 0 = sharp
+    std::string name{};                              // [A-Za-z0-9_.-]+, or empty: none
     std::optional<float> friction{}, restitution{};  // the object's own; absent: the world's
-    std::string comment{};      // `{}`: aggregates built without it stay warning-free
+    std::string comment{};  // `{}`: aggregates built without it stay warning-free
 
     // A dynamic object is moved by the simulator, whatever its type; everything else is a
     // static collider. (A version 1 file's other shapes load static: only spheres moved.)
@@ -120,7 +120,7 @@ struct Object {
 struct SceneComments {
     std::string camera, world, render;  // above the `camera`, `world`, `render` records; what
                                         // was above `scene version:1` goes to the next record
-    std::string end;                            // below the last record: stays at the end
+    std::string end;                    // below the last record: stays at the end
     bool operator==(const SceneComments&) const = default;
 };
 
@@ -130,7 +130,7 @@ struct Scene {
     RenderSettings render;
     std::vector<Material> materials;
     std::vector<Light> lights;
-    std::vector<Object> objects;  // in file order: the CSG chain is evaluated in this order
+    std::vector<Object> objects;      // in file order: the CSG chain is evaluated in this order
     std::vector<Keyframe> keyframes;  // in order of t
     SceneComments comments;
 };

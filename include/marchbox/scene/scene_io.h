@@ -17,8 +17,8 @@
 namespace mb {
 
 struct SceneError {
-    int line = 0;          // 1-based; 0 when the error is about the whole file (e.g. unreadable)
-    std::string message;   // what is wrong, without file or line
+    int line = 0;         // 1-based; 0 when the error is about the whole file (e.g. unreadable)
+    std::string message;  // what is wrong, without file or line
 };
 
 // Parses scene text. On success writes *out and returns true; otherwise fills *errors (at least

@@ -28,11 +28,11 @@ namespace mb {
 //-----------------------------------------------------------------------------
 // [SECTION] Primitives
 //-----------------------------------------------------------------------------
-float sdSphere(glm::vec3 p, float r);                 // exact
-float sdBox(glm::vec3 p, glm::vec3 halfExtents);      // exact
-float sdTorus(glm::vec3 p, float major, float minor); // exact; ring in the x-z plane
-float sdCapsule(glm::vec3 p, float height, float r);  // exact; segment [-h/2, h/2] on y
-float sdCylinder(glm::vec3 p, float height, float r); // exact; capped, axis y, length h
+float sdSphere(glm::vec3 p, float r);                  // exact
+float sdBox(glm::vec3 p, glm::vec3 halfExtents);       // exact
+float sdTorus(glm::vec3 p, float major, float minor);  // exact; ring in the x-z plane
+float sdCapsule(glm::vec3 p, float height, float r);   // exact; segment [-h/2, h/2] on y
+float sdCylinder(glm::vec3 p, float height, float r);  // exact; capped, axis y, length h
 
 //-----------------------------------------------------------------------------
 // [SECTION] Operators
@@ -40,7 +40,7 @@ float sdCylinder(glm::vec3 p, float height, float r); // exact; capped, axis y, 
 // Each returns the combined distance in x and, in y, the blend weight of b (0: a wins, 1: b
 // wins), which picks the surface's object. k is the smooth-blend radius; k = 0 is sharp.
 glm::vec2 opUnion(float a, float b, float k);
-glm::vec2 opSubtract(float a, float b, float k);   // carve b out of a
+glm::vec2 opSubtract(float a, float b, float k);  // carve b out of a
 glm::vec2 opIntersect(float a, float b, float k);
 
 //-----------------------------------------------------------------------------
@@ -55,10 +55,10 @@ struct SdfObject {
     ShapeType type;
     CsgOp op;
     glm::vec3 pos;
-    glm::mat3 toLocal;   // transpose of the object's rotation
+    glm::mat3 toLocal;  // transpose of the object's rotation
     glm::vec3 size;
     float radius, minor, height, blend;
-    float bound;         // radius of a sphere about pos that holds the shape
+    float bound;  // radius of a sphere about pos that holds the shape
     int material;
 };
 
@@ -70,8 +70,8 @@ constexpr int kHitGround = -1;  // SceneSample::object for the ground plane
 constexpr int kHitNone = -2;    // nothing in reach
 
 struct SceneSample {
-    float d;      // signed distance to the scene
-    int object;   // index of the surface's object, kHitGround or kHitNone
+    float d;     // signed distance to the scene
+    int object;  // index of the surface's object, kHitGround or kHitNone
 };
 
 // The scene's objects and ground, ready to evaluate many times.
@@ -100,7 +100,7 @@ glm::vec3 sceneNormal(const SceneSdf& sdf, glm::vec3 p);   // central difference
 
 struct RayHit {
     bool hit = false;
-    float t = 0.0f;      // distance along the unit direction
+    float t = 0.0f;  // distance along the unit direction
     int object = kHitNone;
     int steps = 0;
 };

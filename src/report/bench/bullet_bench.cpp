@@ -33,7 +33,8 @@ public:
     explicit BulletScene(const Scene& scene)
         : dispatcher_(&config_), world_(&dispatcher_, &broadphase_, &solver_, &config_) {
         world_.setGravity(btVector3(0, -scene.world.gravity, 0));
-        if (scene.world.ground) addStatic(new btStaticPlaneShape(btVector3(0, 1, 0), scene.world.floor), {0, 0, 0}, {});
+        if (scene.world.ground)
+            addStatic(new btStaticPlaneShape(btVector3(0, 1, 0), scene.world.floor), {0, 0, 0}, {});
         for (const mb::Object& o : scene.objects) {
             if (o.type == mb::ShapeType::Box && !o.dynamic())
                 addStatic(new btBoxShape(btVector3(o.size.x, o.size.y, o.size.z)), o.pos, o.rot);
@@ -62,7 +63,8 @@ public:
         for (const btRigidBody* b : spheres_) {
             const btVector3 v = b->getLinearVelocity(), w = b->getAngularVelocity();
             const btVector3 inertia = b->getLocalInertia();
-            e += 0.5 * v.length2() / b->getInvMass() + 0.5 * inertia.x() * w.length2();  // spheres: isotropic
+            e += 0.5 * v.length2() / b->getInvMass() +
+                 0.5 * inertia.x() * w.length2();  // spheres: isotropic
         }
         return e;
     }
@@ -74,8 +76,8 @@ private:
         btRigidBody::btRigidBodyConstructionInfo info(0, nullptr, shape);
         info.m_startWorldTransform.setOrigin(btVector3(pos.x, pos.y, pos.z));
         const glm::mat3 r = mb::rotationFromEuler(eulerDegrees);  // the SDF mirror's convention
-        info.m_startWorldTransform.setBasis(btMatrix3x3(r[0][0], r[1][0], r[2][0], r[0][1], r[1][1], r[2][1],
-                                                        r[0][2], r[1][2], r[2][2]));
+        info.m_startWorldTransform.setBasis(btMatrix3x3(r[0][0], r[1][0], r[2][0], r[0][1], r[1][1],
+                                                        r[2][1], r[0][2], r[1][2], r[2][2]));
         info.m_friction = 1.0;  // Bullet multiplies the two bodies' coefficients
         info.m_restitution = 1.0;
         world_.addRigidBody(new btRigidBody(info));
@@ -85,11 +87,16 @@ private:
     // pair's, and the statics' are 1.
     static btCollisionShape* shapeOf(const mb::Object& o) {
         switch (o.type) {
-        case mb::ShapeType::Sphere: return new btSphereShape(o.radius);
-        case mb::ShapeType::Box: return new btBoxShape(btVector3(o.size.x, o.size.y, o.size.z));
-        case mb::ShapeType::Capsule: return new btCapsuleShape(o.radius, o.height);
-        case mb::ShapeType::Cylinder: return new btCylinderShape(btVector3(o.radius, 0.5f * o.height, o.radius));
-        case mb::ShapeType::Torus: return nullptr;
+            case mb::ShapeType::Sphere:
+                return new btSphereShape(o.radius);
+            case mb::ShapeType::Box:
+                return new btBoxShape(btVector3(o.size.x, o.size.y, o.size.z));
+            case mb::ShapeType::Capsule:
+                return new btCapsuleShape(o.radius, o.height);
+            case mb::ShapeType::Cylinder:
+                return new btCylinderShape(btVector3(o.radius, 0.5f * o.height, o.radius));
+            case mb::ShapeType::Torus:
+                return nullptr;
         }
         return nullptr;
     }
@@ -132,11 +139,13 @@ struct Engine {
 };
 
 struct MarchboxEngine {
-    explicit MarchboxEngine(const Scene& s, const mb::PhysicsSettings& settings = {}) : world(s, settings) {}
+    explicit MarchboxEngine(const Scene& s, const mb::PhysicsSettings& settings = {})
+        : world(s, settings) {}
     mb::PhysicsWorld world;
     Engine engine() {
         return {[this] { world.step(); }, [this](int i) { return world.body(i).pos; },
-                [this](int i) { return world.body(i).vel; }, [this] { return world.kineticEnergy(); }};
+                [this](int i) { return world.body(i).vel; },
+                [this] { return world.kineticEnergy(); }};
     }
 };
 
@@ -167,7 +176,8 @@ double bounceError() {
     Engine g = e.engine();
     const double r = 0.1, e6 = std::pow(double(0.8f), 6.0);
     double apex = 0.0, previousVy = 0.0;
-    for (int i = 0, bounces = 0; i < 600 && !(bounces == 3 && previousVy > 0.0 && g.vel(0).y <= 0.0); ++i) {
+    for (int i = 0, bounces = 0;
+         i < 600 && !(bounces == 3 && previousVy > 0.0 && g.vel(0).y <= 0.0); ++i) {
         previousVy = g.vel(0).y;
         g.step();
         if (previousVy < 0.0 && g.vel(0).y > 0.0) ++bounces;
@@ -250,7 +260,8 @@ double timeSteps(const Scene& scene, double seconds) {
     const int steps = int(std::llround(seconds / kDt));
     const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < steps; ++i) g.step();
-    return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / steps;
+    return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+           steps;
 }
 
 void row(const char* name, double marchbox, double bullet, const char* unit) {
@@ -292,8 +303,10 @@ PileTimes timePile(int count, float radius, double seconds) {
 // with targets (0.25x Bullet's step, at most 5x from 1000 to 4000), from this run's measurements.
 void pileRows(float radius, const std::vector<int>& counts) {
     const double seconds = 1.5;
-    std::printf("\n| pile, r = %.1f, first %.1f s (median of 3) | Marchbox | Bullet |\n| --- | ---: | ---: |\n",
-                double(radius), seconds);
+    std::printf(
+        "\n| pile, r = %.1f, first %.1f s (median of 3) | Marchbox | Bullet |\n| --- | ---: | ---: "
+        "|\n",
+        double(radius), seconds);
     std::map<int, PileTimes> times;
     for (int count : counts) {
         const PileTimes& t = times[count] = timePile(count, radius, seconds);
@@ -307,12 +320,16 @@ void pileRows(float radius, const std::vector<int>& counts) {
     }
     const PileTimes &small = times[1000], &large = times[4000];
     // Bullet's defaults step on one thread; Marchbox is given with its worker thread and without.
-    std::printf("\nPile of 1000, r = %.1f, Marchbox against Bullet: **%.2fx** its time per step on 2 threads, %.2fx on "
-                "one (target <= 0.25x). From 1000 to 4000 spheres: Marchbox **%.2fx** on 2 threads, %.2fx on one "
-                "(target <= 5x), Bullet %.2fx.\n",
-                double(radius), small.twoThreads / small.bullet.msPerStep, small.marchbox.msPerStep / small.bullet.msPerStep,
-                large.twoThreads / small.twoThreads, large.marchbox.msPerStep / small.marchbox.msPerStep,
-                large.bullet.msPerStep / small.bullet.msPerStep);
+    std::printf(
+        "\nPile of 1000, r = %.1f, Marchbox against Bullet: **%.2fx** its time per step on 2 "
+        "threads, %.2fx on "
+        "one (target <= 0.25x). From 1000 to 4000 spheres: Marchbox **%.2fx** on 2 threads, %.2fx "
+        "on one "
+        "(target <= 5x), Bullet %.2fx.\n",
+        double(radius), small.twoThreads / small.bullet.msPerStep,
+        small.marchbox.msPerStep / small.bullet.msPerStep, large.twoThreads / small.twoThreads,
+        large.marchbox.msPerStep / small.marchbox.msPerStep,
+        large.bullet.msPerStep / small.bullet.msPerStep);
 }
 
 }  // namespace
@@ -332,8 +349,8 @@ int main(int argc, char** argv) {
         }
         std::sort(ours.begin(), ours.end());
         std::sort(theirs.begin(), theirs.end());
-        std::printf("mixed pile of %d: Marchbox %.3f ms/step, Bullet %.3f ms/step, ratio %.2f\n", count, ours[1],
-                    theirs[1], ours[1] / theirs[1]);
+        std::printf("mixed pile of %d: Marchbox %.3f ms/step, Bullet %.3f ms/step, ratio %.2f\n",
+                    count, ours[1], theirs[1], ours[1] / theirs[1]);
         return 0;
     }
     if (argc > 2 && std::string(argv[1]) == "pile") {
@@ -341,24 +358,32 @@ int main(int argc, char** argv) {
         const float radius = argc > 3 ? float(std::atof(argv[3])) : 0.2f;
         const double marchbox = pile<MarchboxEngine>(count, radius, 1.5).msPerStep;
         const double bullet = pile<BulletEngine>(count, radius, 1.5).msPerStep;
-        std::printf("pile of %d, r = %.2f: Marchbox %.3f ms/step, Bullet %.3f ms/step, ratio %.3f\n", count,
-                    double(radius), marchbox, bullet, marchbox / bullet);
+        std::printf(
+            "pile of %d, r = %.2f: Marchbox %.3f ms/step, Bullet %.3f ms/step, ratio %.3f\n", count,
+            double(radius), marchbox, bullet, marchbox / bullet);
         return 0;
     }
-    std::printf("Bullet %d (btDiscreteDynamicsWorld, sequential impulse, 10 iterations, no deactivation) against "
-                "Marchbox defaults (one thread), both at dt = 1/120 s. Overlap sampled every 10 steps.\n\n",
-                btGetVersion());
+    std::printf(
+        "Bullet %d (btDiscreteDynamicsWorld, sequential impulse, 10 iterations, no deactivation) "
+        "against "
+        "Marchbox defaults (one thread), both at dt = 1/120 s. Overlap sampled every 10 steps.\n\n",
+        btGetVersion());
     std::printf("| case | Marchbox | Bullet |\n| --- | ---: | ---: |\n");
-    row("free fall, \\|y − exact\\| after 2 s", freeFallError<MarchboxEngine>(), freeFallError<BulletEngine>(), " m");
-    row("bounce, \\|third apex − e⁶·h\\|", bounceError<MarchboxEngine>(), bounceError<BulletEngine>(), " m");
-    row("elastic gas of 64, \\|KE(30 s)/KE(0) − 1\\|", gasError<MarchboxEngine>(), gasError<BulletEngine>(), "");
-    row("Newton's cradle, max \\|v − exact\\| after 1 s", cradleError<MarchboxEngine>(), cradleError<BulletEngine>(),
-        " m/s");
-    row("ramp slide 30°, μ = 0.1, \\|a/exact − 1\\|", rampSlideError<MarchboxEngine>(), rampSlideError<BulletEngine>(),
-        "");
-    row("spin to roll, \\|v/(2/7·ω0·r) − 1\\|", spinError<MarchboxEngine>(), spinError<BulletEngine>(), "");
-    std::printf("\nIn Bullet the elastic gas gains energy (the gas row) and spheres get out "
-                "through the walls.\n");
+    row("free fall, \\|y − exact\\| after 2 s", freeFallError<MarchboxEngine>(),
+        freeFallError<BulletEngine>(), " m");
+    row("bounce, \\|third apex − e⁶·h\\|", bounceError<MarchboxEngine>(),
+        bounceError<BulletEngine>(), " m");
+    row("elastic gas of 64, \\|KE(30 s)/KE(0) − 1\\|", gasError<MarchboxEngine>(),
+        gasError<BulletEngine>(), "");
+    row("Newton's cradle, max \\|v − exact\\| after 1 s", cradleError<MarchboxEngine>(),
+        cradleError<BulletEngine>(), " m/s");
+    row("ramp slide 30°, μ = 0.1, \\|a/exact − 1\\|", rampSlideError<MarchboxEngine>(),
+        rampSlideError<BulletEngine>(), "");
+    row("spin to roll, \\|v/(2/7·ω0·r) − 1\\|", spinError<MarchboxEngine>(),
+        spinError<BulletEngine>(), "");
+    std::printf(
+        "\nIn Bullet the elastic gas gains energy (the gas row) and spheres get out "
+        "through the walls.\n");
     // The headline pile has r = 0.2; the smaller one (r = 0.1) is the report's suite's.
     pileRows(0.2f, {1000, 4000, 10000});
     pileRows(0.1f, {1000, 4000});

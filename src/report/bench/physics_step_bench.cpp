@@ -1,7 +1,7 @@
 // physics_step_bench.cpp — times PhysicsWorld::step on the report's pile, for profiling.
 //
-//   physics_step_bench COUNT STEPS [FROM [THREADS [RADIUS]]]   (pileScene(COUNT, 7, RADIUS), default
-//   settings; RADIUS 0.2 unless given, the headline pile of the physics report)
+//   physics_step_bench COUNT STEPS [FROM [THREADS [RADIUS]]]   (pileScene(COUNT, 7, RADIUS),
+//   default settings; RADIUS 0.2 unless given, the headline pile of the physics report)
 // Prints ms per step, the last step's contacts and awake bodies, and a state checksum so that
 // an optimisation can be checked to leave the results bit for bit alone. Small STEPS under
 // valgrind --tool=callgrind give deterministic instruction counts; with --instr-atstart=no only
@@ -42,7 +42,9 @@ int main(int argc, char** argv) {
         std::memcpy(bytes, v, sizeof v);
         for (unsigned char c : bytes) sum = (sum ^ c) * 1099511628211ull;
     }
-    std::printf("%d spheres, %d steps: %.3f ms/step, %d contacts in %d levels, %d awake, penetration %.3g, state %016llx\n",
-                count, steps, 1e3 * busy / steps, world.stats().contacts, world.stats().levels, world.stats().awake,
-                world.stats().maxPenetration, sum);
+    std::printf(
+        "%d spheres, %d steps: %.3f ms/step, %d contacts in %d levels, %d awake, penetration %.3g, "
+        "state %016llx\n",
+        count, steps, 1e3 * busy / steps, world.stats().contacts, world.stats().levels,
+        world.stats().awake, world.stats().maxPenetration, sum);
 }

@@ -21,7 +21,9 @@ struct Lcg {
 
 constexpr float kDensity = 1000.0f;  // kg/m³, water
 
-float sphereMass(float radius) { return kDensity * 4.0f / 3.0f * float(M_PI) * radius * radius * radius; }
+float sphereMass(float radius) {
+    return kDensity * 4.0f / 3.0f * float(M_PI) * radius * radius * radius;
+}
 
 }  // namespace
 
@@ -125,7 +127,8 @@ Scene bowlScene(float bowlRadius, float ballRadius, float degrees, float frictio
     hole.op = CsgOp::Subtract;
     s.objects.push_back(hole);
     const float a = degrees * float(M_PI) / 180.0f, swing = bowlRadius - ballRadius;
-    s.objects.push_back(dynamicSphere(hole.pos + swing * glm::vec3(std::sin(a), -std::cos(a), 0), ballRadius, 1.0f));
+    s.objects.push_back(dynamicSphere(hole.pos + swing * glm::vec3(std::sin(a), -std::cos(a), 0),
+                                      ballRadius, 1.0f));
     return s;
 }
 
@@ -145,7 +148,8 @@ Scene cradleScene(int count, float speed) {
     Scene s = physicsWorld(0.0f, 1.0f, 0.0f, false);
     const float r = 0.5f, gap = 0.05f;  // the striker starts 5 cm from the touching row
     s.objects.push_back(dynamicSphere({-2.0f * r - gap, 0, 0}, r, 1.0f, {speed, 0, 0}));
-    for (int i = 0; i < count; ++i) s.objects.push_back(dynamicSphere({2.0f * r * float(i), 0, 0}, r, 1.0f));
+    for (int i = 0; i < count; ++i)
+        s.objects.push_back(dynamicSphere({2.0f * r * float(i), 0, 0}, r, 1.0f));
     return s;
 }
 
@@ -182,9 +186,10 @@ Scene pileScene(int count, std::uint32_t seed, float r) {
     addWalls(s, inner, 0.5f * spacing * float(count / (side * side) + 2), 0.1f);
     for (int i = 0; i < count; ++i) {
         const int layer = i / (side * side), row = (i / side) % side, col = i % side;
-        const glm::vec3 pos(spacing * (float(col) - 0.5f * float(side - 1)) + rng.range(-0.1f, 0.1f) * r,
-                            r + 0.5f * r + spacing * float(layer),
-                            spacing * (float(row) - 0.5f * float(side - 1)) + rng.range(-0.1f, 0.1f) * r);
+        const glm::vec3 pos(
+            spacing * (float(col) - 0.5f * float(side - 1)) + rng.range(-0.1f, 0.1f) * r,
+            r + 0.5f * r + spacing * float(layer),
+            spacing * (float(row) - 0.5f * float(side - 1)) + rng.range(-0.1f, 0.1f) * r);
         const float radius = r * rng.range(0.8f, 1.0f);
         s.objects.push_back(dynamicSphere(pos, radius, sphereMass(radius)));
     }
@@ -200,13 +205,14 @@ Scene mixedPileScene(int count, std::uint32_t seed, float r) {
     const int side = std::max(2, int(std::ceil(std::sqrt(count / 8.0f))));
     const float inner = 0.5f * spacing * float(side) + 0.3f * r;
     addWalls(s, inner, 0.5f * spacing * float(count / (side * side) + 2), 0.1f);
-    const ShapeType types[4] = {ShapeType::Box, ShapeType::Capsule, ShapeType::Cylinder, ShapeType::Sphere};
+    const ShapeType types[4] = {ShapeType::Box, ShapeType::Capsule, ShapeType::Cylinder,
+                                ShapeType::Sphere};
     for (int i = 0; i < count; ++i) {
         const int layer = i / (side * side), row = (i / side) % side, col = i % side;
-        Object o = dynamicSphere({spacing * (float(col) - 0.5f * float(side - 1)),
-                                  r + 0.5f * r + spacing * float(layer),
-                                  spacing * (float(row) - 0.5f * float(side - 1))},
-                                 r * rng.range(0.8f, 1.0f), 1.0f);
+        Object o = dynamicSphere(
+            {spacing * (float(col) - 0.5f * float(side - 1)), r + 0.5f * r + spacing * float(layer),
+             spacing * (float(row) - 0.5f * float(side - 1))},
+            r * rng.range(0.8f, 1.0f), 1.0f);
         o.type = types[i % 4];
         o.size = glm::vec3(0.7f * o.radius);
         o.height = o.radius;
