@@ -8,6 +8,16 @@
 
 namespace mb {
 
+// A static object of the type at pos, turned by rot (Euler degrees): the shapes bodies land on.
+inline Object staticShape(ShapeType type, glm::vec3 pos, glm::vec3 rot = glm::vec3(0.0f)) {
+    Object o;
+    o.type = type;
+    o.pos = pos;
+    o.rot = rot;
+    o.isStatic = true;
+    return o;
+}
+
 inline int stepsFor(double seconds, const PhysicsSettings& s) {
     return int(std::llround(seconds / s.dt));
 }

@@ -17,15 +17,6 @@ void run(PhysicsWorld& w, double seconds) {
     for (int i = 0; i < stepsFor(seconds, w.settings()); ++i) w.step();
 }
 
-Object staticShape(ShapeType type, glm::vec3 pos, glm::vec3 rot = glm::vec3(0.0f)) {
-    Object o;
-    o.type = type;
-    o.pos = pos;
-    o.rot = rot;
-    o.isStatic = true;
-    return o;
-}
-
 Object spinningSphere(glm::vec3 pos, float radius, glm::vec3 vel, glm::vec3 spin) {
     Object o = dynamicSphere(pos, radius, 1.0f, vel);
     o.spin = spin;

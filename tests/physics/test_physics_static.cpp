@@ -11,19 +11,11 @@ using glm::dvec3;
 
 namespace {
 
-Object staticObject(ShapeType type, glm::vec3 pos) {
-    Object o;
-    o.type = type;
-    o.pos = pos;
-    o.isStatic = true;
-    return o;
-}
-
 // A torus of ring 1 and tube 0.25 lying on the ground, and a sphere of 0.2 set on top of the
 // tube, just off its crest towards `side` (+1 outward, −1 into the hole).
 Scene torusScene(float side) {
     Scene s = physicsWorld(9.81f, 0.3f, 0.5f, true);
-    Object torus = staticObject(ShapeType::Torus, {0, 0.25f, 0});
+    Object torus = staticShape(ShapeType::Torus, {0, 0.25f, 0});
     torus.radius = 1.0f;
     torus.minor = 0.25f;
     s.objects.push_back(torus);
@@ -58,9 +50,9 @@ TEST(PhysicsStatic, SphereRollsOffTheTorusIntoTheHole) {
 // it wherever the slope has tan θ <= c, so it stops within 0.3·sin(atan c) of the bottom.
 TEST(PhysicsStatic, SphereSettlesIntoASubtractedHole) {
     Scene s = physicsWorld(9.81f, 0.3f, 0.5f, true);
-    Object box = staticObject(ShapeType::Box, {0, 0.5f, 0});
+    Object box = staticShape(ShapeType::Box, {0, 0.5f, 0});
     box.size = {2.0f, 0.5f, 2.0f};
-    Object hole = staticObject(ShapeType::Sphere, {0, 1.0f, 0});
+    Object hole = staticShape(ShapeType::Sphere, {0, 1.0f, 0});
     hole.radius = 0.5f;
     hole.op = CsgOp::Subtract;
     s.objects.push_back(box);
@@ -172,7 +164,7 @@ INSTANTIATE_TEST_SUITE_P(PhysicsRamps, PhysicsRamp,
 // distances to a micrometre.
 TEST(PhysicsStatic, DistancesKeepPrecisionFarFromTheOrigin) {
     Scene s = physicsWorld(9.81f, 0.3f, 0.5f, false);
-    s.objects.push_back(staticObject(ShapeType::Box, {1e5f, 0, 0}));  // half-extent 0.5
+    s.objects.push_back(staticShape(ShapeType::Box, {1e5f, 0, 0}));  // half-extent 0.5
     StaticCollider c(s);
     EXPECT_NEAR(c.distance(dvec3(1e5 + 0.5 + 0.123456, 0, 0)), 0.123456, 1e-6);
     std::vector<StaticHit> hits;
@@ -187,7 +179,7 @@ TEST(PhysicsStatic, DistancesKeepPrecisionFarFromTheOrigin) {
 // same steps as a query that measures afresh (a new body each time).
 TEST(PhysicsStatic, KeptClearanceFindsWhatMeasuringFinds) {
     Scene s = physicsWorld(9.81f, 0.3f, 0.5f, false);
-    s.objects.push_back(staticObject(ShapeType::Box, {0, 0, 0}));  // half-extent 0.5
+    s.objects.push_back(staticShape(ShapeType::Box, {0, 0, 0}));  // half-extent 0.5
     StaticCollider kept(s), fresh(s);
     std::vector<StaticHit> a, b;
     int seen = 0;

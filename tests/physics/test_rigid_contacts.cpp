@@ -37,9 +37,7 @@ Object dynamicBox(glm::vec3 pos, glm::vec3 half, float mass = 1.0f) {
 Scene slopeScene(float degrees, float friction, Object body) {
     Scene s = physicsWorld(9.81f, 0.0f, friction, false);
     s.world.rolling = 0.0f;
-    Object plank;
-    plank.type = ShapeType::Box;
-    plank.isStatic = true;
+    Object plank = staticShape(ShapeType::Box, {});
     plank.size = {20.0f, 0.5f, 2.0f};
     plank.rot = {0.0f, 0.0f, degrees};
     s.objects.push_back(plank);
@@ -144,10 +142,7 @@ TEST(RigidContacts, TenBoxStackStands) {
 // around it: its centre on the peg's axis within the hole's play, lying flat on its tube.
 TEST(RigidContacts, TorusDroppedOverAPegSettlesAroundIt) {
     Scene s = physicsWorld(9.81f, 0.2f, 0.5f, true);
-    Object peg;
-    peg.type = ShapeType::Capsule;
-    peg.isStatic = true;
-    peg.pos = {0, 0.6f, 0};
+    Object peg = staticShape(ShapeType::Capsule, {0, 0.6f, 0});
     peg.radius = 0.1f;
     peg.height = 1.0f;
     s.objects.push_back(peg);
@@ -167,10 +162,7 @@ TEST(RigidContacts, TorusDroppedOverAPegSettlesAroundIt) {
 // 42 cm a step, more than both together; its speculative contacts stop it at the face.
 TEST(RigidContacts, ThinFastBoxDoesNotPassThroughAWall) {
     Scene s = physicsWorld(0.0f, 0.0f, 0.3f, false);
-    Object wall;
-    wall.type = ShapeType::Box;
-    wall.isStatic = true;
-    wall.pos = {2.0f, 0, 0};
+    Object wall = staticShape(ShapeType::Box, {2.0f, 0, 0});
     wall.size = {0.05f, 2.0f, 2.0f};
     s.objects.push_back(wall);
     Object thin = dynamicBox({0, 0, 0}, {0.025f, 0.3f, 0.3f});
