@@ -201,6 +201,10 @@ void reduceManifold(std::vector<Candidate>& all) {
     all = kept;
 }
 
+// A touching pair's friction and restitution from their own values, as the scene format says.
+double pairFriction(double f1, double f2) { return std::sqrt(f1 * f2); }
+double pairRestitution(double e1, double e2) { return std::max(e1, e2); }
+
 template <class Candidate>
 double lowest(const std::vector<Candidate>& all) {
     double low = all.empty() ? 0.0 : all[0].point.y;
@@ -308,6 +312,16 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     for (Manifold& m : manifolds_) prepareFriction(m);
 }
 
+// A candidate's normal, separation and probe; `height` its manifold's, `pair` its pair's key.
+RigidContact RigidBodies::contactFrom(const Candidate& c, double height, std::uint64_t pair) {
+    RigidContact k;
+    k.normal = c.normal;
+    k.separation = c.separation;
+    k.height = height;
+    k.key = pair | std::uint64_t(c.probe);
+    return k;
+}
+
 // One manifold per static surface the body's probes reach.
 void RigidBodies::collideStatics(int i) {
     RigidBody& b = bodies_[size_t(i)];
@@ -320,15 +334,11 @@ void RigidBodies::collideStatics(int i) {
         reduceManifold(candidates_);
         const double low = lowest(candidates_);
         for (const Candidate& c : candidates_) {
-            RigidContact k;
+            RigidContact k = contactFrom(c, low, pairKey(i, -1) | std::uint64_t(f) << 8);
             k.a = fixed;
             k.b = sideOf(b, c.point, c.centre);
-            k.normal = c.normal;
-            k.separation = c.separation;
-            k.height = low;
-            k.key = pairKey(i, -1) | std::uint64_t(f) << 8 | std::uint64_t(c.probe);
-            k.friction = std::sqrt(b.friction * worldFriction_);
-            k.restitution = std::max(b.restitution, worldRestitution_);
+            k.friction = pairFriction(b.friction, worldFriction_);
+            k.restitution = pairRestitution(b.restitution, worldRestitution_);
             contacts_.push_back(k);
         }
     }
@@ -424,15 +434,11 @@ void RigidBodies::collidePair(int i, int j) {
     const double low = lowest(candidates_);
     RigidBody &a = bodies_[size_t(i)], &b = bodies_[size_t(j)];
     for (const Candidate& c : candidates_) {
-        RigidContact k;
+        RigidContact k = contactFrom(c, low, pairKey(i, j));
         k.a = sideOf(a, c.point, c.proberIsA ? c.centre : c.point);
         k.b = sideOf(b, c.point, c.proberIsA ? c.point : c.centre);
-        k.normal = c.normal;
-        k.separation = c.separation;
-        k.height = low;
-        k.key = pairKey(i, j) | std::uint64_t(c.probe);
-        k.friction = std::sqrt(a.friction * b.friction);
-        k.restitution = std::max(a.restitution, b.restitution);
+        k.friction = pairFriction(a.friction, b.friction);
+        k.restitution = pairRestitution(a.restitution, b.restitution);
         contacts_.push_back(k);
         touching_[size_t(i)] |= b.awake && glm::length(b.vel) > settings_.sleepSpeed;
         touching_[size_t(j)] |= a.awake && glm::length(a.vel) > settings_.sleepSpeed;
@@ -462,8 +468,8 @@ void RigidBodies::collideSphere(int i, PhysicsBody& sphere, int sphereIndex) {
     k.separation = separation;
     k.height = point.y;
     k.key = pairKey(i, count() + sphereIndex);
-    k.friction = std::sqrt(b.friction * worldFriction_);
-    k.restitution = std::max(b.restitution, worldRestitution_);
+    k.friction = pairFriction(b.friction, worldFriction_);
+    k.restitution = pairRestitution(b.restitution, worldRestitution_);
     contacts_.push_back(k);
     if (!sphere.awake && b.awake && glm::length(b.vel) > settings_.sleepSpeed)
         touching_[size_t(i)] |= 2;

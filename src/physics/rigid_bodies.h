@@ -116,8 +116,7 @@ private:
     void collideSphere(int i, PhysicsBody& sphere, int sphereIndex);
     void probeStatics(int i, std::vector<std::vector<Candidate>>& byFeature);
     void probeShape(const RigidBody& prober, const RigidBody& shape, bool flip, int offset);
-    void addManifold(const ContactSide& a, const ContactSide& b, std::uint64_t pairKey,
-                     double friction, double restitution);
+    static RigidContact contactFrom(const Candidate& c, double height, std::uint64_t pair);
     // `centre`: the probe's, where b holds it; else the point itself, a point of b's surface.
     ContactSide sideOf(RigidBody& b, const glm::dvec3& point, const glm::dvec3& centre);
     void prepare(RigidContact& c);
