@@ -109,7 +109,7 @@ void describeSettings(TemplateValues* v) {
 
 int runPhysicsReport(const std::string& repoRoot) {
     const std::string docs = repoRoot + "/docs";
-    std::string text, md, error;
+    std::string text, error;
     if (!readReportTemplate(repoRoot, "physics-report.md", &text, &error)) {
         std::cerr << error << '\n';
         return 1;
@@ -125,12 +125,8 @@ int runPhysicsReport(const std::string& repoRoot) {
     v["extreme_table"] = extremeTable();
     std::cerr << "physics report: Bullet\n";
     v["bullet"] = bulletSection();
-    if (!fillTemplate(text, v, &md, &error)) {
-        std::cerr << "physics-report.md: " << error << '\n';
-        return 1;
-    }
-    if (!writeTextFile(docs + "/physics-report.md", md)) {
-        std::cerr << "cannot write " << docs << "/physics-report.md\n";
+    if (!writeReport(docs + "/physics-report.md", text, v, &error)) {
+        std::cerr << error << '\n';
         return 1;
     }
     std::cerr << "wrote " << docs << "/physics-report.md\n";

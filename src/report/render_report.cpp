@@ -554,7 +554,7 @@ int runRenderReport(const std::string& root, OffscreenBackend backend) {
     OffscreenContext context;
     Renderer renderer;
     ColorTarget target;  // big enough for the 4x reference; EGL has no default framebuffer
-    std::string error, text, md, docs = root + "/docs";
+    std::string error, text, docs = root + "/docs";
     if (!readReportTemplate(root, "render-report.md", &text, &error)) {
         std::cerr << error << '\n';
         return 1;
@@ -571,12 +571,8 @@ int runRenderReport(const std::string& root, OffscreenBackend backend) {
                         {"machine", machineDescription()}};
     describeMethod(&v);
     measureAll(renderer, root, docs, &v);
-    if (!fillTemplate(text, v, &md, &error)) {
-        std::cerr << "render-report.md: " << error << '\n';
-        return 1;
-    }
-    if (!writeTextFile(docs + "/render-report.md", md)) {
-        std::cerr << "cannot write " << docs << "/render-report.md\n";
+    if (!writeReport(docs + "/render-report.md", text, v, &error)) {
+        std::cerr << error << '\n';
         return 1;
     }
     std::cout << "wrote " << docs << "/render-report.md\n";

@@ -1,6 +1,8 @@
 // report_template.cpp — reading a report's template and filling in its placeholders.
 #include "report_template.h"
 
+#include "report_plot.h"
+
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -47,6 +49,20 @@ bool fillTemplate(const std::string& text, const TemplateValues& values, std::st
             return false;
         }
     *out = filled + text.substr(at);
+    return true;
+}
+
+bool writeReport(const std::string& path, const std::string& text, const TemplateValues& values,
+                 std::string* error) {
+    std::string filled, why;
+    if (!fillTemplate(text, values, &filled, &why)) {
+        *error = path.substr(path.find_last_of('/') + 1) + ": " + why;
+        return false;
+    }
+    if (!writeTextFile(path, filled)) {
+        *error = "cannot write " + path;
+        return false;
+    }
     return true;
 }
 

@@ -19,4 +19,8 @@ bool readReportTemplate(const std::string& root, const std::string& file, std::s
 bool fillTemplate(const std::string& text, const TemplateValues& values, std::string* out,
                   std::string* error);
 
+// fillTemplate, then the result written to `path`; false with *error ("NAME: why") if either fails.
+bool writeReport(const std::string& path, const std::string& text, const TemplateValues& values,
+                 std::string* error);
+
 }  // namespace mb
