@@ -9,7 +9,7 @@
 //
 // The rows are solved with the spheres' soft step (Box2D v3) in the same substeps: the normal
 // row soft with bias in the solve pass and rigid in the relax pass, Coulomb friction on the
-// tangent plane (a disc: |λ_t| ≤ μ·λ_n), rolling resistance (|τ| ≤ rolling · r · λ_n), and
+// tangent plane (a disc: |λ_t| ≤ μ·Σλ_n), rolling resistance (|τ| ≤ rolling · r · Σλ_n), and
 // restitution after the substeps. Spheres touching a body take part through their own
 // PhysicsBody. Between substeps a body's orientation turns by the free rigid body's exact
 // sub-flows (rotateFree), which keep its angular momentum and energy.
@@ -73,13 +73,35 @@ struct RigidContact {
     glm::dvec3 tangent[2];
     double separation = 0.0;  // at the step's start; < 0 overlaps
     double height = 0.0;      // of its manifold's lowest point: solved bottom-up
-    double friction = 0.0, restitution = 0.0, rolling = 0.0, rollArm = 0.0, slop = 0.0;
+    double friction = 0.0, restitution = 0.0, rolling = 0.0, rollArm = 0.0;
     double normalMass = 0.0, tangentMass[2] = {0.0, 0.0};
-    double normalImpulse = 0.0, maxNormalImpulse = 0.0;
+    double normalImpulse = 0.0;             // last step's, to start the row from
     double tangentImpulse[2] = {0.0, 0.0};  // a manifold's friction only, as the twist
-    glm::dvec3 rollImpulse{0.0};
+    glm::dvec3 rollImpulse{0.0};            // a manifold's friction only, as the twist
     double twistImpulse = 0.0, twistMass = 0.0, twistArm = 0.0;  // a manifold's friction only
     double relativeVelocity = 0.0;  // normal, at the step's start, for restitution
+};
+
+// A contact's normal row as the sweeps read and write it: what they touch and nothing else, a
+// third of a RigidContact, so that a pile's rows stay in cache through the substeps.
+struct NormalRow {
+    glm::dvec3 *velA = nullptr, *spinA = nullptr, *velB = nullptr, *spinB = nullptr;
+    bool *supportedA = nullptr, *supportedB = nullptr;
+    glm::dvec3 normal{0.0};
+    glm::dvec3 armA{0.0}, armB{0.0};    // anchor × normal, each side
+    glm::dvec3 turnA{0.0}, turnB{0.0};  // I⁻¹·arm: the spin a unit impulse gives
+    double invMassA = 0.0, invMassB = 0.0;
+    double mass = 0.0;  // 1 / K along the normal
+    double impulse = 0.0, maxImpulse = 0.0;
+    double separation = 0.0;  // at this substep, for its sweeps
+    double slop = 0.0;
+};
+
+// A manifold's friction rows at its centre, with the crosses and I⁻¹ products done once a step:
+// each tangent's arm (anchor × tangent) and turn (I⁻¹·arm) per side, and the twist's I⁻¹·n.
+struct FrictionRows {
+    glm::dvec3 armA[2], armB[2], turnA[2], turnB[2];
+    glm::dvec3 twistA{0.0}, twistB{0.0};
 };
 
 class RigidBodies {
@@ -116,11 +138,13 @@ private:
     void collideSphere(int i, PhysicsBody& sphere, int sphereIndex);
     void probeStatics(int i, std::vector<std::vector<Candidate>>& byFeature);
     void probeShape(const RigidBody& prober, const RigidBody& shape, bool flip, int offset);
+    void sortBottomUp();
     static RigidContact contactFrom(const Candidate& c, double height, std::uint64_t pair);
     // `centre`: the probe's, where b holds it; else the point itself, a point of b's surface.
     ContactSide sideOf(RigidBody& b, const glm::dvec3& point, const glm::dvec3& centre);
     void prepare(RigidContact& c);
-    void solveNormal(RigidContact& c, const Softness& soft, double h, bool useBias);
+    // Returns how much the row changed the contact's normal speed, m/s.
+    double solveNormal(NormalRow& r, const Softness& soft, double h, bool useBias);
     void wake(std::vector<PhysicsBody>& spheres);
     void updateSleep();
 
@@ -130,16 +154,31 @@ private:
     StaticCollider statics_;
     Broadphase broadphase_;
     std::vector<RigidContact> contacts_;  // each manifold's points together, bottom-up
+    std::vector<NormalRow> rows_;         // contacts_'s normal rows, in the same order
     struct Manifold {
         int begin, end;         // in contacts_
-        RigidContact friction;  // the points' friction, at their centre
+        RigidContact friction;  // the points' friction and rolling, at their centre
+        FrictionRows rows;
     };
     void prepareFriction(Manifold& m);
     bool heldEarly(const Manifold& m, double accel) const;
     void undo(Manifold& m);
     std::vector<Manifold> manifolds_;
     std::vector<Candidate> candidates_;
-    std::vector<std::pair<std::uint64_t, RigidContact>> kept_;  // last step's, by key
+    // Last step's impulses, by key, to start this step's rows from.
+    struct Kept {
+        std::uint64_t key;
+        double normal, tangent[2], twist;
+        glm::dvec3 roll;
+    };
+    std::vector<Kept> kept_;
+    struct Place {  // a contact's sort key and where it is
+        double height;
+        std::uint64_t key;
+        size_t index;
+    };
+    std::vector<Place> order_;
+    std::vector<RigidContact> sorted_;
     std::vector<glm::dvec3> centres_;
     std::vector<double> extents_, margins_;
     std::vector<std::pair<int, int>> pairs_;

@@ -111,6 +111,27 @@ std::array<int, 3> axisOrder(const dvec3& inertia) {
     return {byMoment[0], byMoment[2], byMoment[1]};
 }
 
+// The symmetric top (two equal moments I⊥, the third I_k about axis k) turns exactly: its
+// energy T = |L|²/(2I⊥) + L_k²·(1/I_k − 1/I⊥)/2 is two terms whose flows commute (|L| does not
+// change as the body turns about k). The first turns the body about the fixed world momentum at
+// |L|/I⊥ and leaves the body's L alone; the second is axis k's flow at the rate the difference
+// gives. Two turns instead of the splitting's fifteen, and no splitting error: every box with
+// equal sides, every capsule, cylinder and torus. Returns false for a body with three moments.
+bool rotateSymmetric(dquat& q, dvec3& bodyMomentum, const dvec3& inertia, double h) {
+    int k = -1;
+    for (int axis = 0; axis < 3; ++axis)
+        if (inertia[(axis + 1) % 3] == inertia[(axis + 2) % 3]) k = axis;
+    if (k < 0) return false;
+    const double across = inertia[(k + 1) % 3];
+    dvec3 rate(0.0);
+    rate[k] = 1.0 / inertia[k] - 1.0 / across;         // axis k's flow at L_k·(1/I_k − 1/I⊥)
+    flowAboutAxis(q, bodyMomentum, 1.0 / rate, k, h);  // a zero rate is an infinite moment
+    const dvec3 world = q * bodyMomentum;
+    const double size = glm::length(world);
+    if (size > 0.0) q = glm::angleAxis(size / across * h, world / size) * q;
+    return true;
+}
+
 }  // namespace
 
 MassProperties massProperties(const Object& o) {
@@ -133,10 +154,12 @@ MassProperties massProperties(const Object& o) {
 // Yoshida's triple jump: Strang steps of w1·h, w0·h, w1·h with w1 = 1/(2 − ∛2), w0 = 1 − 2·w1
 // cancel the third-order error of the symmetric step, leaving a fourth-order one.
 void rotateFree(dquat& q, dvec3& spin, const dvec3& inertia, double h) {
-    const double w1 = 1.0 / (2.0 - std::cbrt(2.0)), w0 = 1.0 - 2.0 * w1;
-    const std::array<int, 3> order = axisOrder(inertia);
     dvec3 bodyMomentum = inertia * (glm::conjugate(q) * spin);
-    for (const double w : {w1, w0, w1}) strangStep(q, bodyMomentum, inertia, order, w * h);
+    if (!rotateSymmetric(q, bodyMomentum, inertia, h)) {
+        const double w1 = 1.0 / (2.0 - std::cbrt(2.0)), w0 = 1.0 - 2.0 * w1;
+        const std::array<int, 3> order = axisOrder(inertia);
+        for (const double w : {w1, w0, w1}) strangStep(q, bodyMomentum, inertia, order, w * h);
+    }
     q = glm::normalize(q);
     spin = q * (bodyMomentum / inertia);
 }

@@ -22,9 +22,9 @@ MassProperties massProperties(const Object& o);
 
 // The free rigid body's rotation over h (no torque): orientation q (body to world, unit) and
 // world angular velocity `spin`, for principal moments `inertia` (local axes, each > 0). Keeps
-// the world angular momentum to rounding and the kinetic energy to a tiny bound (a symmetric
-// fourth-order splitting; rigid_body.cpp has the method and its measured errors). q leaves
-// normalised.
+// the world angular momentum to rounding, and the kinetic energy to rounding where two moments
+// are equal (the symmetric top's exact flow) or else to a tiny bound (a symmetric fourth-order
+// splitting; rigid_body.cpp has both methods and the measured errors). q leaves normalised.
 void rotateFree(glm::dquat& q, glm::dvec3& spin, const glm::dvec3& inertia, double h);
 
 }  // namespace mb
