@@ -2,6 +2,7 @@
 #include "rigid_bodies.h"
 
 #include "box_box.h"
+#include "manifold_points.h"
 #include "island.h"
 #include "rigid_body.h"
 
@@ -18,8 +19,7 @@ using glm::dvec3;
 
 namespace {
 
-constexpr int kProbeStride = 64;  // StaticCollider ids per body: its probes, then its rims'
-constexpr int kMaxManifold = 4;
+constexpr int kProbeStride = 64;          // StaticCollider ids per body: its probes, then its rims'
 constexpr int kSweeps = 4;                // at most, of a manifold's rows in the relax pass
 constexpr double kSweepTolerance = 1e-3;  // m/s: a sweep that changed no row more has converged
 constexpr int kBounceSweeps = 16;         // of a manifold's rows in restitute: a face bounces whole
@@ -235,32 +235,6 @@ void solveRolling(RigidContact& c, double normalImpulse) {
 
 std::uint64_t pairKey(int a, int b) {
     return std::uint64_t(a + 1) << 40 | std::uint64_t(b + 1) << 16;
-}
-
-// Up to four of the candidates: the deepest, the one furthest from it, the one spanning the
-// largest triangle with those, and the one furthest from all three. Ties go to the first.
-template <class Candidate>
-void reduceManifold(std::vector<Candidate>& all) {
-    if (all.size() <= size_t(kMaxManifold)) return;
-    auto best = [&](auto score) {
-        size_t at = 0;
-        for (size_t i = 1; i < all.size(); ++i)
-            if (score(all[i]) > score(all[at])) at = i;
-        return all[at];
-    };
-    std::vector<Candidate> kept;
-    kept.push_back(best([](const Candidate& c) { return -c.separation; }));
-    const dvec3 p0 = kept[0].point;
-    kept.push_back(best([&](const Candidate& c) { return glm::length(c.point - p0); }));
-    const dvec3 p1 = kept[1].point;
-    kept.push_back(
-        best([&](const Candidate& c) { return glm::length(glm::cross(p1 - p0, c.point - p0)); }));
-    const dvec3 p2 = kept[2].point;
-    kept.push_back(best([&](const Candidate& c) {
-        return std::min(
-            {glm::length(c.point - p0), glm::length(c.point - p1), glm::length(c.point - p2)});
-    }));
-    all = kept;
 }
 
 // A touching pair's friction and restitution from their own values, as the scene format says.
@@ -485,8 +459,13 @@ void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bo
     const dvec3 axis = prober.orient * dvec3(0, 1, 0);
     for (size_t r = 0; r < prober.rims.size(); ++r) {
         const dvec3 c = prober.pos + prober.orient * prober.rims[r].centre;
+        // Every point of the rim lies within its radius of c, and the SDF changes no faster
+        // than the distance: a rim whose centre is that far out of reach has nothing to find.
+        const double rimReach = prober.rims[r].radius + reach;
+        if (glm::length(c - shape.pos) >= shape.bound + rimReach) continue;
+        if (distanceTo(shape, c) >= rimReach) continue;
         const std::vector<dvec3> support =
-            rimSupport(c, axis, prober.rims[r].radius, sampleShape(shape, c).normal);
+            rimSupport(c, axis, prober.rims[r].radius, normalAt(shape, c));
         for (size_t k = 0; k < support.size(); ++k)
             probe(support[k], 0.0, int(prober.probes.size() + 4 * r + k),
                   support.size() == 1 ? c : support[k]);
@@ -582,9 +561,8 @@ void RigidBodies::prepare(RigidContact& c) {
     c.rolling = rolling_;
     c.rollArm = glm::length(c.b.anchor);
     c.relativeVelocity = glm::dot(c.normal, relativeVelocity(c));
-    auto warm = std::lower_bound(kept_.begin(), kept_.end(), c.key,
-                                 [](const Kept& k, std::uint64_t key) { return k.key < key; });
-    if (warm == kept_.end() || warm->key != c.key) return;
+    const WarmImpulses* warm = kept_.find(c.key);
+    if (!warm) return;
     c.normalImpulse = warm->normal;
     c.tangentImpulse[0] = warm->tangent[0];
     c.tangentImpulse[1] = warm->tangent[1];
@@ -778,18 +756,14 @@ void RigidBodies::integratePositions(double h, double gravity) {
 }
 
 void RigidBodies::finishStep() {
-    kept_.clear();
+    kept_.clear(contacts_.size() + manifolds_.size());
     auto keep = [&](const RigidContact& c, double normal) {
-        kept_.push_back({c.key,
-                         normal,
-                         {c.tangentImpulse[0], c.tangentImpulse[1]},
-                         c.twistImpulse,
-                         c.rollImpulse});
+        kept_.put(
+            c.key,
+            {normal, {c.tangentImpulse[0], c.tangentImpulse[1]}, c.twistImpulse, c.rollImpulse});
     };
     for (size_t i = 0; i < contacts_.size(); ++i) keep(contacts_[i], rows_[i].impulse);
     for (const Manifold& m : manifolds_) keep(m.friction, 0.0);
-    std::sort(kept_.begin(), kept_.end(),
-              [](const Kept& x, const Kept& y) { return x.key < y.key; });
     for (RigidBody& b : bodies_) b.delta = dvec3(0.0);
     updateSleep();
 }

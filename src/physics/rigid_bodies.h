@@ -19,6 +19,7 @@
 #include "contact_solver.h"
 #include "rigid_probes.h"
 #include "static_collider.h"
+#include "warm_starts.h"
 
 #include "marchbox/physics/physics.h"
 #include "marchbox/scene/sdf.h"
@@ -165,13 +166,7 @@ private:
     void undo(Manifold& m);
     std::vector<Manifold> manifolds_;
     std::vector<Candidate> candidates_;
-    // Last step's impulses, by key, to start this step's rows from.
-    struct Kept {
-        std::uint64_t key;
-        double normal, tangent[2], twist;
-        glm::dvec3 roll;
-    };
-    std::vector<Kept> kept_;
+    WarmStarts kept_;  // last step's impulses, to start this step's rows from
     struct Place {  // a contact's sort key and where it is
         double height;
         std::uint64_t key;
