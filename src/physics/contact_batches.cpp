@@ -285,7 +285,7 @@ template <class V>
 
 template <class V>
 [[gnu::always_inline]] inline void solveFriction(const Slice<V>& at, PairLanes<V>& s,
-                                                 const LaneRows& w, double friction) {
+                                                 const LaneRows& w) {
     // The contact points move at v_a + ω_a × r_a·n and v_b − ω_b × r_b·n; the spin terms lie in
     // the tangent plane already.
     ContactBatch& c = at.c;
@@ -293,7 +293,8 @@ template <class V>
     Lanes3<V> vt = s.b.vel - s.a.vel;
     vt = vt - (dot(vt, n) * n + cross(at(c.armA) * s.a.spin + at(c.armB) * s.b.spin, n));
     const Lanes3<V> old{at(c.tx), at(c.ty), at(c.tz)};
-    const Lanes3<V> total = clampLength(old - at(w.tangent) * vt, friction * at(c.normalImpulse));
+    const Lanes3<V> total =
+        clampLength(old - at(w.tangent) * vt, at(c.friction) * at(c.normalImpulse));
     applyImpulse(s, at, w, total - old);
     at.set(c.tx, total.x), at.set(c.ty, total.y), at.set(c.tz, total.z);
 }
@@ -320,7 +321,7 @@ template <class V>
                                              bool useBias) {
     const bool moved = solveNormal(at, s, ctx, w, useBias);
     if (!anyImpulse(at)) return moved;
-    solveFriction(at, s, w, ctx.friction);
+    solveFriction(at, s, w);
     solveRolling(at, s, w, ctx.rolling);
     return true;
 }
@@ -350,6 +351,7 @@ void loadLane(ContactBatch& to, int l, Contact& c, const SolverContext& ctx) {
     to.nx[l] = c.normal.x, to.ny[l] = c.normal.y, to.nz[l] = c.normal.z;
     to.separation[l] = c.separation, to.armA[l] = c.armA, to.armB[l] = c.armB, to.slop[l] = c.slop;
     to.curve[l] = 0.0, to.rollRadius[l] = c.rollRadius;  // curve: 0 until setCurve
+    to.friction[l] = c.friction;
     setRows(to.solve, l, c.mass, rows.solve);
     setRows(to.relax, l, rows.relaxMass, rows.relax);
     to.normalImpulse[l] = c.normalImpulse, to.maxNormalImpulse[l] = c.maxNormalImpulse;

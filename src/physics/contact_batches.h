@@ -35,7 +35,7 @@ struct ContactBatch {
     PhysicsBody* b[kLanes];  // the static body for both
     int count = 0;           // lanes in use
     Lanes nx, ny, nz;        // normal
-    Lanes separation, armA, armB, slop, curve, rollRadius;
+    Lanes separation, armA, armB, slop, curve, rollRadius, friction;
     LaneRows solve, relax;  // relax: the lower body held fixed under shock propagation
     Lanes normalImpulse, maxNormalImpulse;
     Lanes tx, ty, tz, rx, ry, rz;  // tangent and rolling impulses

@@ -74,7 +74,7 @@ PreparedRows prepareContact(Contact& c, const SolverContext& ctx) {
 // step. The passes change neither condition, so the contacts are found once. Along the normal
 // there is no torque; body a is left alone where it does not move (the static body).
 void applyRestitution(SolverContext& ctx, int iterations, std::vector<int>& bouncing) {
-    if (ctx.restitution <= 0.0) return;
+    if (ctx.maxRestitution <= 0.0) return;
     bouncing.resize(ctx.contacts.size());
     size_t count = 0;
     for (size_t i = 0; i < ctx.contacts.size(); ++i) {  // written in full, counted where it bounces
@@ -90,7 +90,7 @@ void applyRestitution(SolverContext& ctx, int iterations, std::vector<int>& boun
             PhysicsBody& a = ctx.bodies[c.a];
             PhysicsBody& b = ctx.bodies[c.b];
             const double vn = glm::dot(b.vel - a.vel, c.normal);
-            const double impulse = -c.mass.normal * (vn + ctx.restitution * c.relativeVelocity);
+            const double impulse = -c.mass.normal * (vn + c.restitution * c.relativeVelocity);
             const double total = std::max(c.normalImpulse + impulse, 0.0);
             const glm::dvec3 p = (total - c.normalImpulse) * c.normal;
             if (a.invMass > 0.0) a.vel -= a.invMass * p;

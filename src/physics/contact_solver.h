@@ -32,7 +32,9 @@ struct Contact {
     double armA = 0.0, armB = 0.0;  // centre to contact point, along ±normal
     double slop = 0.0;              // overlap left alone, m
     RowMasses mass;
-    double rollRadius = 0.0;        // lever of rolling resistance
+    double rollRadius = 0.0;  // lever of rolling resistance
+    double friction = 0.0;    // the pair's (surface.h)
+    double restitution = 0.0;
     double shift = 0.0;             // added to separation for the impacts (impacts.h), m
     double relativeVelocity = 0.0;  // normal velocity at the start of the step (after the
                                     // impacts, from prepareContact), for bounce
@@ -63,11 +65,10 @@ struct SolverContext {
     std::vector<PhysicsBody>& bodies;  // the static body last
     std::vector<Contact>& contacts;
     const PhysicsSettings& settings;
-    double gravity;   // m/s² along −y
-    double friction;  // Coulomb coefficient
-    double restitution;
-    double rolling;  // rolling resistance: torque = rolling · radius · normal force
-    double h;        // substep, s
+    double gravity;         // m/s² along −y
+    double maxRestitution;  // of any contact: 0, and nothing bounces
+    double rolling;         // rolling resistance: torque = rolling · radius · normal force
+    double h;               // substep, s
     Softness soft;
     // The contacts come in three runs: [0, split[0]) and [split[0], split[1]) share no dynamic
     // body, so the solver takes the two at once, the first on `worker` (null: one thread), with

@@ -24,7 +24,7 @@ int Impacts::resolve(SolverContext& ctx) {
     const std::vector<PhysicsBody>& bodies = ctx.bodies;
     const size_t n = bodies.size(), contacts = ctx.contacts.size();
     any_ = linked_ = false;
-    if (ctx.restitution <= 0.0 || contacts == 0) return 0;  // e = 0: the solver's stop is exact
+    if (ctx.maxRestitution <= 0.0 || contacts == 0) return 0;  // e = 0: the solver's stop is exact
     // A body a contact pushed at the end of the last step rests on it: no free fall this step.
     accel_.assign(n, dvec3(0.0));
     for (size_t i = 0; i + 1 < n; ++i)
@@ -149,12 +149,12 @@ void Impacts::hit(SolverContext& ctx, const Contact& c, double t) {
     const double kn = a.invMass + b.invMass;
     if (kn <= 0.0) return;
     const double u = glm::dot(c.normal, vb - va);
-    const double pn = -(1.0 + ctx.restitution) * u / kn;
+    const double pn = -(1.0 + c.restitution) * u / kn;
     const dvec3 armA = c.normal * c.armA, armB = -c.normal * c.armB;
     dvec3 slip = (vb + glm::cross(b.spin, armB)) - (va + glm::cross(a.spin, armA));
     slip -= glm::dot(slip, c.normal) * c.normal;
     const double kt = kn + a.invInertia * c.armA * c.armA + b.invInertia * c.armB * c.armB;
-    const dvec3 p = pn * c.normal + clampLength(-slip / kt, ctx.friction * pn);
+    const dvec3 p = pn * c.normal + clampLength(-slip / kt, c.friction * pn);
     a.vel -= a.invMass * p;
     a.spin -= a.invInertia * glm::cross(armA, p);
     b.vel += b.invMass * p;

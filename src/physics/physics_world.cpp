@@ -38,6 +38,14 @@ Found found(int a, int b, const PhysicsBody& onB, int feature, bool curved, cons
     return {a, b, feature, curved, normal, separation, onB.pos.y - onB.radius * normal.y};
 }
 
+// The largest restitution any contact can have (surface.h takes the larger of a pair's): where it
+// is 0 the impacts and the bounce passes have nothing to do.
+double largestRestitution(const Scene& scene) {
+    double e = scene.world.restitution;
+    for (const Object& o : scene.objects) e = std::max(e, double(o.restitution.value_or(0.0f)));
+    return e;
+}
+
 }  // namespace
 
 struct PhysicsWorld::Impl {
@@ -45,8 +53,7 @@ struct PhysicsWorld::Impl {
         : statics(scene),
           rigid(scene, settings),
           gravity(scene.world.gravity),
-          friction(scene.world.friction),
-          restitution(scene.world.restitution),
+          maxRestitution(largestRestitution(scene)),
           rolling(scene.world.rolling) {}
 
     struct Order {
@@ -78,7 +85,7 @@ struct PhysicsWorld::Impl {
     Broadphase broadphase;
     Impacts impacts;
     ContactBatches batches;  // the solver's state during the substeps
-    double gravity, friction, restitution, rolling;
+    double gravity, maxRestitution, rolling;
     std::vector<Found> found;
     std::vector<Contact> contacts;  // in solve order
     std::vector<int> curved;        // contacts on curved static surfaces, followed every substep
@@ -137,7 +144,7 @@ std::uint64_t contactKey(int a, int b, int feature, int staticBody) {
 // (Impacts::resolve), from its bodies (a may be static); the rest as a new Contact has them.
 // Written in place, as sortBottomUp writes its Orders.
 void makeContact(Contact& c, const Found& f, const std::vector<PhysicsBody>& bodies, int staticBody,
-                 const PhysicsSettings& settings) {
+                 const StaticCollider& statics, const PhysicsSettings& settings) {
     c = Contact{};
     c.a = f.a;
     c.b = f.b;
@@ -150,6 +157,12 @@ void makeContact(Contact& c, const Found& f, const std::vector<PhysicsBody>& bod
     c.rollRadius = f.a == staticBody ? c.armB : std::min(c.armA, c.armB);
     c.slop = slopFor(c.rollRadius, settings);
     c.relativeVelocity = glm::dot(bodies[size_t(f.b)].vel - bodies[size_t(f.a)].vel, f.normal);
+    const PhysicsBody &a = bodies[size_t(f.a)], &b = bodies[size_t(f.b)];
+    const Surface pair =
+        combine(f.a == staticBody ? statics.surface(f.feature) : Surface{a.friction, a.restitution},
+                {b.friction, b.restitution});
+    c.friction = pair.friction;
+    c.restitution = pair.restitution;
 }
 
 // The bits of a double as an unsigned integer in the double's order (negatives reversed below
@@ -174,6 +187,9 @@ PhysicsWorld::PhysicsWorld(const Scene& scene, const PhysicsSettings& settings)
         b.invMass = 1.0 / o.mass;
         b.invInertia = 1.0 / (0.4 * o.mass * b.radius * b.radius);  // solid sphere: I = 2/5·m·r²
         b.object = int(i);
+        const Surface own = surfaceOf(o, scene.world);
+        b.friction = own.friction;
+        b.restitution = own.restitution;
         bodies_.push_back(b);
     }
     bodies_.push_back(PhysicsBody{});  // the static body: zero inverse mass, never moves
@@ -232,8 +248,7 @@ void PhysicsWorld::step() {
         w.contacts,
         settings_,
         w.gravity,
-        w.friction,
-        w.restitution,
+        w.maxRestitution,
         w.rolling,
         h,
         makeSoftness(std::min(settings_.contactHertz, 0.25 / h), settings_.contactDampingRatio, h)};
@@ -332,7 +347,7 @@ void PhysicsWorld::orderAndWarmStart() {
         const Impl::Order& o = w.order[i];
         const int to = next[o.run]++;
         Contact& c = w.contacts[size_t(to)];
-        makeContact(c, w.found[size_t(o.index)], bodies_, bodyCount(), settings_);
+        makeContact(c, w.found[size_t(o.index)], bodies_, bodyCount(), w.statics, settings_);
         w.rank[size_t(to)] = int(i);
         if (o.warm < 0) continue;
         const Impl::Impulses& old = w.kept[size_t(o.warm)];

@@ -237,9 +237,10 @@ std::uint64_t pairKey(int a, int b) {
     return std::uint64_t(a + 1) << 40 | std::uint64_t(b + 1) << 16;
 }
 
-// A touching pair's friction and restitution from their own values, as the scene format says.
-double pairFriction(double f1, double f2) { return std::sqrt(f1 * f2); }
-double pairRestitution(double e1, double e2) { return std::max(e1, e2); }
+void setSurface(RigidContact& k, const Surface& pair) {
+    k.friction = pair.friction;
+    k.restitution = pair.restitution;
+}
 
 template <class Candidate>
 double lowest(const std::vector<Candidate>& all) {
@@ -251,12 +252,7 @@ double lowest(const std::vector<Candidate>& all) {
 }  // namespace
 
 RigidBodies::RigidBodies(const Scene& scene, const PhysicsSettings& settings)
-    : settings_(settings),
-      rolling_(scene.world.rolling),
-      worldFriction_(scene.world.friction),
-      worldRestitution_(scene.world.restitution),
-      dt_(settings.dt),
-      statics_(scene) {
+    : settings_(settings), rolling_(scene.world.rolling), dt_(settings.dt), statics_(scene) {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
         if (!o.dynamic() || o.type == ShapeType::Sphere) continue;
@@ -271,8 +267,7 @@ RigidBodies::RigidBodies(const Scene& scene, const PhysicsSettings& settings)
         b.invInertia = worldInverseInertia(b.orient, b.inertia);
         b.shape = shapeOf(o);
         b.bound = double(b.shape.bound);
-        b.friction = o.friction.value_or(float(worldFriction_));
-        b.restitution = o.restitution.value_or(float(worldRestitution_));
+        b.surface = surfaceOf(o, scene.world);
         b.object = int(i);
         b.probes = probesOf(o);
         b.rims = rimsOf(o);
@@ -387,8 +382,7 @@ void RigidBodies::collideStatics(int i) {
             RigidContact k = contactFrom(c, low, pairKey(i, -1) | std::uint64_t(f) << 8);
             k.a = fixed;
             k.b = sideOf(b, c.point, c.centre);
-            k.friction = pairFriction(b.friction, worldFriction_);
-            k.restitution = pairRestitution(b.restitution, worldRestitution_);
+            setSurface(k, combine(b.surface, statics_.surface(int(f))));
             contacts_.push_back(k);
         }
     }
@@ -495,8 +489,7 @@ void RigidBodies::collidePair(int i, int j) {
         RigidContact k = contactFrom(c, low, pairKey(i, j));
         k.a = sideOf(a, c.point, c.proberIsA ? c.centre : c.point);
         k.b = sideOf(b, c.point, c.proberIsA ? c.point : c.centre);
-        k.friction = pairFriction(a.friction, b.friction);
-        k.restitution = pairRestitution(a.restitution, b.restitution);
+        setSurface(k, combine(a.surface, b.surface));
         contacts_.push_back(k);
         touching_[size_t(i)] |= b.awake && glm::length(b.vel) > settings_.sleepSpeed;
         touching_[size_t(j)] |= a.awake && glm::length(a.vel) > settings_.sleepSpeed;
@@ -526,8 +519,7 @@ void RigidBodies::collideSphere(int i, PhysicsBody& sphere, int sphereIndex) {
     k.separation = separation;
     k.height = point.y;
     k.key = pairKey(i, count() + sphereIndex);
-    k.friction = pairFriction(b.friction, worldFriction_);
-    k.restitution = pairRestitution(b.restitution, worldRestitution_);
+    setSurface(k, combine(b.surface, {sphere.friction, sphere.restitution}));
     contacts_.push_back(k);
     if (!sphere.awake && b.awake && glm::length(b.vel) > settings_.sleepSpeed)
         touching_[size_t(i)] |= 2;

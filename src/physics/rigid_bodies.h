@@ -36,10 +36,10 @@ struct RigidBody {
     glm::dquat orient{1.0, 0.0, 0.0, 0.0};     // body to world
     glm::dvec3 delta{0.0};                     // displacement during the current step
     double invMass = 0.0;
-    glm::dvec3 inertia{0.0};                   // principal moments about the local axes
-    glm::dmat3 invInertia{0.0};                // world, for the orientation now
-    double bound = 0.0;                        // radius about pos that holds the shape
-    double friction = 0.0, restitution = 0.0;  // the body's own, or the world's
+    glm::dvec3 inertia{0.0};     // principal moments about the local axes
+    glm::dmat3 invInertia{0.0};  // world, for the orientation now
+    double bound = 0.0;          // radius about pos that holds the shape
+    Surface surface;             // the body's own, or the world's
     double sleepTime = 0.0;
     bool awake = true;
     bool supported = false;  // a contact pushed it this substep
@@ -150,7 +150,7 @@ private:
     void updateSleep();
 
     const PhysicsSettings& settings_;
-    double rolling_, worldFriction_, worldRestitution_, dt_;
+    double rolling_, dt_;
     std::vector<RigidBody> bodies_;
     StaticCollider statics_;
     Broadphase broadphase_;
@@ -167,7 +167,7 @@ private:
     std::vector<Manifold> manifolds_;
     std::vector<Candidate> candidates_;
     WarmStarts kept_;  // last step's impulses, to start this step's rows from
-    struct Place {  // a contact's sort key and where it is
+    struct Place {     // a contact's sort key and where it is
         double height;
         std::uint64_t key;
         size_t index;

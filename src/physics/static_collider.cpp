@@ -22,6 +22,9 @@ StaticCollider::StaticCollider(const Scene& scene)
     : ground_(scene.world.ground), floor_(scene.world.floor) {
     for (const Object& o : scene.objects)
         if (!o.dynamic()) statics_.push_back(makeSdfObject(o));
+    std::vector<Surface> own;
+    for (const Object& o : scene.objects)
+        if (!o.dynamic()) own.push_back(surfaceOf(o, scene.world));
     const int n = int(statics_.size());
     int chainEnd = 0;  // one past the last object that is not a sharp union
     for (int i = 0; i < n; ++i)
@@ -31,6 +34,8 @@ StaticCollider::StaticCollider(const Scene& scene)
     for (Group& g : groups_)
         for (int i = g.first; i < g.last; ++i) g.size = std::max(g.size, double(statics_[i].bound));
     for (const SdfObject& o : statics_) bounds_.push_back(boundOf(o));
+    surfaces_.push_back({scene.world.friction, scene.world.restitution});
+    for (const Group& g : groups_) surfaces_.push_back(own[size_t(g.first)]);
     local_.ground = false;
 }
 

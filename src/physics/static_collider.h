@@ -13,6 +13,7 @@
 
 #include "marchbox/scene/scene.h"
 #include "marchbox/scene/sdf.h"
+#include "surface.h"
 
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
@@ -55,6 +56,11 @@ public:
 
     double distance(const glm::dvec3& p);  // to the nearest static surface, ground included
 
+    // The friction and restitution of a surface (StaticHit::feature): the world's for the
+    // ground, a group's first object's (its own or the world's) for a group, which is one
+    // surface however many objects shape it.
+    const Surface& surface(int feature) const { return surfaces_[size_t(feature)]; }
+
 private:
     struct Group {
         int first, last;    // objects [first, last) of statics_
@@ -87,6 +93,7 @@ private:
     std::vector<SdfObject> statics_;
     std::vector<Bound> bounds_;  // per static object
     std::vector<Group> groups_;
+    std::vector<Surface> surfaces_;  // per feature: the ground, then each group
     bool ground_ = true;
     double floor_ = 0.0;
     SceneSdf local_;  // scratch: groups moved to a local origin

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -76,6 +77,25 @@ TEST(RigidContacts, BoxSlidesDownASlopeAtTheCoulombAcceleration) {
     const double s = slid(w, t, degrees);
     EXPECT_NEAR(-s, 0.5 * a * t * t, 0.01 * 0.5 * a * t * t)
         << "a = " << -2.0 * s / (t * t) << ", not " << a;
+}
+
+// A box w wide and h tall on a slope that holds it (μ = 1.5) tips once its weight passes the
+// downhill edge: tan θ > w/h. Here w/h = 1/2, θc = 26.57°: 1° below it the box stands (its axis
+// within 1° of the slope's normal after 3 s), 1° above it the box has fallen over (more than
+// 45°); the threshold is found within 1°.
+double tiltAfter3s(float degrees) {
+    PhysicsWorld w(slopeScene(degrees, 1.5f, dynamicBox({}, {0.1f, 0.2f, 0.15f})));
+    run(w, 3.0);
+    const double t = double(degrees) * M_PI / 180.0;
+    const dvec3 normal(-std::sin(t), std::cos(t), 0.0);
+    const dvec3 axis = w.rigid(0).orient * dvec3(0, 1, 0);
+    return std::acos(std::clamp(std::abs(glm::dot(axis, normal)), 0.0, 1.0)) * 180.0 / M_PI;
+}
+
+TEST(RigidContacts, TallBoxTipsWhereItsWeightPassesTheEdge) {
+    const float critical = float(std::atan(0.5) * 180.0 / M_PI);
+    EXPECT_LT(tiltAfter3s(critical - 1.0f), 1.0) << "tipped below tan θ = w/h";
+    EXPECT_GT(tiltAfter3s(critical + 1.0f), 45.0) << "stood above tan θ = w/h";
 }
 
 // A solid cylinder rolling without slipping: a = ⅔·g·sin θ (I = ½·m·r²); a capsule rolls with

@@ -84,6 +84,7 @@ struct PhysicsBody {
     bool supported = false;  // a contact pushed it this substep (solve pass)
     int island = -1;         // sleeping island, for waking it whole
     int object = -1;         // index in Scene::objects; -1 for the static body
+    double friction = 0.0, restitution = 0.0;  // its own, or the world's
 };
 
 // A dynamic body of any shape but the sphere, turned by a unit quaternion (body to world).
