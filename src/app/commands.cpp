@@ -5,6 +5,7 @@
 #include "marchbox/gl/quality_preset.h"
 #include "marchbox/gl/renderer.h"
 #include "marchbox/physics/physics.h"
+#include "marchbox/scene/camera_path.h"
 #include "marchbox/scene/scene_io.h"
 
 #include <algorithm>
@@ -141,6 +142,7 @@ int runRender(const Args& a) {
     if (!loadOrReport(a.positional[0], &scene) || !reported(checkSavePng(a.output, &error), error))
         return kExitBadInput;
     simulate(scene, a.seconds, physicsSettings(a));
+    scene.camera = cameraAt(scene.keyframes, scene.camera, a.seconds);
     applyQualityPreset(preset, &scene.render, &options);
     Image img;
     OffscreenRun run;
