@@ -34,7 +34,7 @@ static bool parseSize(const std::string& s, int* w, int* h) {
 
 // from_chars, unlike strtod, takes no hex ("0x10") and no leading blanks; it does read "inf"
 // and "nan", which the range check refuses.
-static bool parseSeconds(const std::string& s, double* out) {
+static bool parseSeconds(const std::string& s, std::optional<double>* out) {
     double v = 0;
     auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
     if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v) || v < 0 ||
@@ -44,13 +44,41 @@ static bool parseSeconds(const std::string& s, double* out) {
     return true;
 }
 
+// --fps: frames per second, more than 0 and at most kMaxFps (a fraction such as 23.976 too).
+static bool parseFps(const std::string& s, std::optional<double>* out) {
+    double v = 0;
+    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || end != s.data() + s.size() || !(v > 0 && v <= kMaxFps)) return false;
+    *out = v;
+    return true;
+}
+
+// --frames takes bench's count N or render's range A-B; the command refuses the other form.
+// *why is set where the value is a range in the wrong order.
+static bool parseFrames(const std::string& s, Args* a, std::string* why) {
+    size_t dash = s.find('-');
+    if (dash == std::string::npos || dash == 0) {
+        int n = 0;
+        return parseInt(s, 1, 100000, &n) ? (a->frameCount = n, true) : false;
+    }
+    FrameRange r;
+    if (!parseInt(s.substr(0, dash), 0, kMaxFrame, &r.first) ||
+        !parseInt(s.substr(dash + 1), 0, kMaxFrame, &r.last))
+        return false;
+    if (r.last < r.first) return *why = "the last frame comes before the first", false;
+    a->frameRange = r;
+    return true;
+}
+
 // Applies one option that takes a value; false with *error when the value is bad.
 static bool applyValue(const std::string& opt, const std::string& v, Args* a, std::string* error) {
     bool ok = true;
+    std::string why;  // what is wrong, where the expected form below does not say it
     if (opt == "-o") a->output = v, ok = !v.empty();
     else if (opt == "--size") ok = parseSize(v, &a->width, &a->height);
     else if (opt == "--seconds") ok = parseSeconds(v, &a->seconds);
-    else if (opt == "--frames") ok = parseInt(v, 1, 100000, &a->frames);
+    else if (opt == "--frames") ok = parseFrames(v, a, &why);
+    else if (opt == "--fps") ok = parseFps(v, &a->fps);
     else if (opt == "--threads") ok = parseInt(v, 1, 2, &a->threads);
     else if (opt == "--mode") a->mode = v;
     else if (opt == "--post") a->post = v;
@@ -61,11 +89,13 @@ static bool applyValue(const std::string& opt, const std::string& v, Args* a, st
             {"-o", "a file path"},
             {"--size", "WxH, each side 1 to 16384, at most 4096x4096 pixels in all"},
             {"--seconds", "a number of seconds from 0 to 3600"},
-            {"--frames", "a whole number from 1 to 100000"},
+            {"--frames", "N, a whole number from 1 to 100000, or A-B, frames 0 to 10000000"},
+            {"--fps", "a number of frames per second, more than 0 and at most 1000"},
             {"--threads", "1 or 2"}};
         for (auto& e : expected)
             if (opt == e[0])
-                *error = "bad value " + quoteArg(v) + " for " + opt + ": expected " + e[1];
+                *error = "bad value " + quoteArg(v) + " for " + opt + ": " +
+                         (why.empty() ? "expected " + std::string(e[1]) : why);
     }
     return ok;
 }
@@ -75,9 +105,11 @@ bool parseArgs(int argc, char** argv, int first, Args* out, std::string* error) 
         std::string arg = argv[i];
         if (arg == "--uber") {
             out->uber = true;
+        } else if (arg == "--skip-existing") {
+            out->skipExisting = true;
         } else if (arg == "-o" || arg == "--size" || arg == "--seconds" || arg == "--frames" ||
-                   arg == "--threads" || arg == "--mode" || arg == "--post" || arg == "--backend" ||
-                   arg == "--quality") {
+                   arg == "--fps" || arg == "--threads" || arg == "--mode" || arg == "--post" ||
+                   arg == "--backend" || arg == "--quality") {
             if (i + 1 >= argc) {
                 *error = "missing value after " + arg;
                 return false;

@@ -1,6 +1,7 @@
 // args.h — command-line options: parsed strictly, each error one line for standard error.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -8,18 +9,26 @@ namespace mb {
 
 enum ExitCode : int { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2, kExitNoGl = 3 };
 
+// Frames first to last, inclusive: render --frames A-B.
+struct FrameRange {
+    int first = 0, last = 0;
+};
+
 struct Args {
     std::vector<std::string> positional;
-    std::string output;              // -o
-    int width = 640, height = 360;   // --size WxH
-    double seconds = 0;              // --seconds
-    int frames = 20;                 // --frames
-    int threads = 1;                 // --threads 1|2: the simulator's (same bytes either way)
-    bool uber = false;               // --uber
-    std::string mode = "shaded";     // --mode
-    std::string post = "none";       // --post none|fxaa|fxaa-edges|fxaa-direction
-    std::string backend = "osmesa";  // --backend osmesa|egl
-    std::string quality = "normal";  // --quality draft|normal|final
+    std::string output;                    // -o
+    int width = 640, height = 360;         // --size WxH
+    std::optional<double> seconds;         // --seconds (0 when absent)
+    std::optional<int> frameCount;         // --frames N: bench's frames (20 when absent)
+    std::optional<FrameRange> frameRange;  // --frames A-B: render's frames
+    std::optional<double> fps;             // --fps, with --frames A-B (30 when absent)
+    bool skipExisting = false;             // --skip-existing, with --frames A-B
+    int threads = 1;                       // --threads 1|2: the simulator's (same bytes either way)
+    bool uber = false;                     // --uber
+    std::string mode = "shaded";           // --mode
+    std::string post = "none";             // --post none|fxaa|fxaa-edges|fxaa-direction
+    std::string backend = "osmesa";        // --backend osmesa|egl
+    std::string quality = "normal";        // --quality draft|normal|final
 };
 
 // Parses argv[first..argc). Returns false with *error set on an unknown option, a missing or
@@ -35,5 +44,7 @@ constexpr int kMaxImageSide = 16384;
 // 16384x16384 would take an hour and gigabytes, which looks like a hang.
 constexpr long kMaxImagePixels = 4096L * 4096L;
 constexpr double kMaxSeconds = 3600;
+constexpr int kMaxFrame = 10000000;  // --frames A-B: 3600 s at 2778 fps
+constexpr double kMaxFps = 1000;
 
 }  // namespace mb

@@ -16,20 +16,20 @@
 
 namespace mb {
 
-static bool loadOrReport(const std::string& path, Scene* scene) {
+bool loadOrReport(const std::string& path, Scene* scene) {
     std::vector<std::string> errors;
     if (loadScene(path, scene, &errors)) return true;
     for (const std::string& e : errors) std::cerr << e << '\n';
     return false;
 }
 
-static bool needOne(const Args& a, const char* usage) {
+bool needOne(const Args& a, const char* usage) {
     if (a.positional.size() == 1) return true;
     std::cerr << "usage: " << usage << '\n';
     return false;
 }
 
-static bool needOutput(const Args& a, const char* command, const char* what) {
+bool needOutput(const Args& a, const char* command, const char* what) {
     if (!a.output.empty()) return true;
     std::cerr << command << " needs -o " << what << '\n';
     return false;
@@ -83,13 +83,13 @@ bool offscreenBackend(const Args& a, OffscreenBackend* out) {
 }
 
 // --quality: applied to the scene once it is loaded, after the simulation has run.
-static bool qualityPreset(const Args& a, QualityPreset* out) {
+bool qualityPreset(const Args& a, QualityPreset* out) {
     if (parseQualityPreset(a.quality, out)) return true;
     std::cerr << "unknown quality " << quoteArg(a.quality) << ": expected draft, normal or final\n";
     return false;
 }
 
-static bool renderOptions(const Args& a, RenderOptions* o) {
+bool renderOptions(const Args& a, RenderOptions* o) {
     o->uber = a.uber;
     if (!parsePost(a.post, &o->post)) {
         std::cerr << "unknown post pass " << quoteArg(a.post)
@@ -122,16 +122,26 @@ static bool reported(bool ok, const std::string& error) {
 }
 
 // One thread by default: a second waits for a core wherever other work holds them.
-static PhysicsSettings physicsSettings(const Args& a) {
+PhysicsSettings physicsSettings(const Args& a) {
     PhysicsSettings settings;
     settings.threads = a.threads;
     return settings;
 }
 
+// --frames N is bench's; render's frames are a range, and --fps and --skip-existing go with it.
+static bool frameOptionsFit(const Args& a) {
+    if (a.frameCount) std::cerr << "render --frames takes a range A-B, such as 0-299\n";
+    else if (a.fps || a.skipExisting)
+        std::cerr << "--fps and --skip-existing go with --frames A-B\n";
+    return !a.frameCount && !a.fps && !a.skipExisting;
+}
+
 int runRender(const Args& a) {
+    if (a.frameRange) return runRenderFrames(a);
     RenderOptions options;
     QualityPreset preset;
-    if (!needOne(a,
+    if (!frameOptionsFit(a) ||
+        !needOne(a,
                  "marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M] "
                  "[--post P] [--quality Q] [--backend B] [--threads N]") ||
         !needOutput(a, "render", "OUT.png") || !renderOptions(a, &options) ||
@@ -141,8 +151,9 @@ int runRender(const Args& a) {
     std::string error;
     if (!loadOrReport(a.positional[0], &scene) || !reported(checkSavePng(a.output, &error), error))
         return kExitBadInput;
-    simulate(scene, a.seconds, physicsSettings(a));
-    scene.camera = cameraAt(scene.keyframes, scene.camera, a.seconds);
+    const double seconds = a.seconds.value_or(0);
+    simulate(scene, seconds, physicsSettings(a));
+    scene.camera = cameraAt(scene.keyframes, scene.camera, seconds);
     applyQualityPreset(preset, &scene.render, &options);
     Image img;
     OffscreenRun run;
@@ -163,7 +174,7 @@ int runSimulate(const Args& a) {
         (!a.output.empty() && !reported(checkSaveScene(a.output, &error), error)))
         return kExitBadInput;
     // Ctrl-C keeps its default: the process ends at once, before anything is written.
-    simulate(scene, a.seconds, physicsSettings(a),
+    simulate(scene, a.seconds.value_or(0), physicsSettings(a),
              isatty(STDERR_FILENO) ? printSimulateProgress : nullptr);
     if (a.output.empty()) {
         std::cout << formatScene(scene);
@@ -211,6 +222,10 @@ int runBench(const Args& a) {
     RenderOptions options;
     OffscreenBackend backend;
     QualityPreset preset;
+    if (a.frameRange) {
+        std::cerr << "bench --frames takes a count N, not a range\n";
+        return kExitUsage;
+    }
     if (!needOne(a,
                  "marchbox bench SCENE [--uber] [--size WxH] [--frames N] [--quality Q] [--backend "
                  "osmesa|egl]") ||
@@ -232,7 +247,7 @@ int runBench(const Args& a) {
     std::printf("device: %s, %s\n", context.platform().c_str(),
                 reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
     std::vector<double> ms;
-    for (int i = 0; i <= a.frames; ++i) {  // frame 0 warms up: shader JIT, caches
+    for (int i = 0; i <= a.frameCount.value_or(20); ++i) {  // frame 0 warms up: shader JIT, caches
         auto t0 = std::chrono::steady_clock::now();
         renderer.draw(a.width, a.height);
         glFinish();

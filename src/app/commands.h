@@ -4,10 +4,14 @@
 #include "args.h"
 
 #include "marchbox/gl/offscreen_context.h"
+#include "marchbox/gl/quality_preset.h"
+#include "marchbox/gl/renderer.h"
+#include "marchbox/physics/physics.h"
 
 namespace mb {
 
 int runRender(const Args& a);
+int runRenderFrames(const Args& a);  // render --frames A-B (render_frames.cpp)
 int runSimulate(const Args& a);
 int runCheck(const Args& a);
 int runShader(const Args& a);
@@ -15,7 +19,14 @@ int runBench(const Args& a);
 int runReport(const Args& a);
 int runEditor(const Args& a);
 
+// What the commands share. Each reports its own error, one line on standard error.
+bool loadOrReport(const std::string& path, Scene* scene);
+bool needOne(const Args& a, const char* usage);  // exactly one SCENE, or the usage line
+bool needOutput(const Args& a, const char* command, const char* what);  // -o
 bool offscreenBackend(const Args& a, OffscreenBackend* out);  // --backend, or a usage error
+bool renderOptions(const Args& a, RenderOptions* o);          // --mode, --post, --uber
+bool qualityPreset(const Args& a, QualityPreset* out);        // --quality
+PhysicsSettings physicsSettings(const Args& a);               // --threads
 int glFailure(const char* doing, const std::string& error);   // one line on stderr, exit 3
 
 }  // namespace mb

@@ -212,13 +212,9 @@ Image TiledRender::finish() {
     return readFramebuffer(width_, height_);
 }
 
-bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width, int height,
-                     Image* out, std::string* error, const OffscreenRun& run) {
-    OffscreenContext context;
-    if (!context.create(1, 1, error, run.backend))
-        return false;  // pixels go to the renderer's targets
-    Renderer renderer;
-    if (!renderer.init(error) || !renderer.setScene(scene, options, error)) return false;
+bool renderFrame(Renderer& renderer, const Scene& scene, const RenderOptions& options, int width,
+                 int height, Image* out, std::string* error, const OffscreenRun& run) {
+    if (!renderer.setScene(scene, options, error)) return false;
     TiledRender tiles(renderer, width, height);
     if (!tiles.start(error)) return false;
     while (!tiles.done()) {
@@ -235,6 +231,16 @@ bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width
     }
     *out = std::move(img);
     return true;
+}
+
+bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width, int height,
+                     Image* out, std::string* error, const OffscreenRun& run) {
+    OffscreenContext context;
+    if (!context.create(1, 1, error, run.backend))
+        return false;  // pixels go to the renderer's targets
+    Renderer renderer;
+    return renderer.init(error) &&
+           renderFrame(renderer, scene, options, width, height, out, error, run);
 }
 
 }  // namespace mb

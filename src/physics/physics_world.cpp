@@ -550,10 +550,14 @@ void PhysicsWorld::updateStats() {
     for (int i = 0; i < rigidCount(); ++i) stats_.awake += impl_->rigid.body(i).awake ? 1 : 0;
 }
 
+int stepsFor(double seconds, const PhysicsSettings& settings) {
+    return int(std::llround(seconds / settings.dt));
+}
+
 int simulate(Scene& scene, double seconds, const PhysicsSettings& settings,
              SimulateProgress progress) {
     PhysicsWorld world(scene, settings);
-    const int steps = int(std::llround(seconds / settings.dt));
+    const int steps = stepsFor(seconds, settings);
     for (long long i = 1; i <= steps; ++i) {
         world.step();
         if (progress && i * 100 / steps != (i - 1) * 100 / steps) progress(double(i) / steps);

@@ -8,13 +8,11 @@ and leaves the output file as it was, with no temporary file beside it.
 Usage: simulate_test.py MARCHBOX SOURCE_DIR
 """
 import os
-import pty
-import select
-import signal
 import subprocess
 import sys
 import tempfile
-import time
+
+from terminal import read_until, spawn_on_terminal, wait_for_exit
 
 # Generous bounds, not timings: they only turn a hang into a failure.
 RUN_LIMIT_S = 120    # a run that should finish
@@ -27,47 +25,6 @@ def check(ok, what):
     if not ok:
         failures.append(what)
         print("FAIL:", what, file=sys.stderr)
-
-
-def spawn_on_terminal(argv):
-    """Starts argv with a new pseudo-terminal as its controlling terminal; (pid, master fd)."""
-    pid, master = pty.fork()
-    if pid == 0:
-        try:
-            os.execv(argv[0], argv)
-        finally:
-            os._exit(127)
-    return pid, master
-
-
-def read_until(master, want, limit_s):
-    """Reads the terminal until `want` shows or the output ends; returns what was read."""
-    seen, deadline = b"", time.monotonic() + limit_s
-    while want not in seen and time.monotonic() < deadline:
-        ready, _, _ = select.select([master], [], [], 0.1)
-        if not ready:
-            continue
-        try:
-            chunk = os.read(master, 4096)
-        except OSError:  # EIO: the other end closed
-            break
-        if not chunk:
-            break
-        seen += chunk
-    return seen
-
-
-def wait_for_exit(pid, limit_s):
-    """The process's wait status, or None if it is still running after limit_s (then killed)."""
-    deadline = time.monotonic() + limit_s
-    while time.monotonic() < deadline:
-        done, status = os.waitpid(pid, os.WNOHANG)
-        if done:
-            return status
-        time.sleep(0.02)
-    os.kill(pid, signal.SIGKILL)
-    os.waitpid(pid, 0)
-    return None
 
 
 def progress_on_a_terminal(mb, scene, tmp):

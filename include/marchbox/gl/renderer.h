@@ -206,6 +206,12 @@ struct OffscreenRun {
     void* user = nullptr;
 };
 
+// Renders one width × height frame of `scene` with `renderer` (its context current) in tiles and
+// reads it back. A renderer that drew other scenes before draws the same bytes as a new one, so
+// a sequence of frames keeps one renderer and its compiled program.
+bool renderFrame(Renderer& renderer, const Scene& scene, const RenderOptions& options, int width,
+                 int height, Image* out, std::string* error, const OffscreenRun& run = {});
+
 // Creates an off-screen context, renders one width × height frame in tiles and reads it back.
 bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width, int height,
                      Image* out, std::string* error, const OffscreenRun& run = {});

@@ -153,7 +153,12 @@ private:
 // Called each time another hundredth of a run's steps is done, with the fraction done.
 using SimulateProgress = void (*)(double done);
 
-// Exactly round(seconds / dt) steps, then writes the state back. Deterministic: the same scene
+// The fixed steps that make `seconds`: round(seconds / dt). Every way of playing a scene to a
+// time (simulate, render --seconds, a frame of render --frames) counts its steps here, so they
+// reach the same state.
+int stepsFor(double seconds, const PhysicsSettings& settings);
+
+// Exactly stepsFor(seconds) steps, then writes the state back. Deterministic: the same scene
 // and settings give the same bytes. Returns the number of steps taken.
 int simulate(Scene& scene, double seconds, const PhysicsSettings& settings = {},
              SimulateProgress progress = nullptr);
