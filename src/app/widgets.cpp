@@ -65,6 +65,15 @@ bool settleTyping(ImGuiID id, const std::string& path, bool edited, float* value
     return true;
 }
 
+// A field typed into goes on from what was typed so far: Tab and Shift+Tab move the keyboard to
+// the next part of a vector, and the parts typed before it must not fall back to the stored
+// value while the field waits for Return.
+void resumeTyping(ImGuiID id, float* value, int n) {
+    auto it = typedFields().find(id);
+    if (it != typedFields().end() && it->second.edited)
+        std::copy(it->second.value.begin(), it->second.value.begin() + n, value);
+}
+
 void refuse(FieldEdit& e, const std::string& why) {
     if (e.error) *e.error = why;
     emitEvent("refuse " + why);
@@ -77,6 +86,7 @@ void take(const char* label, FieldEdit& e) {
 }
 
 bool drawFloats(const char* label, Field f, float* v, int n) {
+    resumeTyping(ImGui::GetID(label), v, n);
     const FieldSpec& s = fieldSpec(f);
     if (s.slider)
         return ImGui::SliderScalarN(label, ImGuiDataType_Float, v, n, &s.dragMin, &s.dragMax,
@@ -89,9 +99,10 @@ bool drawFloats(const char* label, Field f, float* v, int n) {
 
 // The common end of every numeric field: mark, typing, check, store, tooltip.
 void finishFloats(const char* label, Field f, bool edited, float* value, float* stored, int n,
-                  FieldEdit& e) {
+                  FieldEdit& e, float button = 0.0f) {
     const std::string path = itemPath(label);
     markItem(path);
+    markParts(path, n, button);
     bool ready = settleTyping(ImGui::GetID(label), path, edited, value, n);
     if (ready && !std::equal(value, value + n, stored)) {
         std::string why;
@@ -134,9 +145,11 @@ void fieldVec3(const char* label, Field f, glm::vec3* v, FieldEdit& e) {
 
 void fieldColor(const char* label, Field f, glm::vec3* v, FieldEdit& e) {
     glm::vec3 value = *v;
+    resumeTyping(ImGui::GetID(label), &value.x, 3);
     bool edited =
         ImGui::ColorEdit3(label, &value.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
-    finishFloats(label, f, edited, &value.x, &v->x, 3, e);
+    const float swatch = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x;
+    finishFloats(label, f, edited, &value.x, &v->x, 3, e, swatch);
 }
 
 void fieldFlag(const char* label, bool* v, FieldEdit& e, const char* tooltip) {
@@ -199,12 +212,12 @@ static void markChange(const std::string& name, const std::string& line) {
 
 static std::string whole(float v) { return std::to_string(int(v)); }
 
-void markItem(const std::string& name) {
-    // A window's first frame lays it out before it knows its size (auto-resized popups move
-    // on the next frame): a mark from then would send a click to the wrong place.
-    if (!eventsOn() || ImGui::IsWindowAppearing()) return;
-    ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-    ImVec2 centre((lo.x + hi.x) * 0.5f, (lo.y + hi.y) * 0.5f);
+// A window's first frame lays it out before it knows its size (auto-resized popups move on the
+// next frame): a mark from then would send a click to the wrong place.
+static bool marking() { return eventsOn() && !ImGui::IsWindowAppearing(); }
+
+// The mark of `name` at `centre`, in window pixels.
+static void markAt(const std::string& name, ImVec2 centre) {
     // Written when the widget moves or shows again after a gap (a popup reopened), so a test
     // can wait for a mark that belongs to what is on screen now. A clipped widget (scrolled
     // away, or a row the window has yet to grow to) is marked hidden: a click there would
@@ -215,8 +228,25 @@ void markItem(const std::string& name) {
                      : "hidden " + name);
 }
 
+void markItem(const std::string& name) {
+    if (!marking()) return;
+    ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    markAt(name, ImVec2((lo.x + hi.x) * 0.5f, (lo.y + hi.y) * 0.5f));
+}
+
+void markParts(const std::string& name, int n, float button) {
+    if (n < 2 || !marking()) return;
+    // As ImGui splits the field's width (PushMultiItemsWidths): n parts, ItemInnerSpacing apart.
+    const float spacing = ImGui::GetStyle().ItemInnerSpacing.x;
+    const float part = (ImGui::CalcItemWidth() - button + spacing) / float(n);
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    for (int i = 0; i < n; ++i)
+        markAt(name + "[" + std::to_string(i) + "]",
+               ImVec2(lo.x + (float(i) + 0.5f) * part - spacing * 0.5f, (lo.y + hi.y) * 0.5f));
+}
+
 void markPanel() {
-    if (!eventsOn() || ImGui::IsWindowAppearing()) return;
+    if (!marking()) return;
     const std::string name = ImGui::GetCurrentWindowRead()->Name;
     ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
     markChange("panel " + name, "panel " + name + " " + whole(pos.x) + " " + whole(pos.y) + " " +

@@ -43,6 +43,10 @@ void fieldErrorLine(const std::string& error);
 // when the item shows up or moves.
 void markItem(const std::string& name);
 
+// The same for each part of the last item, an n-part field (pos, colour): "NAME[0]" to
+// "NAME[n-1]"; `button` is the width right of the parts that is no part (a colour's swatch).
+void markParts(const std::string& name, int n, float button);
+
 // With the event log on, writes "panel NAME X Y W H" (the window being drawn, in window pixels)
 // when it shows up, moves or changes size.
 void markPanel();

@@ -150,16 +150,32 @@ class Editor:
     def type(self, text):
         xdotool('type', '--delay', 40, text)
 
-    def type_into(self, widget, text, fresh=True):
-        """Ctrl+click a field, type text into it and press Return."""
-        self.move(*self.widget(widget, fresh))
+    def ctrl_click(self, x, y):
+        self.move(x, y)
         xdotool('keydown', 'ctrl')
         xdotool('mousedown', 1)
         time.sleep(HOLD)
         xdotool('mouseup', 1)
         xdotool('keyup', 'ctrl')
+
+    def type_into(self, widget, text, fresh=True):
+        """Ctrl+click a field, type text into it and press Return."""
+        self.ctrl_click(*self.widget(widget, fresh))
         self.wait('typing ' + widget)
         self.type(text)
+        self.key('Return')
+
+    def type_parts(self, field, texts, back=False):
+        """Ctrl+clicks the first part of a vector field (back: the last), types one text into
+        each part with Tab (back: Shift+Tab) between them, and presses Return."""
+        panel_name = field.split('/')[0]
+        part = '%s[%d]' % (field, len(texts) - 1 if back else 0)
+        self.ctrl_click(*scroll_into(self, part, panel(self, panel_name)))
+        self.wait('typing ' + field)
+        for i, text in enumerate(texts):
+            if i:  # a tap: Tab held as long as key() holds it would repeat past the next part
+                xdotool('key', 'shift+Tab' if back else 'Tab')
+            self.type(text)
         self.key('Return')
 
     def save(self):
@@ -765,8 +781,37 @@ def case_field_refusal(app, scene):
     check(scene_values(scene, 'object', 'radius')[0] == [1.25], 'the typed radius was not taken')
     edits = [l for l in app.events() if l.startswith('edit ')]
     check(edits == ['edit Edit object'], 'typing made more than one edit: %s' % edits)
+    check_typed_parts(app, scene)
     app.key('Escape')
     check(app.finish() == 0, 'exit status not 0')
+
+
+def check_typed_parts(app, scene):
+    """Tab and Shift+Tab between the parts of a vector field take the part typed and move on:
+    every part typed is kept, in pos, rot, size and a colour."""
+    app.type_parts('Objects/pos', ['0.2', '0.9', '0.1'])
+    app.wait('edit Edit object')
+    app.click(*project(scene, scene_values(scene, 'object', 'pos')[2]))
+    check(app.wait('select ') == 'select object 2', 'the box was not selected')
+    app.type_parts('Objects/size', ['0.3', '0.4', '0.6'])
+    app.wait('edit Edit object')
+    app.type_parts('Objects/rot', ['30', '20', '10'], back=True)  # static: saved as typed
+    app.wait('edit Edit object')
+    app.menu('Edit', 'Objects')  # closed: Materials has the column
+    app.menu('Edit', 'Materials')
+    app.click_widget('Materials/0 red')
+    app.wait('select material 0')
+    app.type_parts('Materials/colour', ['0.2', '0.4', '0.6'])
+    app.wait('edit Edit material')
+    app.save()
+    typed = {'pos': scene_values(scene, 'object', 'pos')[0],
+             'rot': scene_values(scene, 'object', 'rot')[-1],  # the box's: spheres save orient
+             'size': scene_values(scene, 'object', 'size')[2],
+             'colour': [scene_values(scene, 'material', k)[0][0] for k in 'rgb']}
+    want = {'pos': [0.2, 0.9, 0.1], 'rot': [10, 20, 30], 'size': [0.3, 0.4, 0.6],
+            'colour': [0.2, 0.4, 0.6]}
+    for name, value in want.items():
+        check(typed[name] == value, '%s typed part by part as %s is %s' % (name, value, typed[name]))
 
 
 def case_escape(app, scene):
