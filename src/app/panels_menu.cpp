@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <imgui.h>
-#include <imgui_internal.h>  // the popup stack: Esc closes the topmost popup before it quits
+#include <imgui_internal.h>  // the popup stack: Esc closes the topmost popup
 
 namespace mb {
 
@@ -73,7 +73,7 @@ static void fileMenu(UiContext& c) {
     if (menuItem("File", "Save As...")) c.ui.wantSaveAs = true;
     if (menuItem("File", "Render...", nullptr, c.ui.showRender)) c.ui.showRender = !c.ui.showRender;
     ImGui::Separator();
-    if (menuItem("File", "Exit", "Esc")) request(c, Leave::Exit);
+    if (menuItem("File", "Exit", "Ctrl+Q")) request(c, Leave::Exit);
 }
 
 static void editMenu(UiContext& c) {
@@ -245,6 +245,9 @@ static void ctrlShortcut(UiContext& c, const KeyPress& k) {
         case GLFW_KEY_Y:
             c.editor.redo();
             break;
+        case GLFW_KEY_Q:
+            request(c, Leave::Exit);
+            break;
         default:
             break;
     }
@@ -271,29 +274,31 @@ static void plainShortcut(UiContext& c, const KeyPress& k) {
         case GLFW_KEY_P:
             togglePost(c.ui.render, PostMode::Fxaa);
             break;
-        case GLFW_KEY_ESCAPE:
-            request(c, Leave::Exit);
-            break;
         default:
             break;
     }
 }
 
-// Esc closes what is open before it quits: a dialog as its Cancel would (drawDialogs reads
-// ui.escape), a menu or the object popup as a click elsewhere would. While a field in a menu
-// or popup is typed into, Esc is the field's: ImGui puts its old text back. True when Esc was
-// used here.
-static bool escapePopup(UiContext& c) {
+// Esc closes what is open, and never quits (a slip of the finger would lose the window): a
+// dialog as its Cancel would (drawDialogs reads ui.escape), a menu or the object popup as a
+// click elsewhere would, else the Render or About window. While a field in a menu or popup is
+// typed into, Esc is the field's: ImGui puts its old text back.
+static void escape(UiContext& c) {
     const ImGuiContext& g = *ImGui::GetCurrentContext();
-    if (g.OpenPopupStack.empty()) return false;
-    const ImGuiWindow* top = g.OpenPopupStack.back().Window;
+    const ImGuiWindow* top = g.OpenPopupStack.empty() ? nullptr : g.OpenPopupStack.back().Window;
     if (top && (top->Flags & ImGuiWindowFlags_Modal)) {
         c.ui.escape = true;
-    } else if (!ImGui::GetIO().WantTextInput) {
+    } else if (ImGui::GetIO().WantTextInput) {
+        return;
+    } else if (!g.OpenPopupStack.empty()) {
         ImGui::ClosePopupToLevel(g.OpenPopupStack.Size - 1, true);
         emitEvent("escape closes a popup");
+    } else if (bool* open = c.ui.showRender  ? &c.ui.showRender
+                            : c.ui.showAbout ? &c.ui.showAbout
+                                             : nullptr) {
+        *open = false;
+        emitEvent("escape closes a window");
     }
-    return true;
 }
 
 // Keys reach the editor only when ImGui is not typing into a field or showing a prompt.
@@ -301,7 +306,7 @@ void handleShortcuts(UiContext& c, const std::vector<KeyPress>& keys) {
     const bool imguiHasKeys = ImGui::GetIO().WantCaptureKeyboard;
     for (const KeyPress& k : keys) {
         if (k.key == GLFW_KEY_F12) c.ui.wantScreenshot = true;  // even over a dialog
-        else if (k.key == GLFW_KEY_ESCAPE && escapePopup(c)) continue;
+        else if (k.key == GLFW_KEY_ESCAPE) escape(c);
         else if (imguiHasKeys) continue;
         else if (k.mods & GLFW_MOD_CONTROL) ctrlShortcut(c, k);
         else plainShortcut(c, k);

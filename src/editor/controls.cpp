@@ -21,8 +21,8 @@ static const Control kControls[] = {
     {"F", "fog on or off, in a scene with fog (render fog above 0)"},
     {"P", "FXAA on or off"},
     {"F12", "screenshot (PNG)"},
-    {"Esc",
-     "close the open menu, popup or dialog; with none, quit, asking first about unsaved changes"},
+    {"Esc", "close the open menu, popup or dialog; it never quits"},
+    {"Ctrl+Q", "quit, asking first about unsaved changes, as the window's close button does"},
     {"Drop a file", "open the scene file dropped on the window"},
 };
 

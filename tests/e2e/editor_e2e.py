@@ -18,7 +18,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from png import read_png  # noqa: E402
-from xscreen import Screen  # noqa: E402
+from xscreen import Screen, close_window  # noqa: E402
 
 WINDOW = (640, 400)  # small: a software renderer draws it a few times a second
 HOLD = 0.4           # s a key or button stays down: longer than a slow frame
@@ -143,7 +143,7 @@ class Editor:
     def key(self, combo):
         xdotool('keydown', combo)
         time.sleep(HOLD)
-        # Esc may already have closed the window: then there is nothing left to release.
+        # Ctrl+Q may already have closed the window: then there is nothing left to release.
         subprocess.run(['xdotool', 'keyup', combo], capture_output=True)
         time.sleep(0.05)
 
@@ -274,7 +274,7 @@ def case_startup(app, scene):
           % (differ, len(region)))
     check(text_in(shown, rx + 60, ry + 25, w=50, h=15), 'the tooltip has no text')
     check_missing_list(app)
-    app.key('Escape')
+    app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -331,7 +331,7 @@ def case_save_as(app, scene):
           'saved file does not load: %s' % result.stderr)
     check(scene_values(target, 'object', 'pos') == scene_values(scene, 'object', 'pos'),
           'saved file has other objects')
-    app.key('Escape')  # saved: no question
+    app.key('ctrl+q')  # saved: no question
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -383,7 +383,7 @@ def case_select(app, scene):
     app.key('ctrl+z')
     app.wait('undo Delete object')
     check(is_red(app.screenshot().pixel(x, y)), 'undo did not bring the sphere back')
-    app.key('Escape')
+    app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -418,12 +418,12 @@ def case_drag(app, scene):
     app.key('ctrl+s')
     app.wait('save ')
     check(scene_values(scene, 'object', 'pos') == start, 'one undo did not undo the whole drag')
-    app.key('Escape')
+    app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 
 
 def case_simulate(app, scene):
-    """J and Space move the spheres; Ctrl+Z undoes the run; Esc asks about unsaved changes."""
+    """J and Space move the spheres; Ctrl+Z undoes the run; Ctrl+Q asks about unsaved changes."""
     start = scene_values(scene, 'object', 'pos')
     app.key('j')
     app.wait('edit Random velocities')
@@ -445,12 +445,12 @@ def case_simulate(app, scene):
     check(scene_values(scene, 'object', 'vel')[0] != [0, 0, 0], 'J gave no velocity')
     app.key('ctrl+z')
     app.wait('undo Random velocities')
-    app.key('Escape')
+    app.key('ctrl+q')
     app.wait('ask exit')
     app.click_widget('Unsaved changes/Cancel')
     app.wait('popup Unsaved changes closed')
     check(app.proc.poll() is None, 'Cancel did not keep the editor open')
-    app.key('Escape')
+    app.key('ctrl+q')
     app.wait('ask exit')
     app.click_widget("Unsaved changes/Don't save")
     check(app.finish() == 0, 'exit status not 0')
@@ -488,7 +488,7 @@ def case_body(app, scene):
     check(app.wait('undo ') == 'undo Simulation run', 'undo did not undo the run')
     app.save()
     check(scene_values(scene, 'object', 'pos')[2] == start[2], 'undo did not put the box back')
-    app.key('Escape')
+    app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -514,7 +514,7 @@ def case_open_error(app, scene):
     app.wait('popup Cannot open closed')
     x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
     check(is_red(app.screenshot().pixel(x, y)), 'the open scene changed')
-    app.key('Escape')
+    app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0 (was the scene marked changed?)')
 
 
@@ -537,7 +537,7 @@ def case_shader_reload(app, scene):
         f.write(good.replace(flat.split('\n')[0], flat, 1))
     app.wait('shaders reloaded', timeout=60)
     check(app.screenshot().pixel(x, y) == (0, 0, 255), 'the reloaded shader is not in use')
-    app.key('Escape')
+    app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -552,7 +552,7 @@ def case_new_save_as(app, scene):
     check(app.wait('save ') == 'save ' + target, 'not saved beside %s' % scene)
     result = subprocess.run([MARCHBOX, 'check', target], capture_output=True, text=True)
     check(result.returncode == 0, 'the new scene does not load: %s' % result.stderr)
-    app.key('Escape')
+    app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -579,7 +579,7 @@ def case_recent(app, scene):
     check(app.wait('open ') == 'open ' + scene, 'the recent file did not open')
     time.sleep(0.5)
     check(recent_file(app) == [scene, other], 'recent.txt holds %s' % recent_file(app))
-    app.key('Escape')
+    app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -599,7 +599,7 @@ def case_save_replace(app, scene):
     check(app.wait('save ') == 'save ' + target, 'the second Save did not replace the file')
     check(scene_values(target, 'object', 'pos') == scene_values(scene, 'object', 'pos'),
           'the replaced file does not hold the scene')
-    app.key('Escape')
+    app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -620,7 +620,7 @@ def case_save_as_folder(app, scene):
     check(app.wait('save ') == 'save ' + target, 'the path typed after the refusal was not saved to')
     check(scene_values(target, 'object', 'pos') == scene_values(scene, 'object', 'pos'),
           'the saved file does not hold the scene')
-    app.key('Escape')
+    app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -714,7 +714,7 @@ def case_camera(app, scene):
     check(ratio < 0.8, 'P (FXAA) kept %.2f of the gradient energy (at most 0.8)' % ratio)
     check(len(quiet) > 4000, 'only %d pixels lie away from edges' % len(quiet))
     check(worst <= 2, 'P (FXAA) changed a pixel away from every edge by %d levels' % worst)
-    app.key('Escape')  # moving the view is not an edit: nothing to ask about
+    app.key('ctrl+q')  # moving the view is not an edit: nothing to ask about
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -749,7 +749,7 @@ def case_render(app, scene):
     x, y = select_first(app, scene)
     lit = app.screenshot().pixel(x, y)
     check(lit[0] > 120, 'the view lost the scene after File > Render...: %s' % (lit,))
-    app.key('Escape')
+    app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -782,7 +782,7 @@ def case_field_refusal(app, scene):
     edits = [l for l in app.events() if l.startswith('edit ')]
     check(edits == ['edit Edit object'], 'typing made more than one edit: %s' % edits)
     check_typed_parts(app, scene)
-    app.key('Escape')
+    app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -815,7 +815,9 @@ def check_typed_parts(app, scene):
 
 
 def case_escape(app, scene):
-    """Esc closes the object popup, a menu and a dialog, each without quitting; then it quits."""
+    """Esc closes the object popup, a menu, a dialog and the Render window, and with nothing
+    open it does nothing: it never quits. The window's close button asks about unsaved changes;
+    Ctrl+Q quits."""
     x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
     app.click(x, y, button=3)
     app.wait('popup object popup open')
@@ -829,10 +831,23 @@ def case_escape(app, scene):
     app.wait('popup Open scene open')
     app.key('Escape')
     app.wait('popup Open scene closed')
-    time.sleep(1.0)
-    check(app.proc.poll() is None, 'Esc over a popup quit the editor')
-    check('quit' not in app.events(), 'Esc over a popup asked to quit')
+    app.menu('File', 'Render...')
+    app.wait('panel Render ')
     app.key('Escape')
+    app.wait('escape closes a window')
+    app.key('Escape')  # nothing open
+    app.key('j')  # unsaved: a quit would ask
+    app.wait('edit Random velocities')
+    time.sleep(1.0)
+    check(app.proc.poll() is None, 'Esc quit the editor')
+    check('ask exit' not in app.events() and 'quit' not in app.events(), 'Esc asked to quit')
+    close_window(app.wid)  # the close button, as a window manager sends it
+    app.wait('ask exit')
+    app.click_widget('Unsaved changes/Cancel')
+    app.wait('popup Unsaved changes closed')
+    app.key('ctrl+q')
+    app.wait('ask exit')
+    app.click_widget("Unsaved changes/Don't save")
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -896,7 +911,7 @@ def case_live(app, scene):
           (shown, changed_after, full_ms))
     if full_ms < 1000:
         raise Skip('a full-quality frame takes %d ms here: the bounds hold without the live view' % full_ms)
-    app.key('Escape')  # the camera moved, nothing was edited: no question
+    app.key('ctrl+q')  # the camera moved, nothing was edited: no question
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -960,7 +975,7 @@ def case_slow_input(app, scene):
     turned = yaw(target) - start['yaw']
     check(abs(turned + 0.4) < 1e-4, 'the drag turned the camera by %.5f rad, not -0.4' % turned)
     check(scene_values(target, 'camera', 'target')[0] != start['target'], 'W did not fly the camera')
-    app.key('Escape')  # all saved: no question
+    app.key('ctrl+q')  # all saved: no question
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -1019,7 +1034,7 @@ def case_panels(app, scene):
     for i, a in enumerate(names):
         for b in names[i + 1:]:
             check(not overlap(rects[a], rects[b]), '%s %s overlaps %s %s' % (a, rects[a], b, rects[b]))
-    app.key('Escape')
+    app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -1066,7 +1081,7 @@ def case_messages(app, scene):
     img = app.screenshot()
     for name in ('Objects', 'Lights'):
         check(red_text(img, panel(app, name)) == 0, 'the Save As failure shows in %s' % name)
-    app.key('Escape')
+    app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 
 
@@ -1100,7 +1115,7 @@ def case_fog(app, scene):
     app.key('f')
     settle_after(app, done)
     check(changed(fogged, app.screenshot()) == 0, 'F did not show the fog again')
-    app.key('Escape')
+    app.key('ctrl+q')
     app.wait('ask exit')  # the fog density is an edit
     app.click_widget("Unsaved changes/Don't save")
     check(app.finish() == 0, 'exit status not 0')

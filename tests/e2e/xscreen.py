@@ -66,6 +66,31 @@ class Screen:
         return Region(x, y, width, height, rows)
 
 
+class _XClientMessageEvent(ctypes.Structure):  # Xlib.h's, padded to the XEvent union's size
+    _fields_ = [('type', ctypes.c_int), ('serial', ctypes.c_ulong), ('send_event', ctypes.c_int),
+                ('display', ctypes.c_void_p), ('window', ctypes.c_ulong),
+                ('message_type', ctypes.c_ulong), ('format', ctypes.c_int),
+                ('l', ctypes.c_long * 5), ('pad', ctypes.c_long * 12)]
+
+
+def close_window(wid):
+    """Asks window `wid` to close as a window manager's close button does: the WM_DELETE_WINDOW
+    message of the WM_PROTOCOLS it takes part in (Xvfb runs no window manager)."""
+    screen = Screen()
+    x11, display = screen.x11, screen.display
+    x11.XInternAtom.restype = ctypes.c_ulong
+    x11.XInternAtom.argtypes = [ctypes.c_void_p, ctypes.c_char_p, ctypes.c_int]
+    x11.XSendEvent.argtypes = [ctypes.c_void_p, ctypes.c_ulong, ctypes.c_int, ctypes.c_long,
+                               ctypes.c_void_p]
+    x11.XFlush.argtypes = [ctypes.c_void_p]
+    event = _XClientMessageEvent(type=33, window=int(wid), format=32,  # 33: ClientMessage
+                                 message_type=x11.XInternAtom(display, b'WM_PROTOCOLS', 0))
+    event.l[0] = x11.XInternAtom(display, b'WM_DELETE_WINDOW', 0)
+    if not x11.XSendEvent(display, int(wid), 0, 0, ctypes.byref(event)):
+        raise RuntimeError('XSendEvent failed')
+    x11.XFlush(display)
+
+
 def save_png(region, path):
     """Writes a grabbed region as an 8-bit RGB PNG (to look at when a timing case fails)."""
     import struct
