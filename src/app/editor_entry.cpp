@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "editor_window.h"
 
+#include "marchbox/editor/files.h"
 #include "marchbox/gl/renderer.h"
 #include "marchbox/physics/physics.h"
 #include "marchbox/scene/scene_io.h"
@@ -25,23 +26,19 @@ static bool haveDisplay() {
     return (x && *x) || (wl && *wl);
 }
 
-static int renderPreview(const std::string& scenePath) {
-    std::vector<std::string> errors;
-    Scene scene;
-    if (!loadScene(scenePath, &scene, &errors)) {
-        for (const std::string& e : errors) std::cerr << e << '\n';
-        return kExitBadInput;
-    }
-    // Beside the executable (build/), so a preview never litters the scene's folder.
-    std::filesystem::path dir = std::filesystem::read_symlink("/proc/self/exe").parent_path();
-    std::string out =
-        (dir / (std::filesystem::path(scenePath).stem().string() + "-preview.png")).string();
+// No display: the scene the editor would have opened, as a PNG in the working folder (where a
+// person looks first; beside the executable it was lost in build/).
+static int renderPreview(const Scene& scene, const std::string& name) {
+    std::error_code ec;
+    std::filesystem::path out = std::filesystem::absolute(name + "-preview.png", ec);
+    if (ec) out = name + "-preview.png";
     std::string error;
-    std::cout << "no display: rendering " << scenePath << " to " << out << " instead\n";
+    std::cout << "no display: the editor needs one; rendering the scene to " << out.string()
+              << " instead\n";
     Image img;
     if (!renderOffscreen(scene, RenderOptions{}, 640, 360, &img, &error))
         return glFailure("render", error);
-    if (!savePng(out, img, &error)) {
+    if (!savePng(out.string(), img, &error)) {
         std::cerr << error << '\n';
         return kExitBadInput;
     }
@@ -54,10 +51,18 @@ int runEditor(const Args& a) {
                   << "' (see marchbox --help)\n";
         return kExitUsage;
     }
-    std::string path = a.positional.empty() ? defaultScenePath() : a.positional[0];
-    if (!haveDisplay()) return renderPreview(path);
-    int status = runEditorWindow(path);
-    return status == kNoWindow ? renderPreview(path) : status;
+    const std::string path = a.positional.empty() ? "" : a.positional[0];
+    Scene scene;
+    std::string file;
+    std::vector<std::string> errors;
+    if (!startingScene(path, defaultScenePath(), &scene, &file, &errors)) {
+        for (const std::string& e : errors) std::cerr << e << '\n';
+        return kExitBadInput;
+    }
+    const std::string name = std::filesystem::path(path.empty() ? defaultScenePath() : path).stem();
+    if (!haveDisplay()) return renderPreview(scene, name);
+    int status = runEditorWindow(scene, file);
+    return status == kNoWindow ? renderPreview(scene, name) : status;
 }
 
 }  // namespace mb

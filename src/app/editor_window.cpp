@@ -44,7 +44,7 @@ double timed(Draw draw) {
 class App {
 public:
     ~App();
-    bool load(const std::string& path, std::vector<std::string>* errors);
+    void load(const Scene& scene, const std::string& file);
     bool start(std::string* error);
     void run();
 
@@ -80,9 +80,9 @@ App::~App() {
 //-----------------------------------------------------------------------------
 // Initialization
 //-----------------------------------------------------------------------------
-bool App::load(const std::string& path, std::vector<std::string>* errors) {
+void App::load(const Scene& scene, const std::string& file) {
     ui_.scenesDir = std::string(MARCHBOX_SOURCE_DIR) + "/scenes";
-    return editor_.request(Leave::Open, path, errors);
+    editor_.start(scene, file);
 }
 
 bool App::start(std::string* error) {
@@ -218,14 +218,10 @@ std::string App::title() const {
 //-----------------------------------------------------------------------------
 // De-Initialization happens in ~App, in reverse order of the members.
 //-----------------------------------------------------------------------------
-int runEditorWindow(const std::string& scenePath) {
+int runEditorWindow(const Scene& scene, const std::string& file) {
     if (std::string(envOr("MARCHBOX_EVENT_LOG", "0")) != "0") setEventStream(&std::cout);
     App app;
-    std::vector<std::string> errors;
-    if (!app.load(scenePath, &errors)) {
-        for (const std::string& e : errors) std::cerr << e << '\n';
-        return kExitBadInput;
-    }
+    app.load(scene, file);
     std::string error;
     if (!app.start(&error)) {
         std::cerr << "marchbox: cannot open the editor window: " << error << '\n';

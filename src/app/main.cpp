@@ -8,7 +8,8 @@
 #include <string_view>
 
 static const char* kUsage =
-    "usage: marchbox [SCENE]                      open the editor (default scenes/default.txt)\n"
+    "usage: marchbox [SCENE]                      open the editor (default: an untitled copy of\n"
+    "                                             scenes/default.txt; a new file: an empty scene)\n"
     "       marchbox render SCENE -o OUT.png [--size WxH] [--seconds T] [--uber] [--mode M] "
     "[--post P]\n"
     "                [--quality Q] [--threads N]\n"

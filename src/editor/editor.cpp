@@ -72,6 +72,12 @@ void Editor::replace(const Scene& scene, const std::string& path) {
     sel_.clear();
 }
 
+void Editor::start(const Scene& scene, const std::string& file) {
+    replace(scene, file);
+    lastFile_ = file;
+    emitEvent(file.empty() ? "new" : "open " + file);
+}
+
 bool Editor::save(std::string* error) {
     if (doc_.path().empty()) {
         *error = "the scene has no file yet: use Save As";

@@ -1,6 +1,9 @@
 // files.cpp — scene file listing and folder polling, with std::filesystem, never throwing.
 #include "marchbox/editor/files.h"
 
+#include "marchbox/editor/scene_edit.h"
+#include "marchbox/scene/scene_io.h"
+
 #include <algorithm>
 #include <cctype>
 #include <set>
@@ -31,6 +34,19 @@ std::string proposeSavePath(const std::string& current, const std::string& lastU
     for (int n = 2; fs::exists(path, ec) && n < 1000; ++n)
         path = wholePath(folder / ("untitled-" + std::to_string(n) + ".txt"));
     return path.string();
+}
+
+bool startingScene(const std::string& scenePath, const std::string& defaultScene, Scene* scene,
+                   std::string* file, std::vector<std::string>* errors) {
+    *file = scenePath;
+    if (scenePath.empty()) return loadScene(defaultScene, scene, errors);
+    std::error_code ec;
+    const fs::path folder = fs::path(scenePath).parent_path();
+    if (!fs::exists(scenePath, ec) && !ec && fs::is_directory(folder.empty() ? "." : folder, ec)) {
+        *scene = emptyScene();
+        return true;
+    }
+    return loadScene(scenePath, scene, errors);  // says why: unreadable, a folder, no folder
 }
 
 // Keyed by canonical path, so the same file reached as "scenes/a.txt" and "/src/scenes/a.txt"

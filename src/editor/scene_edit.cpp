@@ -164,10 +164,15 @@ void clearItems(Scene& s, ItemKind k) {
     }
 }
 
-Scene newScene() {
+Scene emptyScene() {
     Scene s;
+    s.lights.push_back(defaultLight());
+    return s;
+}
+
+Scene newScene() {
+    Scene s = emptyScene();
     std::string unused;
-    addItem(s, ItemKind::Light, &unused);
     addItem(s, ItemKind::Object, &unused);  // brings its material
     s.materials[0].color = {0.9f, 0.3f, 0.2f};
     return s;

@@ -89,6 +89,14 @@ files_cases() {
   { echo "material r:1 g:1 b:1"
     yes "object type:sphere pos:0,1,0 radius:0.5" | head -n 205000; } >"$tmp/objects.txt"
   expect_says "more than 4096 objects" 1 "$mb" simulate "$tmp/objects.txt" --seconds 1
+  # No display: the editor's scene as a PNG in the working folder, saying where, on stdout.
+  mkdir "$tmp/run"
+  (cd "$tmp/run" && timeout 60 env -u DISPLAY -u WAYLAND_DISPLAY "$mb" "$scene" >"$tmp/out" 2>"$tmp/err")
+  local status=$?
+  [[ $status -eq 0 && -s $tmp/run/primitives-preview.png && ! -s $tmp/err ]] &&
+    grep -qF "to $tmp/run/primitives-preview.png" "$tmp/out" ||
+    { echo "FAIL: no preview in the working folder (exit $status): $(cat "$tmp/out" "$tmp/err")" >&2
+      failures=$((failures + 1)); }
   # Outputs that cannot be written; a device is refused, not replaced.
   expect 1 "$mb" render "$scene" -o "$tmp/missing/x.png" --size 8x8
   expect 1 "$mb" render "$scene" -o "$tmp" --size 8x8

@@ -25,6 +25,8 @@ HOLD = 0.4           # s a key or button stays down: longer than a slow frame
 # Cases that need another window or scene than the small default (paths from the source tree).
 SIZES = {'live': (1280, 720), 'panels': (960, 600)}
 SCENES = {'live': 'tests/e2e/live_scene.txt', 'slow_input': 'tests/e2e/slow_scene.txt'}
+UNTITLED = {'new_save_as'}  # cases that start the editor with no file named
+SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..')
 
 
 class Failure(Exception):
@@ -47,8 +49,10 @@ def xdotool(*args):
 
 class Editor:
     """One running marchbox and the person at its keyboard."""
+    started = []  # every one, so that main() ends those a failed case left running
 
     def __init__(self, binary, scene, workdir, **env_extra):
+        """scene: the file to open, or None for none."""
         self.workdir = workdir
         # Its own config folder: the recent files list of the person running the tests stays out.
         env = dict(os.environ, MARCHBOX_EVENT_LOG='1', MARCHBOX_SCREENSHOT_DIR=workdir,
@@ -57,7 +61,9 @@ class Editor:
         self.log_path = os.path.join(workdir, 'events.log')
         self.err_path = os.path.join(workdir, 'stderr.log')
         with open(self.log_path, 'w') as out, open(self.err_path, 'w') as err:
-            self.proc = subprocess.Popen([binary, scene], cwd=workdir, env=env, stdout=out, stderr=err)
+            self.proc = subprocess.Popen([binary] + ([scene] if scene else []), cwd=workdir, env=env,
+                                         stdout=out, stderr=err)
+        Editor.started.append(self)
         self.seen = 0  # events consumed by wait()
         self.wait('ready', timeout=90)
         self.wid = xdotool('search', '--sync', '--name', '^Marchbox').split()[0]
@@ -542,16 +548,40 @@ def case_shader_reload(app, scene):
 
 
 def case_new_save_as(app, scene):
-    """A new scene's Save As proposes a whole path beside the last file used; Return takes it."""
+    """Started with no file, the editor opens an untitled copy of scenes/default.txt: Save asks
+    where, proposing untitled.txt in the working folder, and the example stays as it was. A new
+    scene's Save As proposes a whole path beside the last file used. `marchbox NEW.txt`, for a
+    file that does not exist yet, opens an empty scene that Save writes there."""
+    default = os.path.join(SOURCE, 'scenes', 'default.txt')
+    example = open(default, 'rb').read()
+    check(app.events()[0] == 'new', 'not an untitled scene: %s' % app.events()[0])
+    app.key('ctrl+s')
+    app.wait('typing Save scene as/path')
+    app.key('Return')
+    here = os.path.realpath(app.workdir)
+    copy = os.path.join(here, 'untitled.txt')
+    check(app.wait('save ') == 'save ' + copy, 'Save did not ask where, or proposed another path')
+    check(open(default, 'rb').read() == example, 'Save wrote over scenes/default.txt')
+    check(scene_values(copy, 'object', 'pos') == scene_values(default, 'object', 'pos'),
+          'the untitled scene is not the default one')
     app.key('ctrl+n')
     app.wait('new')
     app.menu('File', 'Save As...')
     app.wait('typing Save scene as/path')
     app.key('Return')
-    target = os.path.join(os.path.realpath(app.workdir), 'untitled.txt')
-    check(app.wait('save ') == 'save ' + target, 'not saved beside %s' % scene)
+    target = os.path.join(here, 'untitled-2.txt')
+    check(app.wait('save ') == 'save ' + target, 'not saved beside %s' % copy)
     result = subprocess.run([MARCHBOX, 'check', target], capture_output=True, text=True)
     check(result.returncode == 0, 'the new scene does not load: %s' % result.stderr)
+    app.key('ctrl+q')
+    check(app.finish() == 0, 'exit status not 0')
+
+    fresh = os.path.join(app.workdir, 'fresh.txt')
+    app = Editor(MARCHBOX, fresh, app.workdir)
+    check(app.save() == fresh, 'Save did not write the file named on the command line')
+    check(scene_values(fresh, 'object', 'pos') == [] and len(scene_values(fresh, 'light', 'pos')) == 1
+          and scene_values(fresh, 'world', 'ground') == [[1]],
+          'not an empty scene with the ground and one light:\n' + open(fresh).read())
     app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 
@@ -1143,7 +1173,7 @@ def main():
     shutil.copytree(os.environ.get('MARCHBOX_SHADERS') or os.path.join(here, '..', '..', 'shaders'),
                     shaders)
     os.environ['MARCHBOX_SHADERS'] = shaders
-    app = Editor(MARCHBOX, scene, workdir)
+    app = Editor(MARCHBOX, None if name in UNTITLED else scene, workdir)
     try:
         CASES[name](app, scene)
     except Failure as e:
@@ -1153,8 +1183,9 @@ def main():
         print('SKIP %s: %s' % (name, e))
         return 77
     finally:
-        if app.proc.poll() is None:
-            app.proc.kill()
+        for one in Editor.started:
+            if one.proc.poll() is None:
+                one.proc.kill()
     print('ok %s' % name)
     return 0
 

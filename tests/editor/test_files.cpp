@@ -1,5 +1,6 @@
 // test_files.cpp — File > Open's list and the shader folder watch.
 #include "marchbox/editor/files.h"
+#include "marchbox/scene/scene_io.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -69,4 +70,35 @@ TEST(Files, SaveAsProposesAWholePathBesideTheLastFile) {
     EXPECT_TRUE(fs::path(none).is_absolute()) << none;
     EXPECT_EQ(fs::path(none).parent_path(), fs::current_path());
     EXPECT_TRUE(fs::path(proposeSavePath("relative/b.txt", "")).is_absolute());
+}
+
+TEST(Files, StartingWithNoFileGivesAnUntitledCopyOfTheDefault) {
+    const std::string example = std::string(MARCHBOX_SOURCE_DIR) + "/scenes/default.txt";
+    Scene scene, expected;
+    std::string file = "unset";
+    std::vector<std::string> errors;
+    ASSERT_TRUE(startingScene("", example, &scene, &file, &errors));
+    ASSERT_TRUE(loadScene(example, &expected, &errors));
+    EXPECT_EQ(file, "");  // Save asks where: never over the example
+    EXPECT_EQ(scene.objects.size(), expected.objects.size());
+}
+
+TEST(Files, StartingOnAFileNotYetThereGivesAnEmptySceneToSaveThere) {
+    fs::path dir = freshDir("start");
+    const std::string path = (dir / "new.txt").string();
+    Scene scene;
+    std::string file;
+    std::vector<std::string> errors;
+    ASSERT_TRUE(startingScene(path, "/no/default.txt", &scene, &file, &errors));
+    EXPECT_EQ(file, path);
+    EXPECT_TRUE(scene.objects.empty());
+    EXPECT_EQ(scene.lights.size(), 1u);
+    EXPECT_TRUE(scene.world.ground);
+    EXPECT_FALSE(fs::exists(path));  // written by the first Save only
+
+    // In a folder that does not exist it is an error, saying so, as any file that cannot be read.
+    const std::string nowhere = (dir / "missing" / "new.txt").string();
+    EXPECT_FALSE(startingScene(nowhere, "/no/default.txt", &scene, &file, &errors));
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_EQ(errors[0], nowhere + ": cannot open: No such file or directory");
 }

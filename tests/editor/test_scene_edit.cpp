@@ -42,6 +42,14 @@ TEST(SceneEdit, NewSceneLoads) {
     EXPECT_EQ(s.lights.size(), 1u);
 }
 
+TEST(SceneEdit, AnEmptySceneHasTheGroundAndOneLightAndLoads) {
+    Scene s = emptyScene();
+    EXPECT_EQ(problems(s), "");
+    EXPECT_TRUE(s.objects.empty());
+    EXPECT_TRUE(s.world.ground);
+    EXPECT_EQ(s.lights.size(), 1u);
+}
+
 TEST(SceneEdit, DeletingAMaterialRenumbersObjects) {
     Scene s = threeMaterials();
     std::string why;

@@ -37,6 +37,10 @@ public:
     void cancelLeave();
     bool quitRequested() const { return quit_; }
 
+    // The scene the editor starts on (startingScene()); `file` is where Save writes, "" for an
+    // untitled scene, which Save asks a name for.
+    void start(const Scene& scene, const std::string& file);
+
     bool save(std::string* error);  // to document().path(); fails when the scene has none
     bool saveAs(const std::string& path, std::string* error);  // "" is refused: asks for a name
     // The file last opened or saved, kept through New: where Save As starts a new scene.

@@ -2,6 +2,8 @@
 // noticing files that change.
 #pragma once
 
+#include "marchbox/scene/scene.h"
+
 #include <filesystem>
 #include <map>
 #include <string>
@@ -21,6 +23,14 @@ bool hasSceneExtension(const std::string& path);  // ".txt", any case
 // numbered "untitled-2.txt", ... past files that exist. Always absolute and normalised, so the
 // dialog shows the whole of where it will write.
 std::string proposeSavePath(const std::string& current, const std::string& lastUsed);
+
+// What `marchbox [SCENE]` starts on, read into *scene with *file the path saves go to: SCENE
+// itself; where no file SCENE exists yet but its folder does, an empty scene (emptyScene())
+// to be saved as SCENE; with no SCENE (""), an untitled copy of `defaultScene` (*file ""), so
+// that a save asks where rather than writing over the example. False with FILE:LINE errors
+// when a file does not load.
+bool startingScene(const std::string& scenePath, const std::string& defaultScene, Scene* scene,
+                   std::string* file, std::vector<std::string>* errors);
 
 // Polls the modification times of the files directly in one folder (the shaders).
 class FolderWatch {

@@ -43,6 +43,10 @@ void clearItems(Scene& s, ItemKind k);
 // A fresh scene for File > New: ground, one light, one material, one sphere.
 Scene newScene();
 
+// A scene with nothing in it yet: the ground, the camera and one light. `marchbox NEW.txt`
+// opens it for a file that does not exist, to be saved there.
+Scene emptyScene();
+
 // J in the editor: a random velocity for every dynamic body, mostly sideways and a little up.
 // Returns how many bodies it touched.
 int randomizeVelocities(Scene& s, uint32_t seed);
