@@ -4,6 +4,7 @@
 #include "marchbox/scene/printable.h"
 
 #include <charconv>
+#include <climits>
 #include <cmath>
 
 namespace mb {
@@ -21,12 +22,16 @@ static bool parseInt(const std::string& s, int lo, int hi, int* out) {
     return true;
 }
 
+bool validImageSize(long width, long height) {
+    return width >= 1 && height >= 1 && width <= kMaxImageSide && height <= kMaxImageSide &&
+           width * height <= kMaxImagePixels;
+}
+
 static bool parseSize(const std::string& s, int* w, int* h) {
     size_t x = s.find('x');
     int width = 0, height = 0;
-    if (x == std::string::npos || !parseInt(s.substr(0, x), 1, kMaxImageSide, &width) ||
-        !parseInt(s.substr(x + 1), 1, kMaxImageSide, &height) ||
-        long(width) * height > kMaxImagePixels)
+    if (x == std::string::npos || !parseInt(s.substr(0, x), INT_MIN, INT_MAX, &width) ||
+        !parseInt(s.substr(x + 1), INT_MIN, INT_MAX, &height) || !validImageSize(width, height))
         return false;
     *w = width, *h = height;
     return true;
@@ -87,7 +92,7 @@ static bool applyValue(const std::string& opt, const std::string& v, Args* a, st
     if (!ok) {
         static const char* expected[][2] = {
             {"-o", "a file path"},
-            {"--size", "WxH, each side 1 to 16384, at most 4096x4096 pixels in all"},
+            {"--size", kImageSizeRule},
             {"--seconds", "a number of seconds from 0 to 3600"},
             {"--frames", "N, a whole number from 1 to 100000, or A-B, frames 0 to 10000000"},
             {"--fps", "a number of frames per second, more than 0 and at most 1000"},

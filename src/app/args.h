@@ -43,6 +43,9 @@ constexpr int kMaxImageSide = 16384;
 // Off-screen renders run on the CPU (llvmpipe): 4096x4096 takes minutes and 64 MiB a copy;
 // 16384x16384 would take an hour and gigabytes, which looks like a hang.
 constexpr long kMaxImagePixels = 4096L * 4096L;
+// The one limit on an image's size, for --size and File > Render... alike, and its words.
+constexpr const char* kImageSizeRule = "WxH, each side 1 to 16384, at most 4096x4096 pixels in all";
+bool validImageSize(long width, long height);
 constexpr double kMaxSeconds = 3600;
 constexpr int kMaxFrame = 10000000;  // --frames A-B: 3600 s at 2778 fps
 constexpr double kMaxFps = 1000;

@@ -137,6 +137,8 @@ static void viewMenu(UiContext& c) {
                          int(ui.quality) == p))
                 ui.quality = QualityPreset(p);
         ImGui::EndMenu();
+    } else {
+        markItem("View/Quality");
     }
     const bool fog = c.editor.scene().render.fog > 0.0f;
     if (menuItem("View", "Fog", "F", fog && ui.render.fog, fog)) toggleFog(c);

@@ -1,31 +1,89 @@
 // render_dialog.cpp — large renders from the editor.
 #include "render_dialog.h"
 
+#include "args.h"
 #include "marchbox/editor/events.h"
+#include "marchbox/gl/gl.h"
 #include "widgets.h"
 
 #include <GLFW/glfw3.h>
 #include <algorithm>
+#include <filesystem>
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
 namespace mb {
 
-// A folder that is missing or read-only is found before the render, not after it. The save at
-// the end still checks what only the write can meet (a full disk).
-void RenderDialog::start(UiContext& c) {
-    width_ = std::clamp(width_, 1, 16384);
-    height_ = std::clamp(height_, 1, 16384);
+static const char* const kSupersampling[] = {"1x1", "2x2", "3x3", "4x4"};  // the scene's aa 1..4
+
+// A radio button marked "render/LABEL"; true when clicked.
+static bool choice(const char* label, bool active) {
+    ImGui::SameLine();
+    bool clicked = ImGui::RadioButton(label, active);
+    markItem(std::string("render/") + label);
+    return clicked;
+}
+
+// The preset and supersampling the render takes: chosen here, or else View > Quality's preset
+// and the supersampling it makes of the scene's own `aa`.
+void RenderDialog::settings(UiContext& c, QualityPreset* preset, int* aa) {
+    *preset = preset_.value_or(c.ui.quality);
+    RenderSettings render = c.editor.scene().render;
+    RenderOptions unused;
+    applyQualityPreset(*preset, &render, &unused);
+    *aa = aa_.value_or(render.aa);
+    ImGui::TextUnformatted("quality");
+    for (int p = 0; p < kQualityPresetCount; ++p)
+        if (choice(qualityPresetName(QualityPreset(p)), int(*preset) == p))
+            preset_ = QualityPreset(p);
+    itemTooltip("render/quality", "As marchbox render --quality; at first View > Quality's.");
+    ImGui::TextUnformatted("supersampling");
+    for (int n = 1; n <= 4; ++n)
+        if (choice(kSupersampling[n - 1], *aa == n)) aa_ = n;
+    itemTooltip("render/supersampling",
+                "Samples per pixel along each side, as the scene's aa; at first what the\n"
+                "quality preset makes of it.");
+}
+
+// The size within the command line's limit, the file writable (a missing or read-only folder
+// is found now, not after the render; the save still meets what only the write can, a full
+// disk), and a file already there replaced only by a second Render.
+bool RenderDialog::ready() {
     std::string error;
+    if (!validImageSize(width_, height_)) {
+        status_ = "bad size " + std::to_string(width_) + "x" + std::to_string(height_) +
+                  ": expected " + kImageSizeRule;
+        emitEvent("refuse " + status_);
+        return false;
+    }
     if (!checkSavePng(path_, &error)) {
         status_ = error;
         emitEvent(status_);
-        return;
+        return false;
     }
-    renderer_ = std::make_unique<Renderer>();
+    std::error_code ec;
+    if (std::filesystem::exists(path_, ec) && replacePath_ != path_) {
+        replacePath_ = path_;
+        status_ = path_ + " exists: Render again to replace it.";
+        emitEvent("confirm replace " + path_);
+        return false;
+    }
+    return true;
+}
+
+// The scene as `marchbox render` reads it from the file: the preset over its settings, then
+// the supersampling chosen.
+void RenderDialog::start(UiContext& c, QualityPreset preset, int aa) {
+    if (!ready()) return;
+    replacePath_.clear();
+    Scene scene = c.editor.scene();
     RenderOptions options = c.ui.render;
     options.outline = false;  // a still shows no selection
-    if (!renderer_->init(&error) || !renderer_->setScene(c.editor.scene(), options, &error)) {
+    applyQualityPreset(preset, &scene.render, &options);
+    scene.render.aa = aa;
+    std::string error;
+    renderer_ = std::make_unique<Renderer>();
+    if (!renderer_->init(&error) || !renderer_->setScene(scene, options, &error)) {
         status_ = "cannot render: " + error.substr(0, error.find('\n'));
         renderer_.reset();
         return;
@@ -43,7 +101,10 @@ void RenderDialog::start(UiContext& c) {
 void RenderDialog::finish() {
     Image img = tiles_->finish();
     std::string error;
-    status_ = savePng(path_, img, &error) ? "saved " + path_ : error;
+    std::error_code ec;
+    const std::filesystem::path whole = std::filesystem::absolute(path_, ec).lexically_normal();
+    if (GLenum e = glGetError()) status_ = "cannot render: OpenGL error " + std::to_string(e);
+    else status_ = savePng(path_, img, &error) ? "saved " + whole.string() : error;
     emitEvent(status_);
     tiles_.reset();
     renderer_.reset();
@@ -58,6 +119,12 @@ void RenderDialog::work(double budgetSeconds) {
 }
 
 void RenderDialog::draw(UiContext& c) {
+    // What was said about the last scene (saved, refused) goes when another opens.
+    if (scene_ != c.editor.document().opened() && !running()) {
+        scene_ = c.editor.document().opened();
+        status_.clear();
+        replacePath_.clear();
+    }
     if (!c.ui.showRender) return;
     if (beginPanel(c, Panel::Render, "Render", &c.ui.showRender)) {
         ImGui::BeginDisabled(running());
@@ -67,8 +134,11 @@ void RenderDialog::draw(UiContext& c) {
         markItem("render/height");
         ImGui::InputText("PNG file", &path_);
         markItem("render/file");
+        QualityPreset preset;
+        int aa;
+        settings(c, &preset, &aa);
         ImGui::TextDisabled("Debug view, fog and FXAA follow the View settings.");
-        if (ImGui::Button("Render")) start(c);
+        if (ImGui::Button("Render")) start(c, preset, aa);
         markItem("render/start");
         ImGui::EndDisabled();
         if (running()) {

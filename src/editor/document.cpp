@@ -21,6 +21,7 @@ void Document::replace(const Scene& scene, const std::string& path) {
     history_.clear();
     saved_ = scene;
     ++version_;
+    ++opened_;
 }
 
 void Document::markSaved(const std::string& path) {

@@ -109,7 +109,14 @@ bool Shader::compileFile(GLenum type, const std::string& path, const std::string
 }
 
 Program::~Program() {
-    if (id_) glDeleteProgram(id_);
+    if (!id_) return;
+    // A program deleted while in use lives on until unbound, and whoever saved it as the one in
+    // use (ImGui's backend does, around its draw) puts back a name that then no longer exists:
+    // GL_INVALID_VALUE, which the next check reports as this context's failure.
+    GLint current = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    if (GLuint(current) == id_) glUseProgram(0);
+    glDeleteProgram(id_);
 }
 Program::Program(Program&& o) noexcept
     : id_(std::exchange(o.id_, 0)), log_(std::move(o.log_)), uniforms_(std::move(o.uniforms_)) {}

@@ -748,15 +748,19 @@ def case_camera(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+def fill(app, field, value, fresh=True):
+    app.click_widget(field, fresh)
+    app.key('ctrl+a')
+    app.type(value)
+
+
 def case_render(app, scene):
     """File > Render… draws a PNG of the asked size tile by tile while the window stays live.
     A PNG file in a missing folder is refused before rendering, saying so in the dialog."""
     app.menu('File', 'Render...')
     missing = os.path.join(app.workdir, 'missing', 'render.png')
     for field, value in (('render/width', '300'), ('render/height', '200'), ('render/file', missing)):
-        app.click_widget(field)
-        app.key('ctrl+a')
-        app.type(value)
+        fill(app, field, value)
     app.click_widget('render/start')
     said = app.wait('cannot write ', timeout=90)
     check(said == "cannot write '%s': No such file or directory" % missing, 'refused as %r' % said)
@@ -773,6 +777,7 @@ def case_render(app, scene):
     check((img.width, img.height) == (300, 200), 'the PNG is %dx%d' % (img.width, img.height))
     check(len({img.pixel(x, y) for x in range(0, 300, 15) for y in range(0, 200, 15)}) > 10,
           'the render is nearly uniform')
+    check_render_as_cli(app, scene)
     # The window's picture is drawn again after the render (a selection outlines it) with the
     # window's own scene: the render's renderer, gone now, had bound its buffers in its place.
     app.menu('File', 'Render...')  # closes the dialog, which covers the sphere
@@ -781,6 +786,53 @@ def case_render(app, scene):
     check(lit[0] > 120, 'the view lost the scene after File > Render...: %s' % (lit,))
     app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
+
+
+def check_render_as_cli(app, scene):
+    """The dialog's sizes are the command line's, refused in its words; at View > Quality's
+    preset, with the supersampling chosen, it writes what `marchbox render --quality` writes
+    of the scene with that `aa`, byte for byte; it asks before replacing a file; its note names
+    the whole path and goes when another scene opens."""
+    cli = subprocess.run([MARCHBOX, 'render', scene, '-o', 'x.png', '--size', '99999x200'],
+                         capture_output=True, text=True).stderr.strip()
+    fill(app, 'render/width', '99999', fresh=False)
+    app.click_widget('render/start', fresh=False)
+    said = app.wait('refuse ')
+    rule = cli.split('expected ', 1)[1].split(' (see marchbox --help)')[0]
+    check(said == 'refuse bad size 99999x200: expected ' + rule,
+          'refused as %r; the command line says %r' % (said, cli))
+    app.click_widget('View', fresh=False)
+    app.wait('popup menu View open')
+    app.move(*app.widget('View/Quality'))
+    app.click_widget('View/draft')
+    app.wait('popup menu View closed')
+    for field, value in (('render/width', '160'), ('render/height', '90'), ('render/file', 'small.png')):
+        fill(app, field, value, fresh=False)
+    app.click_widget('render/2x2', fresh=False)
+    app.click_widget('render/start', fresh=False)
+    small = os.path.join(os.path.realpath(app.workdir), 'small.png')
+    check(app.wait('saved ', timeout=90) == 'saved ' + small, 'not saved as %s' % small)
+    aa2 = os.path.join(app.workdir, 'aa2.txt')
+    with open(scene) as f, open(aa2, 'w') as out:
+        out.write(re.sub(r'^(render .*)$', r'\1 aa:2', f.read(), flags=re.M))
+    cli_png = os.path.join(app.workdir, 'cli.png')
+    subprocess.run([MARCHBOX, 'render', aa2, '-o', cli_png, '--size', '160x90', '--quality', 'draft'],
+                   check=True)
+    check(open(small, 'rb').read() == open(cli_png, 'rb').read(),
+          'File > Render... at draft, 2x2, differs from marchbox render --quality draft with aa:2')
+    app.click_widget('render/start', fresh=False)
+    check(app.wait('confirm replace ') == 'confirm replace small.png', 'replaced without asking')
+    check(not [l for l in app.events()[app.seen:] if l.startswith('render started')], 'rendered first')
+    app.click_widget('render/start', fresh=False)
+    app.wait('saved ', timeout=90)
+    time.sleep(0.5)
+    noted = panel(app, 'Render')
+    app.key('ctrl+o')
+    app.wait('typing Open scene/path')  # the open scene's own path, proposed
+    app.key('Return')
+    app.wait('open ')
+    time.sleep(0.5)
+    check(panel(app, 'Render')[3] < noted[3], 'the note outlived the scene it was about')
 
 
 def select_first(app, scene):

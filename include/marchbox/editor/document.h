@@ -48,6 +48,8 @@ public:
 
     // Grows whenever the scene may have changed, for whoever mirrors it (the GPU upload).
     uint64_t version() const { return version_; }
+    // Grows at each replace() (New, Open): what was said about the last scene goes with it.
+    uint64_t opened() const { return opened_; }
 
 private:
     void restore(const Scene& target, bool stepMovedCamera);
@@ -59,6 +61,7 @@ private:
     mutable uint64_t checkedVersion_ = ~uint64_t(0);
     mutable bool dirty_ = false;  // as of checkedVersion_
     uint64_t version_ = 0;
+    uint64_t opened_ = 0;
 };
 
 bool sameCamera(const Camera& a, const Camera& b);
