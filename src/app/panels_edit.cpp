@@ -71,7 +71,7 @@ static void shapeFields(Object& o, FieldEdit& e) {
     int type = int(o.type);
     fieldCombo("type", &type, kShapeNames, kShapeTypeCount, e,
                "The shape; its size fields follow.");
-    o.type = ShapeType(type);
+    if (ShapeType(type) != o.type) o = retyped(o, ShapeType(type));  // resting where it stood
     fieldVec3("pos", Field::Position, &o.pos, e);
     if (o.type == ShapeType::Box) fieldVec3("size", Field::HalfExtent, &o.size, e);
     else fieldFloat("radius", Field::Radius, &o.radius, e);

@@ -76,6 +76,8 @@ static void fileMenu(UiContext& c) {
     if (menuItem("File", "Exit", "Ctrl+Q")) request(c, Leave::Exit);
 }
 
+static const char* const kShapeMenuNames[] = {"Sphere", "Box", "Torus", "Capsule", "Cylinder"};
+
 static void editMenu(UiContext& c) {
     Editor& e = c.editor;
     const History& h = e.document().history();
@@ -88,6 +90,15 @@ static void editMenu(UiContext& c) {
         c.ui.showMaterials = !c.ui.showMaterials;
     if (menuItem("Edit", "Lights", nullptr, c.ui.showLights)) c.ui.showLights = !c.ui.showLights;
     ImGui::Separator();
+    if (ImGui::BeginMenu("Add")) {  // on the ground below the camera's target, clear of others
+        std::string* why = c.ui.messages.at(Place::Status);
+        for (int t = 0; t < kShapeTypeCount; ++t)
+            if (menuItem("Add", kShapeMenuNames[t])) e.add(ItemKind::Object, why, ShapeType(t));
+        if (menuItem("Add", "Light")) e.add(ItemKind::Light, why);
+        ImGui::EndMenu();
+    } else {
+        markItem("Edit/Add");
+    }
     if (menuItem("Edit", "Delete selected", "Del", false, !e.selection().empty()))
         e.removeSelected(deleteMessage(c));
     if (menuItem("Edit", "Random velocities", "J")) e.kick();

@@ -153,13 +153,16 @@ static bool tryEdit(Editor& e, const std::string& label, Command command) {
     return true;
 }
 
-bool Editor::add(ItemKind k, std::string* why) {
+bool Editor::add(ItemKind k, std::string* why, ShapeType shape) {
+    const bool object = k == ItemKind::Object;
     int index = -1;
-    bool ok = tryEdit(*this, std::string("Add ") + itemKindName(k), [&](Scene& s) {
-        const bool object = k == ItemKind::Object;
-        const glm::vec3 spot = object ? placeNewObject(s, defaultObject().radius) : glm::vec3(0.0f);
+    const std::string label = object ? shapeTypeName(shape) : itemKindName(k);
+    bool ok = tryEdit(*this, "Add " + label, [&](Scene& s) {
+        Object o = defaultObject();
+        o.type = shape;
+        o.pos = object ? placeNewObject(s, o) : o.pos;  // clear of the others, not of itself
         if ((index = addItem(s, k, why)) < 0) return false;
-        if (object) s.objects[size_t(index)].pos = spot;
+        if (object) s.objects[size_t(index)] = o;
         return true;
     });
     if (ok) select(k, index);

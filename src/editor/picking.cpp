@@ -50,28 +50,44 @@ static bool clearOf(const std::vector<SdfObject>& objects, glm::vec3 p, float ra
     return true;
 }
 
-glm::vec3 placeNewObject(const Scene& scene, float radius) {
-    const Camera& c = scene.camera;
-    const float floor = scene.world.floor;
-    glm::vec3 forward = cameraBasis(c).forward;
-    float t = forward.y < 0.0f ? (floor - c.pos.y) / forward.y : -1.0f;
-    glm::vec3 centre = t > 0.0f && t <= kPlaceReach ? c.pos + t * forward : c.target;
-    centre.y = floor + radius;
-    SceneSdf sdf = makeSceneSdf(scene);
-    // Rings about the centre, nearest first, spaced one radius apart in both directions:
-    // ring k holds 6k spots, about a radius apart along it.
-    const float step = std::max(radius, 0.01f);
-    const int rings = 64;
-    for (int k = 0; k <= rings; ++k) {
+// Inside the camera's cone, the vertical field of view (the narrower one) less a margin, so a
+// spot near the edge still shows whole.
+static bool inView(const Camera& c, glm::vec3 p) {
+    const glm::vec3 to = p - c.pos;
+    const float along = glm::dot(to, cameraBasis(c).forward);
+    return along > 0.0f && along >= glm::length(to) * std::cos(glm::radians(0.4f * c.fov));
+}
+
+// The spots about `centre` nearest first, in rings one `step` apart: ring k holds 6k spots, about
+// a step apart along it. The first that `fits` accepts, if any.
+template <typename Fits>
+static bool nearestSpot(glm::vec3 centre, float step, Fits fits, glm::vec3* out) {
+    for (int k = 0; k <= 64; ++k) {
         const int spots = std::max(1, 6 * k);
         for (int i = 0; i < spots; ++i) {
             float a = 6.2831853f * float(i) / float(spots);
             glm::vec3 p = centre + float(k) * step * glm::vec3(std::cos(a), 0.0f, std::sin(a));
-            if (clearOf(sdf.objects, p, radius)) return p;
+            if (fits(p)) return *out = p, true;
         }
     }
+    return false;
+}
+
+glm::vec3 placeNewObject(const Scene& scene, const Object& o) {
+    const Camera& c = scene.camera;
+    const float radius = boundingRadius(o);
+    const glm::vec3 centre(c.target.x, scene.world.floor + depthBelowCentre(o), c.target.z);
+    SceneSdf sdf = makeSceneSdf(scene);
+    const float step = std::max(radius, 0.01f);
+    glm::vec3 spot;
+    if (nearestSpot(
+            centre, step,
+            [&](glm::vec3 p) { return clearOf(sdf.objects, p, radius) && inView(c, p); }, &spot) ||
+        nearestSpot(
+            centre, step, [&](glm::vec3 p) { return clearOf(sdf.objects, p, radius); }, &spot))
+        return spot;
     float top = centre.y;
-    for (const SdfObject& o : sdf.objects) top = std::max(top, o.pos.y + objectReach(o) + radius);
+    for (const SdfObject& s : sdf.objects) top = std::max(top, s.pos.y + objectReach(s) + radius);
     return {centre.x, top, centre.z};
 }
 

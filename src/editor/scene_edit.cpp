@@ -1,6 +1,8 @@
 // scene_edit.cpp — add, duplicate, delete and clear for objects, materials and lights.
 #include "marchbox/editor/scene_edit.h"
 
+#include "marchbox/scene/sdf.h"
+
 #include <random>
 
 namespace mb {
@@ -51,6 +53,13 @@ Light defaultLight() {
     Light l;
     l.vec = {3.0f, 6.0f, -4.0f};
     return l;
+}
+
+Object retyped(Object o, ShapeType t) {
+    const float lowest = o.pos.y - depthBelowCentre(o);
+    o.type = t;
+    o.pos.y = lowest + depthBelowCentre(o);
+    return o;
 }
 
 // Names like the loader's: "materialN" for the N-th material, so names stay distinct.

@@ -74,7 +74,7 @@ glm::vec3 eulerFromRotation(const glm::mat3& r) {
     return glm::degrees(vec3(std::atan2(r[1][2], r[2][2]), y, std::atan2(r[0][1], r[0][0])));
 }
 
-static float boundingRadius(const Object& o) {
+float boundingRadius(const Object& o) {
     switch (o.type) {
         case ShapeType::Sphere:
             return o.radius;
@@ -86,6 +86,26 @@ static float boundingRadius(const Object& o) {
             return 0.5f * o.height + o.radius;
         case ShapeType::Cylinder:
             return std::hypot(0.5f * o.height, o.radius);
+    }
+    return 0.0f;
+}
+
+// A unit axis a reaches |a_y| below a point; a circle of radius r across it, r·sqrt(1 − a_y²).
+float depthBelowCentre(const Object& o) {
+    const glm::mat3 r = o.orient ? glm::mat3_cast(*o.orient) : rotationFromEuler(o.rot);
+    const float up = std::abs(r[1].y);  // the local y axis (glm's column 1), upright part
+    const float across = std::sqrt(std::max(0.0f, 1.0f - up * up));
+    switch (o.type) {
+        case ShapeType::Sphere:
+            return o.radius;
+        case ShapeType::Box:
+            return std::abs(r[0].y) * o.size.x + up * o.size.y + std::abs(r[2].y) * o.size.z;
+        case ShapeType::Torus:  // the ring lies across local y
+            return o.radius * across + o.minor;
+        case ShapeType::Capsule:
+            return 0.5f * o.height * up + o.radius;
+        case ShapeType::Cylinder:
+            return 0.5f * o.height * up + o.radius * across;
     }
     return 0.0f;
 }

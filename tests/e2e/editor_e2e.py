@@ -317,8 +317,11 @@ def check_missing_list(app):
     check(text_in(app.screenshot(), x, y), 'no shader features at %d,%d' % (x, y))
     app.menu('View', 'Camera and render')
 
-    app.click_widget('Objects/Add', fresh=False)  # a fourth object: the scene's shader compiles anew
-    app.wait('edit Add')
+    app.click_widget('Edit', fresh=False)  # Edit > Add > Box: the scene's shader compiles anew
+    app.wait('popup menu Edit open')
+    app.move(*app.widget('Edit/Add'))
+    app.click_widget('Add/Box')
+    app.wait('edit Add box')
     x, y = app.widget('Statistics/compiling', timeout=20)
     app.key('ctrl+z')
     app.wait('undo Add')

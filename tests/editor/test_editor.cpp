@@ -1,6 +1,7 @@
 // test_editor.cpp — the editor's rules: open failures, unsaved work, edits while simulating.
 #include "marchbox/editor/editor.h"
 #include "marchbox/scene/scene_io.h"
+#include "marchbox/scene/sdf.h"
 
 #include <cmath>
 #include <filesystem>
@@ -320,7 +321,7 @@ static float gapBetween(const Object& a, const Object& b) {
     return glm::length(a.pos - b.pos) - a.radius - b.radius;
 }
 
-TEST(Editor, AddPutsTheObjectWhereTheViewMeetsTheGround) {
+TEST(Editor, AddPutsTheObjectOnTheGroundBelowTheTarget) {
     Editor e = openEditor(writeFile("place.txt", kScene));
     e.view() = Camera{{1, 4, -4}, {1, 0, 0}, 50};  // looking down at (1,0,0)
     std::string why;
@@ -337,6 +338,34 @@ TEST(Editor, AddPutsTheObjectWhereTheViewMeetsTheGround) {
     EXPECT_EQ(beside.pos.y, 0.5f);
     EXPECT_GE(gapBetween(beside, o), 0.0f);
     EXPECT_LT(glm::length(beside.pos - o.pos), 1.6f);
+}
+
+// The end-to-end tests' scene: the view's middle met the ground 10.8 m off, 4.3 m past the
+// target behind the box; each shape now goes near the target, in view, clear of the others.
+TEST(Editor, AddPutsEachShapeInViewNearTheTarget) {
+    Editor e = openEditor(writeFile("near.txt",
+                                    "scene version:1\ncamera pos:2,2.5,-6.5 target:2,1,0 fov:45\n"
+                                    "material r:1 g:0 b:0\n"
+                                    "object type:sphere pos:0,1.2,0 radius:0.7\n"
+                                    "object type:sphere pos:-2,1.4,1 radius:0.45\n"
+                                    "object type:box pos:1.4,0.5,2.5 size:0.5,0.5,0.5\n"));
+    const Camera view = e.scene().camera;
+    const glm::vec3 forward = glm::normalize(view.target - view.pos);
+    std::string why;
+    for (int t = 0; t < kShapeTypeCount; ++t) {
+        ASSERT_TRUE(e.add(ItemKind::Object, &why, ShapeType(t))) << why;
+        const Object o = e.scene().objects.back();
+        EXPECT_EQ(o.type, ShapeType(t));
+        EXPECT_NEAR(o.pos.y, depthBelowCentre(o), 1e-6f) << "resting on the ground";
+        EXPECT_LT(glm::length(glm::vec2(o.pos.x - 2.0f, o.pos.z)), 2.5f) << t;
+        const glm::vec3 to = glm::normalize(o.pos - view.pos);
+        EXPECT_GT(glm::dot(to, forward), std::cos(glm::radians(0.5f * view.fov))) << "out of view";
+        const SceneSdf sdf = makeSceneSdf(e.scene());
+        for (size_t i = 0; i + 1 < sdf.objects.size(); ++i)
+            EXPECT_GT(sdObject(sdf.objects[i], o.pos), boundingRadius(o)) << t << " meets " << i;
+    }
+    ASSERT_TRUE(e.add(ItemKind::Light, &why)) << why;
+    EXPECT_EQ(e.selection().kind, ItemKind::Light);
 }
 
 TEST(Editor, AddInANewSceneMissesItsSphere) {

@@ -3,6 +3,7 @@
 #include "marchbox/editor/selection.h"
 #include "marchbox/scene/scene_io.h"
 
+#include <cmath>
 #include <gtest/gtest.h>
 
 using namespace mb;
@@ -48,6 +49,35 @@ TEST(SceneEdit, AnEmptySceneHasTheGroundAndOneLightAndLoads) {
     EXPECT_TRUE(s.objects.empty());
     EXPECT_TRUE(s.world.ground);
     EXPECT_EQ(s.lights.size(), 1u);
+}
+
+// A new type rests where the old one stood: its lowest point, turned as the object is, stays.
+TEST(SceneEdit, ARetypedObjectKeepsItsLowestPoint) {
+    Object sphere;  // r = 0.5 on the ground
+    sphere.pos = {1, 0.5f, 2};
+    sphere.height = 1.0f;
+    Object capsule = retyped(sphere, ShapeType::Capsule);
+    EXPECT_EQ(capsule.type, ShapeType::Capsule);
+    EXPECT_FLOAT_EQ(capsule.pos.y, 0.5f + 0.5f);  // r + h/2
+    EXPECT_EQ(glm::vec2(capsule.pos.x, capsule.pos.z), glm::vec2(1, 2));
+    EXPECT_FLOAT_EQ(retyped(capsule, ShapeType::Cylinder).pos.y, 0.5f);  // h/2
+    EXPECT_FLOAT_EQ(retyped(capsule, ShapeType::Box).pos.y, 0.5f);       // size.y
+    EXPECT_FLOAT_EQ(retyped(capsule, ShapeType::Torus).pos.y, 0.1f);     // the tube, lying
+    EXPECT_FLOAT_EQ(retyped(capsule, ShapeType::Sphere).pos.y, 0.5f);    // back as it was
+
+    Object lying = sphere;  // turned 90 degrees about z: local y lies along x
+    lying.rot = {0, 0, 90};
+    lying.radius = 0.2f;
+    lying.pos.y = 2.2f;  // in the air: the lowest point is 2 m up, not on the ground
+    EXPECT_NEAR(retyped(lying, ShapeType::Capsule).pos.y, 2.2f, 1e-6f);   // r, lying
+    EXPECT_NEAR(retyped(lying, ShapeType::Cylinder).pos.y, 2.2f, 1e-6f);  // r, lying
+    EXPECT_NEAR(retyped(lying, ShapeType::Torus).pos.y, 2.3f, 1e-6f);     // R + minor, on edge
+
+    Object box = sphere;  // a cube of half side 0.5 turned 45 degrees about z stands on an edge
+    box.type = ShapeType::Box;
+    box.rot = {0, 0, 45};
+    box.pos.y = 0.5f * std::sqrt(2.0f);
+    EXPECT_NEAR(retyped(box, ShapeType::Sphere).pos.y, 0.5f, 1e-6f);
 }
 
 TEST(SceneEdit, DeletingAMaterialRenumbersObjects) {

@@ -55,7 +55,8 @@ public:
     bool undo();
     bool redo();
 
-    bool add(ItemKind k, std::string* why);  // selects the new item; an object as placeNewObject()
+    // Selects the new item; an object of type `shape`, put where placeNewObject() says.
+    bool add(ItemKind k, std::string* why, ShapeType shape = ShapeType::Sphere);
     bool duplicate(ItemKind k, int index, std::string* why);  // selects the copy
     bool remove(ItemKind k, int index, std::string* why);
     void clear(ItemKind k);

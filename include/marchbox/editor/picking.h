@@ -20,12 +20,11 @@ int pickObject(const Scene& scene, glm::vec2 pixel, glm::vec2 viewSize);
 bool pixelOnPlane(const Camera& camera, glm::vec2 pixel, glm::vec2 viewSize, float height,
                   glm::vec3* hit);
 
-// Where Add puts a new sphere of `radius`: resting on the ground (y = floor + radius) where the
-// middle of the view meets it, or below the camera's target when the view looks above the
-// horizon or meets the ground past kPlaceReach; then moved over the ground the least that keeps
-// it clear of every object. Crowded all round, it goes above them to fall into place.
-constexpr float kPlaceReach = 100.0f;  // m
-glm::vec3 placeNewObject(const Scene& scene, float radius);
+// Where Add puts the new object `o`: resting on the ground (its lowest point on the floor) below
+// the camera's target, then moved over the ground the least that keeps it clear of every object
+// and inside the view. Where no spot in view is clear, the nearest clear one; crowded all
+// round, it goes above them to fall into place.
+glm::vec3 placeNewObject(const Scene& scene, const Object& o);
 
 // A modifier-drag in the view: the object slides over the horizontal plane through its centre,
 // keeping the point first grabbed under the mouse.

@@ -23,6 +23,10 @@ Object defaultObject();      // a dynamic sphere of radius 0.5, 2 m above the or
 Material defaultMaterial();  // light grey, the format's default coefficients
 Light defaultLight();        // a white point light above and behind the origin
 
+// The object as type t, resting where it stood: moved up or down so that the new shape's lowest
+// point, turned as the object is, is where the old one's was (depthBelowCentre).
+Object retyped(Object o, ShapeType t);
+
 // Appends a default item; returns its index, or -1 with *why when the list is full. A new
 // object needs a material: in a scene without one, a default material is added first.
 int addItem(Scene& s, ItemKind k, std::string* why);

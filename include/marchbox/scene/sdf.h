@@ -50,6 +50,12 @@ glm::vec2 opIntersect(float a, float b, float k);
 glm::mat3 rotationFromEuler(glm::vec3 degrees);
 glm::vec3 eulerFromRotation(const glm::mat3& r);  // its angles, for showing an exact turn
 
+// The radius of a sphere about the object's centre that holds its shape.
+float boundingRadius(const Object& o);
+// How far the shape reaches below its centre, turned as it is: its centre height above the
+// ground when it rests there (Add, and a change of type, which keeps that lowest point).
+float depthBelowCentre(const Object& o);
+
 // One object, resolved for evaluation: the same numbers the shader receives.
 struct SdfObject {
     ShapeType type;
