@@ -30,11 +30,11 @@ static void swatch(const Material& m, float size = 0.0f) {
 static std::string itemName(const Scene& s, ItemKind k, int i) {
     std::string n = std::to_string(i) + " ";
     switch (k) {
-        case ItemKind::Object: {
+        case ItemKind::Object: {  // "3 lid: box, subtract, static"
             const Object& o = s.objects[size_t(i)];
-            n += shapeTypeName(o.type);
-            if (o.dynamic()) n += " (dynamic)";
-            return n;
+            if (!o.name.empty()) n += o.name + ": ";
+            return n + shapeTypeName(o.type) + ", " + csgOpName(o.op) +
+                   (o.dynamic() ? ", dynamic" : ", static");
         }
         case ItemKind::Material:
             return n + s.materials[size_t(i)].name;
@@ -65,6 +65,25 @@ static void materialCombo(const Scene& s, int* material, FieldEdit& e) {
         ImGui::PopID();
     }
     ImGui::EndCombo();
+}
+
+// A name, taken on Return when validateName() allows it; `optional`: an empty one clears it.
+static void nameField(std::string* name, bool optional, FieldEdit& e, const char* tooltip) {
+    std::string typed = *name, why;
+    if (ImGui::InputText("name", &typed, ImGuiInputTextFlags_EnterReturnsTrue)) {
+        if ((optional && typed.empty()) || validateName(typed, &why)) {
+            *name = typed;
+            e.changed = true;
+            e.key = 0;  // a name typed is its own undo step
+            e.error->clear();
+        } else {
+            *e.error = why + ": '" + typed + "' refused, '" + *name + "' kept";
+            emitEvent("refuse " + *e.error);
+        }
+    }
+    markItem(itemPath("name"));
+    markTyping(itemPath("name"));
+    itemTooltip(itemPath("name"), tooltip);
 }
 
 static void shapeFields(Object& o, FieldEdit& e) {
@@ -117,6 +136,9 @@ static void objectFields(UiContext& c, int i, Place place) {
     Object o = s.objects[size_t(i)];
     FieldEdit e{false, 0, c.ui.messages.at(place)};
     ImGui::PushID(i);
+    nameField(&o.name, true, e,
+              "The object's name in the list and the file: letters, digits, '_', '.' or '-';\n"
+              "empty for none. Return takes it.");
     shapeFields(o, e);
     materialCombo(s, &o.material, e);
     motionFields(o, s.world, e);
@@ -128,22 +150,10 @@ static void objectFields(UiContext& c, int i, Place place) {
 
 static void materialFields(UiContext& c, int i) {
     Material m = c.editor.scene().materials[size_t(i)];
-    std::string& message = *c.ui.messages.at(Place::Materials);
-    FieldEdit e{false, 0, &message};
+    FieldEdit e{false, 0, c.ui.messages.at(Place::Materials)};
     ImGui::PushID(i);
     swatch(m, 48.0f);
-    std::string name = m.name, why;
-    if (ImGui::InputText("name", &name, ImGuiInputTextFlags_EnterReturnsTrue)) {
-        if (validateName(name, &why)) {
-            m.name = name;
-            e.changed = true;
-            message.clear();
-        } else {
-            message = why + ": '" + name + "' refused, '" + m.name + "' kept";
-            emitEvent("refuse " + message);
-        }
-    }
-    itemTooltip(itemPath("name"), "Letters, digits, '_', '.' or '-'. Return takes it.");
+    nameField(&m.name, false, e, "Letters, digits, '_', '.' or '-'. Return takes it.");
     fieldColor("colour", Field::ColorChannel, &m.color, e);
     fieldFloat("Ka ambient", Field::Ka, &m.Ka, e);
     fieldFloat("Kd diffuse", Field::Kd, &m.Kd, e);
@@ -192,6 +202,21 @@ static void itemFields(UiContext& c, ItemKind k, int i) {
 //-----------------------------------------------------------------------------
 // Lists
 //-----------------------------------------------------------------------------
+// Up and down the list: the CSG chain joins objects in list order.
+static void moveButtons(UiContext& c, int chosen, std::string* why) {
+    ImGui::BeginDisabled(chosen < 0);
+    for (int by : {-1, 1}) {
+        const char* name = by < 0 ? "up" : "down";
+        ImGui::SameLine();
+        if (ImGui::ArrowButton(name, by < 0 ? ImGuiDir_Up : ImGuiDir_Down))
+            c.editor.reorder(chosen, by, why);
+        markItem(itemPath(name));
+        itemTooltip(itemPath(name), std::string("Moves the selected object ") + name +
+                                        " the list: the CSG chain joins objects in list order.");
+    }
+    ImGui::EndDisabled();
+}
+
 static void listButtons(UiContext& c, ItemKind k) {
     Editor& e = c.editor;
     const Selection& sel = e.selection();
@@ -209,6 +234,7 @@ static void listButtons(UiContext& c, ItemKind k) {
     ImGui::BeginDisabled(itemCount(e.scene(), k) == 0);
     if (ImGui::Button("Clear")) e.clear(k);
     ImGui::EndDisabled();
+    if (k == ItemKind::Object) moveButtons(c, chosen, why);
 }
 
 static void itemList(UiContext& c, ItemKind k, const char* title) {

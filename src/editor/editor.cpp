@@ -186,6 +186,14 @@ bool Editor::remove(ItemKind k, int index, std::string* why) {
     });
 }
 
+bool Editor::reorder(int object, int by, std::string* why) {
+    int to = -1;
+    bool ok = tryEdit(*this, by < 0 ? "Move object up" : "Move object down",
+                      [&](Scene& s) { return (to = reorderObject(s, object, by, why)) >= 0; });
+    if (ok) select(ItemKind::Object, to);
+    return ok;
+}
+
 void Editor::clear(ItemKind k) {
     edit(std::string("Clear ") + itemKindName(k) + "s", [&](Scene& s) { clearItems(s, k); });
     selectionClamp(sel_, doc_.scene());

@@ -156,6 +156,17 @@ bool deleteItem(Scene& s, ItemKind k, int index, std::string* why) {
     return false;
 }
 
+int reorderObject(Scene& s, int index, int by, std::string* why) {
+    if (!inRange(s, ItemKind::Object, index, why)) return -1;
+    const int to = index + by;
+    if (to < 0 || to >= int(s.objects.size())) {
+        *why = "object " + std::to_string(index) + " is already " + (by < 0 ? "first" : "last");
+        return -1;
+    }
+    std::swap(s.objects[size_t(index)], s.objects[size_t(to)]);
+    return to;
+}
+
 void clearItems(Scene& s, ItemKind k) {
     switch (k) {
         case ItemKind::Object:

@@ -392,8 +392,33 @@ def case_select(app, scene):
     app.key('ctrl+z')
     app.wait('undo Delete object')
     check(is_red(app.screenshot().pixel(x, y)), 'undo did not bring the sphere back')
+    check_object_list(app, scene)
     app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
+
+
+def object_names(path):
+    """Each object record's name, or None, in file order."""
+    return [dict(f.partition(':')[::2] for f in line.split()[1:]).get('name')
+            for line in open(path) if line.startswith('object ')]
+
+
+def check_object_list(app, scene):
+    """The Objects list shows each object's name, type, op and state; Edit names the selected
+    object; the arrows move it down the list and back, an undo step each."""
+    app.widget('Objects/2 box, union, static', fresh=False)
+    select_first(app, scene)
+    app.type_into('Objects/name', 'ball')
+    app.wait('edit Edit object')
+    app.widget('Objects/0 ball: sphere, union, dynamic')
+    app.click_widget('Objects/down', fresh=False)
+    app.wait('edit Move object down')
+    check(app.save() == scene and object_names(scene) == [None, 'ball', None],
+          'the named sphere is not second: %s' % object_names(scene))
+    app.key('ctrl+z')
+    app.wait('undo Move object down')
+    check(app.save() == scene and object_names(scene) == ['ball', None, None],
+          'undo did not move it back: %s' % object_names(scene))
 
 
 def case_drag(app, scene):

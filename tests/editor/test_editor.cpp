@@ -285,6 +285,31 @@ TEST(Editor, AddAndDuplicateSelectTheNewItem) {
     EXPECT_EQ(e.document().history().undoLabel(), "Clear objects");
 }
 
+// The CSG chain follows the list: Move up and down change it as one undo step each, the
+// selection going with the object and its comment lines with it.
+TEST(Editor, MovingAnObjectUpAndDownIsUndoable) {
+    Editor e = openEditor(writeFile("order.txt",
+                                    "material r:1 g:0 b:0\n"
+                                    "object type:sphere pos:0,1,0\n"
+                                    "# the lid\n"
+                                    "object type:box pos:0,2,0 op:subtract\n"));
+    std::string why;
+    ASSERT_TRUE(e.reorder(1, -1, &why)) << why;
+    EXPECT_EQ(e.scene().objects[0].type, ShapeType::Box);
+    EXPECT_EQ(e.scene().objects[0].comment, "# the lid\n");
+    EXPECT_EQ(e.scene().objects[1].type, ShapeType::Sphere);
+    EXPECT_TRUE(e.selection().is(ItemKind::Object, 0));
+    EXPECT_EQ(e.document().history().undoLabel(), "Move object up");
+    EXPECT_FALSE(e.reorder(0, -1, &why));  // already first: refused, saying so
+    EXPECT_EQ(why, "object 0 is already first");
+    ASSERT_TRUE(e.undo());
+    EXPECT_EQ(e.scene().objects[0].type, ShapeType::Sphere);
+    ASSERT_TRUE(e.reorder(0, 1, &why)) << why;
+    EXPECT_EQ(e.scene().objects[1].type, ShapeType::Sphere);
+    EXPECT_FALSE(e.reorder(1, 1, &why));
+    EXPECT_EQ(why, "object 1 is already last");
+}
+
 static std::string readText(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});

@@ -59,6 +59,7 @@ public:
     bool add(ItemKind k, std::string* why, ShapeType shape = ShapeType::Sphere);
     bool duplicate(ItemKind k, int index, std::string* why);  // selects the copy
     bool remove(ItemKind k, int index, std::string* why);
+    bool reorder(int object, int by, std::string* why);  // reorderObject(); the selection follows
     void clear(ItemKind k);
     int kick();  // J: random velocities for the dynamic bodies; returns how many
 

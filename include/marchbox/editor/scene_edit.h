@@ -41,6 +41,10 @@ int duplicateItem(Scene& s, ItemKind k, int index, std::string* why);
 // objects remain.
 bool deleteItem(Scene& s, ItemKind k, int index, std::string* why);
 
+// Moves object `index` by `by` places in the list (−1: up, earlier in the CSG chain; +1: down),
+// its comment lines with it. Returns its new index, or -1 with *why past either end.
+int reorderObject(Scene& s, int index, int by, std::string* why);
+
 // Empties a list. Clearing materials leaves one default material when objects remain.
 void clearItems(Scene& s, ItemKind k);
 
