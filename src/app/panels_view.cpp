@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <imgui.h>
+#include <imgui_internal.h>  // the overlay's size as last drawn
 
 namespace mb {
 
@@ -123,7 +124,12 @@ static void helpWindow(UiContext& c) {
     if (!c.ui.showHelp) return;
     if (beginPanel(c, Panel::Controls, "Controls", &c.ui.showHelp) &&
         ImGui::BeginTable("controls", 2, ImGuiTableFlags_RowBg)) {
-        ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 120.0f);
+        // The keys column as wide as its widest entry ("Middle drag, Shift drag"): keys cut
+        // short read as other keys. The actions wrap beside it.
+        float keys = 0.0f;
+        for (const Control& k : editorControls())
+            keys = std::max(keys, ImGui::CalcTextSize(k.keys).x);
+        ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, keys);
         ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
         for (const Control& k : editorControls()) {
             ImGui::TableNextColumn();
@@ -139,9 +145,17 @@ static void helpWindow(UiContext& c) {
 
 static void statsOverlay(UiContext& c) {
     c.ui.statsBottom = 0.0f;  // the right column may go up to the menu bar
-    if (!c.ui.showStats) return;
-    const FrameStats& s = c.stats;
     ImGuiIO& io = ImGui::GetIO();
+    // As large as it was last drawn; where it would cover a panel, it gives way.
+    const ImGuiWindow* last = ImGui::FindWindowByName("##stats");
+    const ImVec2 size = last ? last->Size : ImVec2(0, 0);
+    const PanelFrame frame{io.DisplaySize.x, io.DisplaySize.y, ImGui::GetFrameHeight(), 0.0f};
+    const PanelRect place{io.DisplaySize.x - 10 - size.x, 30, size.x, size.y};
+    if (!c.ui.showStats || !statisticsFit(frame, c.ui.openPanels(), place)) {
+        markPanelHidden("##stats");
+        return;
+    }
+    const FrameStats& s = c.stats;
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 10, 30), ImGuiCond_Always, ImVec2(1, 0));
     ImGui::SetNextWindowBgAlpha(0.6f);
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration |
@@ -207,9 +221,12 @@ static void statusLine(UiContext& c) {
     ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y - 10), ImGuiCond_Always,
                             ImVec2(0.5f, 1));
+    // As wide as the text up to the window's width, wrapping past it; as tall as that makes it.
+    const float pad = 2.0f * ImGui::GetStyle().WindowPadding.x;
+    const float width = std::min(ImGui::CalcTextSize(text.c_str()).x + pad, display.x - 20.0f);
+    ImGui::SetNextWindowSize(ImVec2(width, 0.0f));
     ImGui::SetNextWindowBgAlpha(0.8f);
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration |
-                                   ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
     if (ImGui::Begin("##status", nullptr, flags)) messageLine(c, Place::Status);
     ImGui::End();

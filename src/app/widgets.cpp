@@ -188,7 +188,11 @@ void itemTooltip(const std::string& name, const std::string& text) {
 }
 
 void fieldErrorLine(const std::string& error) {
-    if (!error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", error.c_str());
+    if (error.empty()) return;
+    // Wrapped at the window's edge: a refusal names two values and ran off a panel.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::TextWrapped("%s", error.c_str());
+    ImGui::PopStyleColor();
 }
 
 std::string itemPath(const char* label) {
@@ -243,6 +247,10 @@ void markParts(const std::string& name, int n, float button) {
     for (int i = 0; i < n; ++i)
         markAt(name + "[" + std::to_string(i) + "]",
                ImVec2(lo.x + (float(i) + 0.5f) * part - spacing * 0.5f, (lo.y + hi.y) * 0.5f));
+}
+
+void markPanelHidden(const std::string& name) {
+    if (eventsOn()) markChange("panel " + name, "hidden panel " + name);
 }
 
 void markPanel() {

@@ -36,7 +36,8 @@ void fieldCombo(const char* label, int* v, const char* const names[], int count,
 // "tooltip NAME" when it shows.
 void itemTooltip(const std::string& name, const std::string& text);
 
-// The refusal of the last typed value, in red, while there is one.
+// The refusal of the last typed value, in red and wrapped at the window's edge, while there is
+// one.
 void fieldErrorLine(const std::string& error);
 
 // With the event log on, writes "widget NAME X Y" (the last item's centre in window pixels)
@@ -50,6 +51,9 @@ void markParts(const std::string& name, int n, float button);
 // With the event log on, writes "panel NAME X Y W H" (the window being drawn, in window pixels)
 // when it shows up, moves or changes size.
 void markPanel();
+
+// With the event log on, writes "hidden panel NAME" when a panel that showed gives way.
+void markPanelHidden(const std::string& name);
 
 // With the event log on, writes "typing NAME" when the last item (a text field) takes the
 // keyboard: from then on typed characters reach it.

@@ -25,7 +25,25 @@ void stack(std::array<PanelRect, kPanelCount>& out, unsigned open, Panel first, 
     }
 }
 
+bool overlap(const PanelRect& a, const PanelRect& b) {
+    return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height &&
+           b.y < a.y + a.height;
+}
+
 }  // namespace
+
+bool statisticsFit(PanelFrame frame, unsigned open, const PanelRect& stats) {
+    frame.rightTop = stats.y + stats.height;
+    const std::array<PanelRect, kPanelCount> rects = layoutPanels(frame, open);
+    for (int p = 0; p < kPanelCount; ++p) {
+        const PanelRect& r = rects[size_t(p)];
+        if (!(open & panelBit(Panel(p)))) continue;
+        // A column too crowded for its panels' least height runs past the bottom (by more than
+        // the shares' rounding).
+        if (overlap(r, stats) || r.y + r.height > frame.height - kPanelMargin + 0.5f) return false;
+    }
+    return true;
+}
 
 std::array<PanelRect, kPanelCount> layoutPanels(const PanelFrame& frame, unsigned open) {
     std::array<PanelRect, kPanelCount> out{};

@@ -51,12 +51,13 @@ class Editor:
     """One running marchbox and the person at its keyboard."""
     started = []  # every one, so that main() ends those a failed case left running
 
-    def __init__(self, binary, scene, workdir, **env_extra):
-        """scene: the file to open, or None for none."""
+    def __init__(self, binary, scene, workdir, size=None, **env_extra):
+        """scene: the file to open, or None for none; size: the window's, WINDOW unless given."""
+        size = size or WINDOW
         self.workdir = workdir
         # Its own config folder: the recent files list of the person running the tests stays out.
         env = dict(os.environ, MARCHBOX_EVENT_LOG='1', MARCHBOX_SCREENSHOT_DIR=workdir,
-                   MARCHBOX_WINDOW_SIZE='%dx%d' % WINDOW,
+                   MARCHBOX_WINDOW_SIZE='%dx%d' % size,
                    XDG_CONFIG_HOME=os.path.join(workdir, 'config'), **env_extra)
         self.log_path = os.path.join(workdir, 'events.log')
         self.err_path = os.path.join(workdir, 'stderr.log')
@@ -68,7 +69,7 @@ class Editor:
         self.wait('ready', timeout=90)
         self.wid = xdotool('search', '--sync', '--name', '^Marchbox').split()[0]
         xdotool('windowfocus', '--sync', self.wid)
-        self.move(WINDOW[0] // 2, WINDOW[1] - 20)
+        self.move(size[0] // 2, size[1] - 20)
 
     # [events] ---------------------------------------------------------------
     def events(self):
@@ -1091,8 +1092,11 @@ def case_slow_input(app, scene):
 
 # [panels] ---------------------------------------------------------------------
 def panel(app, name):
-    """The panel's rectangle as last drawn, (x0, y0, x1, y1), from its "panel" marks."""
+    """The panel's rectangle as last drawn, (x0, y0, x1, y1), from its "panel" marks; None when
+    it gave way since."""
     for line in reversed(app.events()):
+        if line == 'hidden panel ' + name:
+            return None
         if line.startswith('panel %s ' % name):
             x, y, w, h = map(int, line.split()[-4:])
             return x, y, x + w, y + h
@@ -1146,6 +1150,37 @@ def case_panels(app, scene):
             check(not overlap(rects[a], rects[b]), '%s %s overlaps %s %s' % (a, rects[a], b, rects[b]))
     app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
+    check_small_window(app.workdir, scene)
+
+
+def check_small_window(workdir, scene):
+    """At 400x300 a refusal wraps inside its panel, and with every panel open none covers
+    another or the statistics overlay, which gives way where it has no room."""
+    size = (400, 300)
+    app = Editor(MARCHBOX, scene, workdir, size=size)
+    app.click_widget('Objects/0 sphere, union, dynamic', fresh=False)
+    app.wait('select object 0')
+    img, objects = refuse_far_too_much(app, 'Objects/radius', size)
+    rows = [y for y in range(objects[1], min(objects[3], size[1]))
+            if any(is_error_red(img.pixel(x, y)) for x in range(objects[0], objects[2]))]
+    # One line of text is 13 pixels high; the message is four lines wide at this panel's width.
+    check(rows and rows[-1] - rows[0] > 26, 'the refusal is not wrapped: red rows %s' % rows[:3])
+    for title, item in (('Edit', 'Materials'), ('Edit', 'Lights'), ('View', 'Camera and render'),
+                        ('Simulation', 'Settings'), ('File', 'Render...'), ('Help', 'Controls')):
+        app.menu(title, item)
+    time.sleep(0.5)
+    names = ('Objects', 'Materials', 'Lights', 'View', 'Simulation', 'Render', 'Controls', '##stats')
+    rects = {n: r for n, r in ((n, panel(app, n)) for n in names) if r}
+    for n, r in rects.items():
+        check(r[0] >= 0 and r[1] >= 19 and r[2] <= size[0] and r[3] <= size[1],
+              'at 400x300 %s lies outside the window: %s' % (n, r))
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            check(a not in rects or b not in rects or not overlap(rects[a], rects[b]),
+                  'at 400x300 %s %s overlaps %s %s' % (a, rects.get(a), b, rects.get(b)))
+    app.screenshot()
+    app.key('ctrl+q')
+    check(app.finish() == 0, 'exit status not 0')
 
 
 # [messages] -------------------------------------------------------------------
@@ -1159,18 +1194,27 @@ def red_text(img, rect):
     return pixels_in(img, rect[0] + w, rect[1] + h, w, h, is_error_red)
 
 
+def refuse_far_too_much(app, field, size=None):
+    """Types 1e9 into `field`, scrolled into its panel, and waits for the refusal; returns a
+    screenshot taken with the mouse off the panels, and the panel's rectangle."""
+    size = size or WINDOW
+    name = field.split('/')[0]
+    scroll_into(app, field, panel(app, name))
+    app.type_into(field, '1e9', fresh=False)
+    app.wait('refuse %s ' % field.split('/')[1])
+    app.move(size[0] - 20, size[1] - 20)  # no tooltip over the panel
+    time.sleep(0.5)
+    return app.screenshot(), panel(app, name)
+
+
 def case_messages(app, scene):
     """A refusal shows in the panel that raised it and goes when the selection changes; a Save
     As failure shows in its dialog and goes with it, never in the Objects panel."""
     app.menu('Edit', 'Lights')
     app.click_widget('Lights/0 point')
     app.wait('select light 0')
-    scroll_into(app, 'Lights/intensity', panel(app, 'Lights'))
-    app.type_into('Lights/intensity', '1e9', fresh=False)
-    app.wait('refuse intensity ')
-    app.move(WINDOW[0] - 20, WINDOW[1] - 20)  # no tooltip over the panel
-    time.sleep(0.5)
-    check(red_text(app.screenshot(), panel(app, 'Lights')) > 20, 'the refusal is not in the Lights panel')
+    img, lights = refuse_far_too_much(app, 'Lights/intensity')
+    check(red_text(img, lights) > 20, 'the refusal is not in the Lights panel')
     select_first(app, scene)
     time.sleep(0.3)
     img = app.screenshot()

@@ -65,3 +65,17 @@ TEST(PanelLayout, APanelAloneTakesItsWholeColumnAndSharesItWhenAnotherOpens) {
     EXPECT_GT(both[size_t(Panel::Lights)].y, both[size_t(Panel::Objects)].y)
         << "in the menu's order";
 }
+
+// The overlay as ImGui draws it at its default font: 233x125 at the window's top right.
+static PanelRect statsIn(const PanelFrame& f) { return {f.width - 10 - 233, 30, 233, 125}; }
+
+TEST(PanelLayout, TheStatisticsGiveWayInASmallWindow) {
+    const unsigned all = (1u << kPanelCount) - 1;
+    for (const PanelFrame& f : kFrames)
+        EXPECT_TRUE(statisticsFit(f, all, statsIn(f))) << f.width << "x" << f.height;
+    // 400x300: over the Objects panel's column, and four panels would not fit below it.
+    const PanelFrame small{400, 300, 19, 0};
+    EXPECT_FALSE(statisticsFit(small, panelBit(Panel::Objects), statsIn(small)));
+    EXPECT_FALSE(statisticsFit(small, all & ~7u, statsIn(small)));  // the right column alone
+    EXPECT_TRUE(statisticsFit(small, 0, statsIn(small)));  // no panel open: room for it
+}

@@ -33,4 +33,9 @@ constexpr float kPanelMinHeight = 40.0f;  // a title bar and a line: kept even i
 // The place of each panel whose panelBit is set in `open`; the others' are left empty.
 std::array<PanelRect, kPanelCount> layoutPanels(const PanelFrame& frame, unsigned open);
 
+// Whether the statistics overlay at `stats` leaves the open panels room, with frame.rightTop at
+// its bottom: it covers none of them and each column's panels fit above the window's bottom
+// margin. In a small window it does not, and the overlay gives way (View > Statistics).
+bool statisticsFit(PanelFrame frame, unsigned open, const PanelRect& stats);
+
 }  // namespace mb
