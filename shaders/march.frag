@@ -13,7 +13,7 @@ out vec4 fragColor;
 // The colour where a ray stops, fogged by its distance; s, p and n feed the next bounce.
 vec3 surfaceColor(vec3 ro, vec3 rd, vec3 hit, out Surface s, out vec3 p, out vec3 n) {
     p = ro + rd * hit.x;
-    n = calcNormal(p);
+    n = hitNormal(p, hit.y);
     s = surfaceAt(p, int(hit.y));
     return applyFog(shade(s, p, n, rd), rd, hit.x);
 }
@@ -61,7 +61,7 @@ vec3 render(vec3 ro, vec3 rd, vec3 hit) {
 #else
     if (missed(hit.y)) return vec3(0.0);
     vec3 p = ro + rd * hit.x;
-    vec3 n = calcNormal(p);
+    vec3 n = hitNormal(p, hit.y);
 #if MODE == MODE_NORMALS
     return n * 0.5 + 0.5;
 #elif MODE == MODE_DEPTH

@@ -25,20 +25,30 @@ void clipSpan(inout vec2 span, float a, float b) {
     else if (b > 0.0) span.y = -1.0;
 }
 
-// The part of the ray, up to `far`, inside the box that holds every object's reach (uBoundLo,
-// uBoundHi), grown by grow·t at distance t: only there is anything but the ground. Empty
-// (x > y) when it misses. A soft shadow grows it by 1/k, past which k·d/t > 1 changes nothing.
-vec2 objectSpan(vec3 ro, vec3 rd, float far, float grow) {
+// The part of the ray, up to `far`, inside the box lo..hi grown by grow·t at distance t. Empty
+// (x > y) when it misses.
+vec2 grownBoxSpan(vec3 ro, vec3 rd, float far, float grow, vec3 lo, vec3 hi) {
     vec2 span = vec2(0.0, far);
     if (OBJECT_COUNT == 0) return vec2(1.0, 0.0);
     for (int i = 0; i < 3; ++i) {  // lo - grow·t <= ro + t·rd <= hi + grow·t
-        clipSpan(span, rd[i] + grow, uBoundLo[i] - ro[i]);
-        clipSpan(span, grow - rd[i], ro[i] - uBoundHi[i]);
+        clipSpan(span, rd[i] + grow, lo[i] - ro[i]);
+        clipSpan(span, grow - rd[i], ro[i] - hi[i]);
     }
     return span;
 }
 
-// Sphere tracing of the objects alone over the span; x: t, y: object or HIT_NONE, z: steps.
+// Within the box that holds every object's reach: only there is anything but the ground. A soft
+// shadow grows it by 1/k, past which k·d/t > 1 changes nothing.
+vec2 objectSpan(vec3 ro, vec3 rd, float far, float grow) {
+    return grownBoxSpan(ro, rd, far, grow, uBoundLo, uBoundHi);
+}
+
+// Within the box of the marched objects: all but the plain members, which are met exactly.
+vec2 restSpan(vec3 ro, vec3 rd, float far) {
+    return grownBoxSpan(ro, rd, far, 0.0, uRestLo, uRestHi);
+}
+
+// Sphere tracing of the marched objects (mapRestAlong) over the span; x: t, y: object or HIT_NONE, z: steps.
 // Past RELAX_PERCENT 100 it is over-relaxed (Keinert et al. 2014): steps of omega·d while
 // consecutive unbounding spheres overlap; where they do not, it steps back and traces plainly.
 // At 100 the relaxed branch is a constant false, so plain tracing compiles to steps of d alone.
@@ -50,7 +60,7 @@ vec3 marchObjects(vec3 ro, vec3 rd, vec2 span) {
 #if UBER
         if (i >= uSteps) break;
 #endif
-        h = mapObjectsAlong(ro + rd * t, rd);
+        h = mapRestAlong(ro + rd * t, rd);
         float radius = abs(h.x);
         if (RELAX_PERCENT > 100 && omega > 1.0 && radius + prevRadius < stepLength) {
             stepLength -= omega * stepLength;
@@ -68,11 +78,20 @@ vec3 marchObjects(vec3 ro, vec3 rd, vec2 span) {
     return vec3(t, t <= span.y ? h.y : HIT_NONE, float(i));
 }
 
-// x: distance along rd; y: object index, HIT_GROUND or HIT_NONE; z: steps taken. The ground is
-// met analytically, so no ray runs out of steps over open floor and shows sky at the horizon.
+// x: distance along rd; y: object index, HIT_GROUND or HIT_NONE; z: steps taken. The ground and
+// the plain members are met exactly, so no ray runs out of steps over open floor and shows sky at
+// the horizon; the march of the rest ends at the nearest of them.
 vec3 castRay(vec3 ro, vec3 rd) {
     float ground = groundHit(ro, rd);
-    vec3 hit = marchObjects(ro, rd, objectSpan(ro, rd, min(ground, uMaxDist), 0.0));
+    vec3 hit = vec3(min(ground, uMaxDist), HIT_NONE, 0.0);
+#if PLAIN
+    hit.xy = hitPlainMembers(ro, rd, hit.x, false);
+#endif
+#if HAS_REST
+    vec3 marched = marchObjects(ro, rd, restSpan(ro, rd, hit.x));
+    if (!missed(marched.y)) return marched;
+    hit.z = marched.z;
+#endif
     if (!missed(hit.y)) return hit;
     return ground <= uMaxDist ? vec3(ground, HIT_GROUND, hit.z) : vec3(uMaxDist, HIT_NONE, hit.z);
 }
@@ -89,16 +108,52 @@ vec3 calcNormal(vec3 p) {  // tetrahedron of four samples (Quilez)
     return len > 1e-20 ? n / len : vec3(0.0, 1.0, 0.0);  // flat field (deep inside): no NaN
 }
 
+// The normal of a plain member's surface, which is its own: from its SDF alone, in its frame.
+// On the grid only: a compiled scene's field reads registers and costs less than this read.
+#if PLAIN == 2
+// The object is read once: a block read indexed per pixel costs more than its SDF.
+vec3 objectNormal(int id, vec3 p) {
+    Object o = uObjects[id];
+    vec3 q = o.toLocal * (p - o.posBound.xyz);
+    float h = normalStep(p);
+    const vec2 k = vec2(1.0, -1.0);
+    vec3 n = k.xyy * sdShape(o, q + k.xyy * h) + k.yyx * sdShape(o, q + k.yyx * h) +
+             k.yxy * sdShape(o, q + k.yxy * h) + k.xxx * sdShape(o, q + k.xxx * h);
+    float len = length(n);
+    return len > 1e-20 ? (n * o.toLocal) / len : vec3(0.0, 1.0, 0.0);  // n·M is Mᵀ·n: to world
+}
+#endif
+
+// The normal where a ray stopped on object id. The ground's is up and a plain member's its own;
+// only a marched object's needs the scene's field, in a loop that llvmpipe leaves at once when
+// no pixel of a SIMD group needs it (an if would run for all of them). A missed ray (the sky's
+// lanes, run with the rest) needs none.
+vec3 hitNormal(vec3 p, float id) {
+    vec3 n = vec3(0.0, 1.0, 0.0);
+    bool exact = id == HIT_GROUND || missed(id);
+#if PLAIN == 2
+    int member = max(int(id), 0);
+    if (plainMember(int(id))) n = objectNormal(member, p), exact = true;
+#endif
+    for (bool field = !exact; field; field = false) n = calcNormal(p);
+    return n;
+}
+
 #if SHADOWS == 1 || UBER
 float hardShadow(vec3 ro, vec3 rd, float maxT) {
     if (groundHit(ro, rd) < maxT) return 0.0;  // a light under the floor
-    vec2 span = objectSpan(ro, rd, maxT, 0.0);
+#if PLAIN
+    if (!missed(hitPlainMembers(ro, rd, maxT, true).y)) return 0.0;
+#endif
+#if HAS_REST
+    vec2 span = restSpan(ro, rd, maxT);
     float t = span.x;
     for (int i = 0; i < SHADOW_STEPS && t <= span.y; ++i) {
-        float h = mapObjectsAlong(ro + rd * t, rd).x;
+        float h = mapRestAlong(ro + rd * t, rd).x;
         if (h < uEpsilon) return 0.0;
         t += h;
     }
+#endif
     return 1.0;
 }
 #endif

@@ -31,6 +31,14 @@ uniform vec3 uGridOrigin;
 uniform vec3 uGridCell;
 uniform ivec3 uGridDims;
 #endif
+#if PLAIN == 2
+uniform usamplerBuffer uPlainCells;  // the plain members' grid (intersect.glsl), as above
+uniform usamplerBuffer uPlainItems;
+uniform samplerBuffer uPlainShapes;  // three texels an object
+uniform vec3 uPlainOrigin;
+uniform vec3 uPlainCell;
+uniform ivec3 uPlainDims;
+#endif
 
 uniform vec3 uCamPos;
 uniform vec3 uCamRight;     // scaled by tan(fov/2)
@@ -43,6 +51,8 @@ uniform float uEpsilon;
 uniform float uPixelRadius;  // half a pixel's footprint per metre along a primary ray
 uniform float uMaxDist;
 uniform vec3 uBoundLo, uBoundHi;  // a box holding every object's reach (objectBounds)
+uniform vec3 uRestLo, uRestHi;    // the same for the marched objects: all but the plain members
+uniform vec3 uPlainLo, uPlainHi;  // and for the plain members (intersect.glsl)
 uniform float uFloor;
 uniform float uFog;
 uniform vec3 uSkyTint;      // the brightest light's colour, largest channel 1

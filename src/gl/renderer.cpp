@@ -6,6 +6,7 @@
 #include "marchbox/scene/camera.h"
 #include "marchbox/gl/gpu_scene.h"
 #include "marchbox/gl/offscreen_context.h"
+#include "marchbox/gl/plain_members.h"
 #include "marchbox/scene/object_grid.h"
 #include "marchbox/scene/sdf.h"
 
@@ -15,7 +16,14 @@
 namespace mb {
 
 enum BindingPoint : GLuint { kObjectsBinding = 0, kMaterialsBinding = 1, kLightsBinding = 2 };
-enum TextureUnit : GLuint { kGridCellsUnit = 0, kGridItemsUnit = 1 };
+// Unit 2 is the passes' (render_passes.cpp, checkerboard.cpp).
+enum TextureUnit : GLuint {
+    kGridCellsUnit = 0,
+    kGridItemsUnit = 1,
+    kPlainCellsUnit = 3,
+    kPlainItemsUnit = 4,
+    kPlainShapesUnit = 5
+};
 
 bool Renderer::init(std::string* error) {
     if (!quad_.init(error)) return false;
@@ -95,19 +103,32 @@ static void setCamera(const Program& p, const CameraBasis& b) {
     p.set("uCamUp", b.up);
 }
 
-void Renderer::uploadGrid(const SceneSdf& sdf) {
-    ObjectGrid grid = buildObjectGrid(sdf);
-    gridCells_.upload(grid.cellStart.data(), grid.cellStart.size());
-    gridItems_.upload(grid.items.data(), grid.items.size());
-    gridCells_.bind(kGridCellsUnit);
-    gridItems_.bind(kGridItemsUnit);
-    const Program& p = *current_;
-    p.set("uGridCells", int(kGridCellsUnit));
-    p.set("uGridItems", int(kGridItemsUnit));
-    p.set("uGridOrigin", grid.origin);
-    p.set("uGridCell", grid.cellSize);
-    if (GLint loc = p.uniform("uGridDims"); loc >= 0)
+// One of the shader's grids, its uniforms named `prefix` + Cells, Items, Origin, Cell, Dims. An
+// upload binds its texture to the active unit: rebind() puts every texture back afterwards.
+static void uploadGridTo(const Program& p, const ObjectGrid& grid, const std::string& prefix,
+                         TextureBuffer* cells, TextureBuffer* items, GLuint cellsUnit,
+                         GLuint itemsUnit) {
+    cells->upload(grid.cellStart.data(), grid.cellStart.size());
+    items->upload(grid.items.data(), grid.items.size());
+    p.set((prefix + "Cells").c_str(), int(cellsUnit));
+    p.set((prefix + "Items").c_str(), int(itemsUnit));
+    p.set((prefix + "Origin").c_str(), grid.origin);
+    p.set((prefix + "Cell").c_str(), grid.cellSize);
+    if (GLint loc = p.uniform((prefix + "Dims").c_str()); loc >= 0)
         glUniform3i(loc, grid.dims.x, grid.dims.y, grid.dims.z);
+}
+
+void Renderer::uploadGrid(const SceneSdf& sdf) {
+    uploadGridTo(*current_, buildObjectGrid(sdf), "uGrid", &gridCells_, &gridItems_, kGridCellsUnit,
+                 kGridItemsUnit);
+}
+
+void Renderer::uploadPlainGrid(const SceneSdf& sdf, const std::vector<bool>& plain) {
+    PlainGrid g = buildPlainGrid(sdf, plain);
+    uploadGridTo(*current_, g.grid, "uPlain", &plainCells_, &plainItems_, kPlainCellsUnit,
+                 kPlainItemsUnit);
+    plainShapes_.upload(g.shapes.data(), g.shapes.size());
+    current_->set("uPlainShapes", int(kPlainShapesUnit));
 }
 
 // The colour of the brightest light, scaled so its largest channel is 1: it tints the sky.
@@ -135,12 +156,21 @@ void Renderer::setUniforms(const Scene& scene, const GpuScene& g, const ShaderFe
     Box bounds = objectBounds(sdf);
     p.set("uBoundLo", bounds.lo);
     p.set("uBoundHi", bounds.hi);
+    std::vector<bool> plain(sdf.objects.size(), false);
+    if (f.plain) plain = plainMembers(scene);
+    Box rest = membersBounds(sdf, plain, false), members = membersBounds(sdf, plain, true);
+    p.set("uRestLo", rest.lo);
+    p.set("uRestHi", rest.hi);
+    p.set("uPlainLo", members.lo);
+    p.set("uPlainHi", members.hi);
+    if (f.plain == 2) uploadPlainGrid(sdf, plain);
     p.set("uFloor", scene.world.floor);
     p.set("uFog", scene.render.fog);
     p.set("uSkyTint", skyTint(scene));
     p.set("uSoftness", q.softness);
     bool useGrid = f.grid && usesGrid(scene, q);  // the uber shader has the grid code, maybe unused
     if (useGrid) uploadGrid(sdf);
+    rebind();
     if (!f.uber) return;
     p.set("uUseGrid", int(useGrid));
     p.set("uObjectCount", int(scene.objects.size()));
@@ -268,6 +298,9 @@ void Renderer::rebind() const {
     lights_.bindBase(kLightsBinding);
     gridCells_.bind(kGridCellsUnit);
     gridItems_.bind(kGridItemsUnit);
+    plainCells_.bind(kPlainCellsUnit);
+    plainItems_.bind(kPlainItemsUnit);
+    plainShapes_.bind(kPlainShapesUnit);
 }
 
 }  // namespace mb

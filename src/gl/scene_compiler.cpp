@@ -1,6 +1,10 @@
 // scene_compiler.cpp — the tables that turn a scene's layout into GLSL (see scene_compiler.h).
 #include "marchbox/gl/scene_compiler.h"
 
+#include "marchbox/gl/plain_members.h"
+
+#include <algorithm>
+#include <cstdint>
 #include <sstream>
 
 namespace mb {
@@ -16,6 +20,15 @@ const char* const kShapeCall[kShapeTypeCount] = {
     "sdCylinder($q, $o.shape.y, $o.shape.x)",   // height, radius
 };
 
+// Each type's exact hit (shaders/intersect.glsl): `$r` and `$d` are the ray in the object's frame.
+const char* const kHitCall[kShapeTypeCount] = {
+    "hitSphere($r, $d, $o.shape.x)",
+    "hitBox($r, $d, $o.sizeMinor.xyz)",
+    "hitTorus($r, $d, $o.shape.x, $o.sizeMinor.w)",
+    "hitCapsule($r, $d, $o.shape.y, $o.shape.x)",
+    "hitCylinder($r, $d, $o.shape.y, $o.shape.x)",
+};
+
 // Each operator's join onto the chain (shaders/sdf.glsl).
 const char* const kJoin[] = {"joinUnion", "joinSubtract", "joinIntersect"};
 
@@ -29,16 +42,62 @@ std::string shapeCall(ShapeType type, const std::string& record, const std::stri
     return replaceAll(replaceAll(kShapeCall[int(type)], "$o", record), "$q", point);
 }
 
+std::string comment(const ObjectLayout& o, int i) {
+    return "  // " + std::to_string(i) + ": " + shapeTypeName(o.type) +
+           (o.op != CsgOp::Union ? std::string(", ") + csgOpName(o.op) : "") +
+           (o.blended ? ", blended" : "") + (o.rotated ? ", turned" : "");
+}
+
+// A vector v of the world in object rec's frame, turned only where the object is.
+std::string inFrame(const ObjectLayout& o, const std::string& rec, const std::string& v) {
+    return o.rotated ? rec + ".toLocal * (" + v + ")" : v;
+}
+
 std::string objectLine(const ObjectLayout& o, int i) {
     std::string rec = "o" + std::to_string(i), id = std::to_string(i);
-    std::string rel = "p - " + rec + ".posBound.xyz";
-    std::string q = o.rotated ? rec + ".toLocal * (" + rel + ")" : rel;
+    std::string q = inFrame(o, rec, "p - " + rec + ".posBound.xyz");
     std::string k = o.blended ? rec + ".shape.z" : "0.0";
-    std::string comment = "  // " + id + ": " + shapeTypeName(o.type) +
-                          (o.op != CsgOp::Union ? std::string(", ") + csgOpName(o.op) : "") +
-                          (o.blended ? ", blended" : "") + (o.rotated ? ", turned" : "");
     return "    res = " + std::string(kJoin[int(o.op)]) + "(res, " + shapeCall(o.type, rec, q) +
-           ", " + k + ", " + id + ".0);" + comment + "\n";
+           ", " + k + ", " + id + ".0);" + comment(o, i) + "\n";
+}
+
+std::string hitLine(const ObjectLayout& o, int i) {
+    std::string rec = "o" + std::to_string(i);
+    std::string call = replaceAll(kHitCall[int(o.type)], "$o", rec);
+    call = replaceAll(call, "$r", inFrame(o, rec, "ro - " + rec + ".posBound.xyz"));
+    call = replaceAll(call, "$d", inFrame(o, rec, "rd"));
+    return "    best = nearerHit(best, " + call + ", " + std::to_string(i) + ".0);" +
+           comment(o, i) + "\n";
+}
+
+// One function of the chain over the objects `keep` selects.
+template <typename Keep>
+void writeChain(std::ostringstream& s, const char* name, const std::vector<ObjectLayout>& layout,
+                Keep keep) {
+    s << "vec2 " << name << "(vec3 p) {\n    vec2 res = vec2(1e10, HIT_NONE);\n";
+    for (size_t i = 0; i < layout.size(); ++i)
+        if (keep(layout[i])) s << objectLine(layout[i], int(i));
+    s << "    return res;\n}\n";
+}
+
+// The plain members' exact hits; anyHit (shadows) changes nothing here: the lines run straight
+// through, a loop would not end sooner on llvmpipe.
+void writePlainHits(std::ostringstream& s, const std::vector<ObjectLayout>& layout) {
+    uint64_t members = 0;
+    for (size_t i = 0; i < layout.size(); ++i) members |= uint64_t(layout[i].plain) << i;
+    s << "\n// Whether object id is a plain member.\nbool plainMember(int id) {\n"
+      << "    uint bits = id < 32 ? " << uint32_t(members) << "u : " << uint32_t(members >> 32)
+      << "u;\n    return id >= 0 && ((bits >> uint(id & 31)) & 1u) != 0u;\n}\n";
+    s << "\n// The plain members, met exactly: x the nearest hit before far, y its object. A loop, "
+         "not\n"
+         "// an if: llvmpipe leaves it at once when no ray of a SIMD group meets their box.\n"
+         "vec2 hitPlainMembers(vec3 ro, vec3 rd, float far, bool anyHit) {\n"
+         "    vec2 best = vec2(far, HIT_NONE);\n"
+         "    for (bool near = plainBoxMet(ro, rd, far); near; near = false) {\n";
+    for (size_t i = 0; i < layout.size(); ++i)
+        if (layout[i].plain) s << "    " << hitLine(layout[i], int(i));
+    s << "    }\n    return best;\n}\n\n// The marched objects: all but the plain members.\n";
+    writeChain(s, "mapRest", layout, [](const ObjectLayout& o) { return !o.plain; });
 }
 
 // Whether the shader turns the point into the object's frame. A body of any shape but the
@@ -53,8 +112,11 @@ bool turns(const Object& o) {
 std::vector<ObjectLayout> objectLayout(const Scene& scene) {
     std::vector<ObjectLayout> layout;
     layout.reserve(scene.objects.size());
-    for (const Object& o : scene.objects)
-        layout.push_back({o.type, o.op, turns(o), o.blend > 0.0f});
+    std::vector<bool> plain = plainMembers(scene);
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& o = scene.objects[i];
+        layout.push_back({o.type, o.op, turns(o), o.blend > 0.0f, plain[i]});
+    }
     return layout;
 }
 
@@ -68,22 +130,23 @@ std::string compileSceneMap(const std::vector<ObjectLayout>& layout) {
     }
     s << "\nvoid loadObjects() {\n";
     for (size_t i = 0; i < layout.size(); ++i) s << "    o" << i << " = uObjects[" << i << "];\n";
-    s << "}\n\n// x: distance; y: index of the surface's object, HIT_NONE for nothing.\n"
-         "vec2 mapObjects(vec3 p) {\n    vec2 res = vec2(1e10, HIT_NONE);\n";
-    for (size_t i = 0; i < layout.size(); ++i) s << objectLine(layout[i], int(i));
-    s << "    return res;\n}\n";
+    s << "}\n\n// x: distance; y: index of the surface's object, HIT_NONE for nothing.\n";
+    writeChain(s, "mapObjects", layout, [](const ObjectLayout&) { return true; });
+    if (std::any_of(layout.begin(), layout.end(), [](const ObjectLayout& o) { return o.plain; }))
+        writePlainHits(s, layout);
     return s.str();
 }
 
 std::string compileShapeSwitch(unsigned shapes) {
     std::ostringstream s;
-    s << "// Object i's own distance at q, a point in its frame.\n"
-         "float sdObjectLocal(int i, vec3 q) {\n    int type = uObjects[i].info.x;\n";
+    s << "// Object o's own distance at q, a point in its frame.\n"
+         "float sdShape(Object o, vec3 q) {\n    int type = o.info.x;\n";
     for (int t = 0; t < kShapeTypeCount; ++t)
         if (shapes >> t & 1u)
-            s << "    if (type == " << t << ") return "
-              << shapeCall(ShapeType(t), "uObjects[i]", "q") << ";\n";
-    s << "    return 1e10;\n}\n";
+            s << "    if (type == " << t << ") return " << shapeCall(ShapeType(t), "o", "q")
+              << ";\n";
+    s << "    return 1e10;\n}\n\n"
+         "float sdObjectLocal(int i, vec3 q) { return sdShape(uObjects[i], q); }\n";
     return s.str();
 }
 

@@ -4,6 +4,7 @@
 
 #include "marchbox/gl/glsl_conditionals.h"
 #include "marchbox/gl/gpu_scene.h"
+#include "marchbox/gl/plain_members.h"
 #include "marchbox/gl/shader.h"
 
 #include "marchbox/scene/sdf.h"
@@ -87,6 +88,17 @@ bool usesGrid(const Scene& s, const RenderQuality& q) {
     return q.grid < 0 ? n > kGridMinObjects : q.grid == 1 && n > 0;
 }
 
+// Plain members are met exactly where the chain is compiled (a line each) or walks the grid;
+// the object loop, kept for measuring, marches everything.
+static void choosePlain(ShaderFeatures* f, const Scene& s) {
+    if (!f->compiled && !f->grid) return;
+    std::vector<bool> plain = plainMembers(s);
+    long members = std::count(plain.begin(), plain.end(), true);
+    if (members == 0) return;
+    f->plain = f->compiled ? 1 : 2;
+    f->rest = members < long(plain.size());
+}
+
 ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int maxUniformBlockBytes,
                               const RenderQuality& quality) {
     int blockBytes = maxUniformBlockBytes > 0 ? maxUniformBlockBytes : 16384;
@@ -109,6 +121,7 @@ ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int ma
     f.grid = usesGrid(s, quality);
     f.compiled = !f.grid && f.objects <= kGridMinObjects;
     if (f.compiled) f.layout = objectLayout(s);
+    choosePlain(&f, s);
     f.materials = int(s.materials.size());
     for (const Light& l : s.lights) (l.directional ? f.dirLights : f.pointLights)++;
     f.ground = s.world.ground;
@@ -191,6 +204,8 @@ static std::vector<std::pair<std::string, long>> featureDefines(const ShaderFeat
                        {"HAS_AO", f.ao},
                        {"USE_GRID", f.grid},
                        {"COMPILED", f.compiled},
+                       {"PLAIN", f.plain},
+                       {"HAS_REST", f.rest},
                        {"RELAX_PERCENT", f.relaxPercent},
                        {"CONE_EPSILON", f.coneEpsilon},
                        {"SHADOW_STEPS", f.shadowSteps},

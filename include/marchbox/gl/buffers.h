@@ -55,7 +55,8 @@ public:
     void bindBase(GLuint point) const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, point, id()); }
 };
 
-// A buffer read by shaders as a usamplerBuffer of 32-bit unsigned integers.
+// A buffer read by shaders as a usamplerBuffer of 32-bit unsigned integers, or as a
+// samplerBuffer of RGBA floats.
 class TextureBuffer {
 public:
     TextureBuffer() = default;
@@ -74,11 +75,11 @@ public:
 
     void upload(const uint32_t* data, size_t count) {
         uint32_t none = 0;  // a zero-sized buffer texture is not complete
-        buffer_.upload(count ? data : &none, (count ? count : 1) * sizeof(uint32_t),
-                       GL_DYNAMIC_DRAW);
-        if (!texture_) glGenTextures(1, &texture_);
-        glBindTexture(GL_TEXTURE_BUFFER, texture_);
-        glTexBuffer(GL_TEXTURE_BUFFER, GL_R32UI, buffer_.id());
+        store(count ? data : &none, (count ? count : 1) * sizeof(uint32_t), GL_R32UI);
+    }
+    void upload(const float* data, size_t count) {  // count: a multiple of 4
+        float none[4] = {};
+        store(count ? data : none, (count ? count : 4) * sizeof(float), GL_RGBA32F);
     }
     void bind(GLuint unit) const {
         glActiveTexture(GL_TEXTURE0 + unit);
@@ -86,6 +87,13 @@ public:
     }
 
 private:
+    void store(const void* data, size_t bytes, GLenum format) {
+        buffer_.upload(data, bytes, GL_DYNAMIC_DRAW);
+        if (!texture_) glGenTextures(1, &texture_);
+        glBindTexture(GL_TEXTURE_BUFFER, texture_);
+        glTexBuffer(GL_TEXTURE_BUFFER, format, buffer_.id());
+    }
+
     Buffer<GL_TEXTURE_BUFFER> buffer_;
     GLuint texture_ = 0;
 };

@@ -136,6 +136,7 @@ private:
     void setUniforms(const Scene& scene, const GpuScene& g, const ShaderFeatures& f,
                      const RenderQuality& q);
     void uploadGrid(const SceneSdf& sdf);
+    void uploadPlainGrid(const SceneSdf& sdf, const std::vector<bool>& plain);
     const Program* postProgram(PostMode mode, std::string* error);
     ColorTarget& marchTarget() { return frameCheckerboard_ ? packed_ : accum_; }
     void marchViewport(int x, int y, int w, int h);  // and the scissor, for the region in pixels
@@ -156,6 +157,7 @@ private:
     StorageBuffer objectStore_;
     bool objectsInStorage_ = false;  // which of the two holds the objects (rebind)
     TextureBuffer gridCells_, gridItems_;
+    TextureBuffer plainCells_, plainItems_, plainShapes_;  // the plain members' grid
     int maxUniformBlock_ = 16384;
     float tanHalfFov_ = 0.0f;
     int samples_ = 1;  // supersamples per axis

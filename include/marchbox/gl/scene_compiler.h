@@ -22,16 +22,20 @@ struct ObjectLayout {
     CsgOp op = CsgOp::Union;
     bool rotated = false;  // rot is not (0,0,0): the point is turned into the object's frame
     bool blended = false;  // blend > 0: the smooth operator
+    bool plain = false;    // met by exact intersection, not marched (gl/plain_members.h)
 
     bool operator==(const ObjectLayout&) const = default;
 };
 
 std::vector<ObjectLayout> objectLayout(const Scene& scene);
 
-// loadObjects() and mapObjects(p) for a compiled scene.
+// loadObjects() and mapObjects(p) for a compiled scene; with plain members also mapRest(p), the
+// chain of the others, and hitPlainMembers(ro, rd, far, anyHit), a line of exact intersection
+// each (shaders/intersect.glsl).
 std::string compileSceneMap(const std::vector<ObjectLayout>& layout);
 
-// sdObjectLocal(i, q) for the loop and the outline: one case per type whose bit is set in
+// sdShape(o, q) and sdObjectLocal(i, q) for the loop, the outline and a plain member's normal: one
+// case per type whose bit is set in
 // `shapes`.
 std::string compileShapeSwitch(unsigned shapes);
 

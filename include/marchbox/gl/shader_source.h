@@ -63,6 +63,10 @@ struct ShaderFeatures {
     bool outline = false;              // the editor's selection ring, shaded views only
     bool compiled = false;             // the chain is straight-line code, per `layout`
     std::vector<ObjectLayout> layout;  // empty unless compiled
+    // Plain members (gl/plain_members.h) met exactly: 0 none, everything marched; 1 a line each
+    // (compiled); 2 through their own grid. `rest`: some objects are still marched.
+    int plain = 0;
+    bool rest = true;
 
     bool operator==(const ShaderFeatures&) const = default;  // every field: no stale program
 };

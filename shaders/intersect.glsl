@@ -1,0 +1,249 @@
+// intersect.glsl — exact ray intersection with the scene's plain members: convex shapes joined
+// by a sharp union that no other object's subtract, intersect or blend reaches, so the scene's
+// surface there is the shape's own (src/gl/scene_compiler.cpp decides which they are).
+//
+// Each shape's span is the part of the ray inside the solid, (entry, exit), in the shape's frame
+// with rd of unit length; kNoSpan when the ray misses. A hit is the entry, or 0 from inside: a
+// march counts a start inside a surface as a hit at once, too.
+
+const vec2 kNoSpan = vec2(1e30, -1e30);
+
+// 1 / v with no infinity: a zero component becomes a huge one of either sign.
+vec3 safeInverse(vec3 v) {
+    return 1.0 / (vec3(v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0, v.z >= 0.0 ? 1.0 : -1.0) *
+                  max(abs(v), vec3(1e-20)));
+}
+
+// Where ro + t·rd is inside the box |p| <= b, by its three slabs.
+vec2 boxSpan(vec3 ro, vec3 inv, vec3 b) {
+    vec3 near = (-b - ro) * inv, far = (b - ro) * inv;
+    vec3 lo = min(near, far), hi = max(near, far);
+    return vec2(max(lo.x, max(lo.y, lo.z)), min(hi.x, min(hi.y, hi.z)));
+}
+
+// A ball of radius r at c. The square distance of its closest approach, from the projected
+// point rather than b² - c, keeps its precision far from the ball.
+vec2 ballSpan(vec3 ro, vec3 rd, vec3 c, float r) {
+    vec3 oc = ro - c;
+    float b = dot(oc, rd);
+    vec3 q = oc - b * rd;
+    float h = r * r - dot(q, q);
+    if (h < 0.0) return kNoSpan;
+    h = sqrt(h);
+    return vec2(-b - h, -b + h);
+}
+
+// The infinite cylinder x² + z² <= r², cut to |y| <= halfHeight: a capped cylinder.
+vec2 cylinderSpan(vec3 ro, vec3 rd, float r, float halfHeight) {
+    float a = dot(rd.xz, rd.xz), b = dot(ro.xz, rd.xz), c = dot(ro.xz, ro.xz) - r * r;
+    vec2 side = vec2(-1e30, 1e30);  // a ray along the axis is inside all along or never
+    if (a > 1e-12) {
+        float h = b * b - a * c;
+        side = h < 0.0 ? kNoSpan : (vec2(-b, -b) + vec2(-1.0, 1.0) * sqrt(h)) / a;
+    } else if (c > 0.0) {
+        side = kNoSpan;
+    }
+    float inv = 1.0 / (abs(rd.y) > 1e-20 ? rd.y : 1e-20);
+    vec2 caps = vec2((-halfHeight - ro.y) * inv, (halfHeight - ro.y) * inv);
+    return vec2(max(side.x, min(caps.x, caps.y)), min(side.y, max(caps.x, caps.y)));
+}
+
+// A convex solid's span gives its hit: the entry, 0 from inside, -1 for a miss.
+float spanHit(vec2 s) { return s.x > s.y || s.y < 0.0 ? -1.0 : max(s.x, 0.0); }
+
+// The spans of two convex pieces of one convex solid join into one.
+vec2 joinSpans(vec2 a, vec2 b) {
+    if (a.x > a.y) return b;
+    if (b.x > b.y) return a;
+    return vec2(min(a.x, b.x), max(a.y, b.y));
+}
+
+#if HAS_SPHERE
+// ballSpan at the origin, with selects for its branch: the commonest test, kept lean.
+float hitSphere(vec3 ro, vec3 rd, float r) {
+    float b = dot(ro, rd);
+    vec3 q = ro - b * rd;
+    float h = r * r - dot(q, q), s = sqrt(max(h, 0.0));
+    return h < 0.0 || s - b < 0.0 ? -1.0 : max(-b - s, 0.0);
+}
+#endif
+
+#if HAS_BOX
+float hitBox(vec3 ro, vec3 rd, vec3 b) { return spanHit(boxSpan(ro, safeInverse(rd), b)); }
+#endif
+
+#if HAS_CYLINDER
+float hitCylinder(vec3 ro, vec3 rd, float height, float r) {
+    return spanHit(cylinderSpan(ro, rd, r, 0.5 * height));
+}
+#endif
+
+#if HAS_CAPSULE
+// The capsule is the union of its cylinder and the two balls at its ends.
+float hitCapsule(vec3 ro, vec3 rd, float height, float r) {
+    float h = 0.5 * height;
+    vec2 s = joinSpans(cylinderSpan(ro, rd, r, h), ballSpan(ro, rd, vec3(0.0, h, 0.0), r));
+    return spanHit(joinSpans(s, ballSpan(ro, rd, vec3(0.0, -h, 0.0), r)));
+}
+#endif
+
+#if HAS_TORUS
+// The largest real root of x³ + a·x² + b·x + c, from the depressed cubic u³ + P·u + Q.
+float largestCubicRoot(float a, float b, float c) {
+    float P = b - a * a / 3.0, Q = 2.0 * a * a * a / 27.0 - a * b / 3.0 + c;
+    float D = 0.25 * Q * Q + P * P * P / 27.0, u;
+    if (D > 0.0) {  // one real root (Cardano)
+        float s = sqrt(D), A = -0.5 * Q + s, B = -0.5 * Q - s;
+        u = sign(A) * pow(abs(A), 1.0 / 3.0) + sign(B) * pow(abs(B), 1.0 / 3.0);
+    } else {  // three real roots: the largest of the trigonometric ones
+        float m = sqrt(max(-P / 3.0, 0.0));
+        float cosine = m > 0.0 ? clamp(-0.5 * Q / (m * m * m), -1.0, 1.0) : 0.0;
+        u = 2.0 * m * cos(acos(cosine) / 3.0);
+    }
+    float x = u - a / 3.0;
+    float f = ((x + a) * x + b) * x + c, df = (3.0 * x + 2.0 * a) * x + b;
+    return abs(df) > 1e-20 ? x - f / df : x;  // one Newton step against rounding
+}
+
+// The least t = y − shift >= 0 over the roots y of y² + p·y + q, into best.
+void leastQuadraticRoot(float p, float q, float shift, inout float best) {
+    float h = 0.25 * p * p - q;
+    if (h < 0.0) return;
+    h = sqrt(h);
+    float lo = -0.5 * p - h - shift, hi = -0.5 * p + h - shift;
+    best = min(best, lo >= 0.0 ? lo : hi >= 0.0 ? hi : best);
+}
+
+// The ring of radius R in the x-z plane, tube radius r. |p|² + R² − r² squared equals 4R²(x² + z²)
+// on the surface; with p = ro + t·rd that is a quartic in t. It is solved from the bounding
+// sphere's entry with lengths over R + r, where its coefficients are of order one (Ferrari's
+// method through the resolvent cubic), and its root polished by Newton on the scaled quartic.
+float hitTorus(vec3 ro, vec3 rd, float R, float r) {
+    if (sdTorus(ro, R, r) < 0.0) return 0.0;
+    float scale = R + r, start = spanHit(ballSpan(ro, rd, vec3(0.0), scale));
+    if (start < 0.0) return -1.0;
+    vec3 o = (ro + start * rd) / scale;
+    float R2 = (R / scale) * (R / scale), r2 = (r / scale) * (r / scale);
+    float n = dot(o, rd), k = dot(o, o) + R2 - r2;
+    // t⁴ + 4n·t³ + c2·t² + c1·t + c0
+    float c2 = 4.0 * n * n + 2.0 * k - 4.0 * R2 * dot(rd.xz, rd.xz);
+    float c1 = 4.0 * n * k - 8.0 * R2 * dot(o.xz, rd.xz);
+    float c0 = k * k - 4.0 * R2 * dot(o.xz, o.xz);
+    // t = y − n gives y⁴ + p·y² + q·y + s.
+    float p = c2 - 6.0 * n * n, q = c1 - 2.0 * c2 * n + 8.0 * n * n * n;
+    float s = c0 - c1 * n + c2 * n * n - 3.0 * n * n * n * n;
+    float best = 1e30;
+    // (y² + p/2 + m)² = 2m(y − q/4m)² for the resolvent's root m > 0.
+    float m = largestCubicRoot(p, 0.25 * p * p - s, -0.125 * q * q);
+    if (m > 1e-7) {
+        float w = sqrt(2.0 * m), e = q / (2.0 * w);
+        leastQuadraticRoot(-w, 0.5 * p + m + e, n, best);
+        leastQuadraticRoot(w, 0.5 * p + m - e, n, best);
+    } else {  // q ≈ 0: a quadratic in y²
+        float h = 0.25 * p * p - s;
+        if (h >= 0.0)
+            for (int i = 0; i < 2; ++i) {
+                float y2 = -0.5 * p + (i == 0 ? -1.0 : 1.0) * sqrt(h);
+                if (y2 >= 0.0) {
+                    float y = sqrt(y2);
+                    best = min(best, -y - n >= 0.0 ? -y - n : y - n >= 0.0 ? y - n : best);
+                }
+            }
+    }
+    if (best >= 1e30) return -1.0;
+    for (int i = 0; i < 2; ++i) {  // Newton on the quartic in t
+        float t = best;
+        float f = (((t + 4.0 * n) * t + c2) * t + c1) * t + c0;
+        float df = ((4.0 * t + 12.0 * n) * t + 2.0 * c2) * t + c1;
+        best = abs(df) > 1e-12 ? max(t - f / df, 0.0) : t;
+    }
+    return start + best * scale;
+}
+#endif
+
+#if PLAIN
+// Whether the ray meets the plain members' box before far.
+bool plainBoxMet(vec3 ro, vec3 rd, float far) {
+    vec3 c = 0.5 * (uPlainLo + uPlainHi);
+    vec2 s = boxSpan(ro - c, safeInverse(rd), 0.5 * (uPlainHi - uPlainLo));
+    return s.x <= s.y && s.y >= 0.0 && s.x <= far;
+}
+#endif
+
+// The nearer of a hit so far (x: t, y: object) and object id's hit t (< 0: a miss).
+vec2 nearerHit(vec2 best, float t, float id) { return t >= 0.0 && t < best.x ? vec2(t, id) : best; }
+
+#if PLAIN == 2
+// The plain members' own grid (src/scene/object_grid.cpp over them alone): each cell lists the
+// members whose bounding spheres touch it, and uPlainShapes holds each object's shape in three
+// texels: (centre, radius or major radius), (half-extents, or height and tube radius; type),
+// and the quaternion that turns world into the object's frame.
+vec3 turnedByQuat(vec4 q, vec3 v) {
+    vec3 u = cross(q.xyz, v) * 2.0;
+    return v + q.w * u + cross(q.xyz, u);
+}
+
+bool plainMember(int id) { return id >= 0 && texelFetch(uPlainShapes, 3 * id + 1).w >= 0.0; }
+
+float hitPlainMember(int id, vec3 ro, vec3 rd) {
+    vec4 a = texelFetch(uPlainShapes, 3 * id);
+    vec3 o = ro - a.xyz;
+#if HAS_SPHERE && (HAS_BOX + HAS_TORUS + HAS_CAPSULE + HAS_CYLINDER == 0)
+    return hitSphere(o, rd, a.w);  // spheres alone: one texel, nothing to turn
+#else
+    vec4 b = texelFetch(uPlainShapes, 3 * id + 1);
+    int type = int(b.w);
+#if HAS_SPHERE
+    if (type == 0) return hitSphere(o, rd, a.w);
+#endif
+    vec4 q = texelFetch(uPlainShapes, 3 * id + 2);
+    vec3 lo = turnedByQuat(q, o), ld = turnedByQuat(q, rd);
+#if HAS_BOX
+    if (type == 1) return hitBox(lo, ld, b.xyz);
+#endif
+#if HAS_TORUS
+    if (type == 2) return hitTorus(lo, ld, a.w, b.y);
+#endif
+#if HAS_CAPSULE
+    if (type == 3) return hitCapsule(lo, ld, b.x, a.w);
+#endif
+#if HAS_CYLINDER
+    if (type == 4) return hitCylinder(lo, ld, b.x, a.w);
+#endif
+    return -1.0;
+#endif
+}
+
+// Nearest plain hit before `far` (x: t, y: object; (far, HIT_NONE) if none), walking the grid's
+// cells in the ray's order (Amanatides & Woo 1987). A hit beyond its cell's exit may yet be beaten
+// in a later cell, so the walk ends only at a cell holding a hit. `anyHit` (shadows) ends it at
+// the first hit at all.
+vec2 hitPlainMembers(vec3 ro, vec3 rd, float far, bool anyHit) {
+    vec2 best = vec2(far, HIT_NONE);
+    vec3 inv = safeInverse(rd), size = vec3(uPlainDims) * uPlainCell;
+    vec2 span = boxSpan(ro - uPlainOrigin - 0.5 * size, inv, 0.5 * size);
+    span = vec2(max(span.x, 0.0), min(span.y, far));
+    if (span.x > span.y) return best;
+    vec3 enter = ro + rd * span.x - uPlainOrigin;
+    ivec3 cell = clamp(ivec3(floor(enter / uPlainCell)), ivec3(0), uPlainDims - 1);
+    ivec3 stepDir = ivec3(rd.x >= 0.0 ? 1 : -1, rd.y >= 0.0 ? 1 : -1, rd.z >= 0.0 ? 1 : -1);
+    vec3 tDelta = abs(uPlainCell * inv);
+    vec3 tNext = (uPlainOrigin + (vec3(cell) + step(0.0, rd)) * uPlainCell - ro) * inv;
+    for (int i = 0; i < uPlainDims.x + uPlainDims.y + uPlainDims.z; ++i) {
+        int c = (cell.z * uPlainDims.y + cell.y) * uPlainDims.x + cell.x;
+        int first = int(texelFetch(uPlainCells, c).r), last = int(texelFetch(uPlainCells, c + 1).r);
+        for (int k = first; k < last; ++k) {
+            int id = int(texelFetch(uPlainItems, k).r);
+            best = nearerHit(best, hitPlainMember(id, ro, rd), float(id));
+        }
+        float exit = min(tNext.x, min(tNext.y, tNext.z));
+        if (best.x <= exit || exit >= span.y || (anyHit && !missed(best.y))) break;
+        // Every axis whose boundary comes first steps: at a corner, two at once.
+        ivec3 move = ivec3(lessThanEqual(tNext, vec3(exit)));
+        cell += move * stepDir;
+        tNext += vec3(move) * tDelta;
+        if (any(lessThan(cell, ivec3(0))) || any(greaterThanEqual(cell, uPlainDims))) break;
+    }
+    return best;
+}
+#endif
