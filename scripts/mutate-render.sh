@@ -18,7 +18,8 @@
 # a mirror that does not build, or tests that fail with no mutation at all. Golden failures leave
 # their .actual.png and .diff.png in BUILD_DIR/test-output/, as they always do.
 #
-# Measured on the 2-core machine (llvmpipe): 36 of 36 caught in 6 minutes; a caught
+# Measured on the 2-core machine (llvmpipe): 36 of 36 caught in 6 minutes before the six
+# intersect.glsl rows were added (each caught in about a second by hand); a caught
 # mutation costs 1-50 s, a survivor a whole run (about 40 s), the mirror's first build about
 # 1.5 minutes more with a warm ccache. Too slow for every CI run: run it after changing shaders/,
 # src/scene/sdf.cpp or the render tests. JOBS=N sets the mirror build's parallelism (default 2).
@@ -57,6 +58,12 @@ shaders/lighting.glsl | phong(s, p, n, rd, L.vec.xyz,                     | phon
 shaders/lighting.glsl | rd, toLight / max(dist, 1e-6),                    | rd, toLight,                                      | point-light direction not normalised
 shaders/raymarch.glsl | return uEpsilon;                                  | return 20.0 * uEpsilon;                           | hit epsilon 20x: surfaces swell
 shaders/march.frag    | / uResolution.y;                                  | / uResolution.x;                                  | camera rays squashed: wrong aspect
+shaders/intersect.glsl | max(-b - s, 0.0)                                 | max(-b + s, 0.0)                                  | ray-sphere takes the far root: spheres hollow
+shaders/intersect.glsl | vec3 near = (-b - ro) * inv                      | vec3 near = (b - ro) * inv                        | ray-box slab of the wrong sign: boxes flat
+shaders/intersect.glsl | vec2(-1.0, 1.0) * sqrt(h)) / a                   | vec2(1.0, -1.0) * sqrt(h)) / a                    | ray-cylinder side roots swapped
+shaders/intersect.glsl | ballSpan(ro, rd, vec3(0.0, -h, 0.0), r)          | ballSpan(ro, rd, vec3(0.0, h, 0.0), r)            | capsule loses its lower cap
+shaders/intersect.glsl | 0.5 * p + m + e, n, best);                       | 0.5 * p + m - e, n, best);                        | torus quartic factored with a wrong sign
+shaders/intersect.glsl | cell += move * stepDir;                          | cell += 2 * move * stepDir;                       | plain-member grid walk misses every other cell
 shaders/outline.glsl  | kOutlinePixels = 2.0;                             | kOutlinePixels = 0.5;                             | editor's selection outline a quarter as wide
 shaders/outline.glsl  | ? kOutlineColor : col;                            | ? col : col;                                      | editor's selection outline gone
 shaders/post.frag     | lB < lMin || lB > lMax ? a : b                    | lB < lMin || lB > lMax ? b : a                    | FXAA keeps the wrong blend
