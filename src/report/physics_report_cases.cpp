@@ -126,7 +126,7 @@ double rampError(const PhysicsSettings& s, float degrees, float mu, float rollin
 }  // namespace
 
 std::vector<AnalyticCase> analyticCases() {
-    return {
+    std::vector<AnalyticCase> cases = {
         {"Free fall", "|y − exact| after 2 s, m", 2.0, freeFallError},
         {"Bounce", "|third apex − e⁶·h|, m (h = 1 m, e = 0.8)", 3.0, bounceError},
         {"Head-on collision", "max |v − exact| after impact, m/s (e = 0.5, 1:3)", 1.0, headOnError},
@@ -143,6 +143,8 @@ std::vector<AnalyticCase> analyticCases() {
          1.0, [](const PhysicsSettings& s) { return rampError(s, 30.0f, 0.5f, 0.1f, true); }},
         {"Ramp slide", "|a/(g·(sin θ − μ·cos θ)) − 1| from the distance in 1 s (30°, μ = 0.1)", 1.0,
          [](const PhysicsSettings& s) { return rampError(s, 30.0f, 0.1f, 0.02f, false); }}};
+    for (AnalyticCase& c : rigidAnalyticCases()) cases.push_back(std::move(c));
+    return cases;
 }
 
 std::vector<Variant> reportVariants() {

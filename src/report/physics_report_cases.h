@@ -16,7 +16,8 @@ struct AnalyticCase {
     double seconds;                                     // simulated time of one run
     std::function<double(const PhysicsSettings&)> run;  // one run: returns the error
 };
-std::vector<AnalyticCase> analyticCases();
+std::vector<AnalyticCase> analyticCases();       // spheres, then rigidAnalyticCases()
+std::vector<AnalyticCase> rigidAnalyticCases();  // bodies that turn
 
 struct Variant {
     std::string series;  // the sweep it belongs to: one plot line

@@ -22,13 +22,15 @@ using Judge = std::function<bool(const PhysicsWorld&, const Track&)>;
 
 double totalEnergy(const PhysicsWorld& w) { return w.kineticEnergy() + w.potentialEnergy(); }
 
+bool finite(const glm::dvec3& pos, const glm::dvec3& vel, const glm::dvec3& spin) {
+    return std::isfinite(glm::dot(pos, pos) + glm::dot(vel, vel) + glm::dot(spin, spin));
+}
+
 bool finite(const PhysicsWorld& w) {
-    for (int i = 0; i < w.bodyCount(); ++i) {
-        const PhysicsBody& b = w.body(i);
-        if (!std::isfinite(glm::dot(b.pos, b.pos) + glm::dot(b.vel, b.vel) +
-                           glm::dot(b.spin, b.spin)))
-            return false;
-    }
+    for (int i = 0; i < w.bodyCount(); ++i)
+        if (!finite(w.body(i).pos, w.body(i).vel, w.body(i).spin)) return false;
+    for (int i = 0; i < w.rigidCount(); ++i)
+        if (!finite(w.rigid(i).pos, w.rigid(i).vel, w.rigid(i).spin)) return false;
     return true;
 }
 
@@ -132,6 +134,57 @@ void addCrowds(std::vector<ExtremeResult>& out) {
                           [](const PhysicsWorld&, const Track& t) { return noEnergyGain(t); }));
 }
 
+// Bodies that turn: a heavy box on a light one, a tall stack, a pyramid, boxes of 1 cm and
+// 100 m, a thin box thrown at a wall, a mixed pile at a long step and the timed mixed pile.
+void addRigidBodies(std::vector<ExtremeResult>& out) {
+    Scene heavy = physicsWorld(9.81f, 0.0f, 0.6f, true);
+    heavy.objects.push_back(dynamicBox({0, 0.25f, 0}, glm::vec3(0.25f), 1.0f));
+    heavy.objects.push_back(dynamicBox({0, 0.75f, 0}, glm::vec3(0.25f), 1000.0f));
+    out.push_back(runCase("Box on box 1:1000", "heavy centre within 4 slops of 0.75 m after 3 s",
+                          heavy, {}, 3.0, [](const PhysicsWorld& w, const Track&) {
+                              return std::abs(w.rigid(1).pos.y - 0.75) <
+                                     4.0 * w.settings().linearSlop;
+                          }));
+    out.push_back(runCase("Stack of 10 boxes, 60 s", "top within 1.5 cm of where it was placed",
+                          boxStackScene(10), {}, 60.0, [](const PhysicsWorld& w, const Track&) {
+                              return std::abs(w.rigid(9).pos.y - 9.5) < 0.015;
+                          }));
+    out.push_back(runCase("Pyramid of 210 boxes, 10 s", "asleep, no energy gain", pyramidScene(20),
+                          {}, 10.0, [](const PhysicsWorld& w, const Track& t) {
+                              return noEnergyGain(t) && w.stats().awake == 0;
+                          }));
+    for (float half : {0.005f, 50.0f}) {
+        Scene resting = physicsWorld(9.81f, 0.0f, 0.5f, true);
+        resting.objects.push_back(dynamicBox({0, half, 0}, glm::vec3(half), 1.0f));
+        char name[64];
+        std::snprintf(name, sizeof name, "Resting box of %g m", 2.0 * double(half));
+        out.push_back(runCase(name, "within the slop of its rest height, asleep after 2 s", resting,
+                              {}, 2.0, [=](const PhysicsWorld& w, const Track&) {
+                                  return std::abs(w.rigid(0).pos.y - double(half)) <=
+                                             w.settings().linearSlop &&
+                                         !w.rigid(0).awake;
+                              }));
+    }
+    out.push_back(runCase(
+        "Box 5 cm thick at 50 m/s into 10 cm", "centre never reaches the wall", thinBoxScene(50.0f),
+        {}, 0.5, [](const PhysicsWorld&, const Track&) { return true; },
+        [](const PhysicsWorld& w) { return w.rigid(0).pos.x < 1.95; }));
+    PhysicsSettings longStep;
+    longStep.dt = 1.0 / 30;
+    out.push_back(runCase("Mixed pile of 200 at dt = 1/30, 8 s",
+                          "no energy gain, none below ground", mixedPileScene(200, 7), longStep,
+                          8.0, [](const PhysicsWorld& w, const Track& t) {
+                              for (int i = 0; i < w.rigidCount(); ++i)
+                                  if (w.rigid(i).pos.y < 0.0) return false;
+                              return noEnergyGain(t);
+                          }));
+    PhysicsSettings awake;
+    awake.sleep = false;
+    out.push_back(runCase("Mixed pile of 1,000, first 1.5 s", "no energy gain (all awake)",
+                          mixedPileScene(1000, 7), awake, 1.5,
+                          [](const PhysicsWorld&, const Track& t) { return noEnergyGain(t); }));
+}
+
 }  // namespace
 
 std::vector<ExtremeResult> runExtremeSuite() {
@@ -140,6 +193,7 @@ std::vector<ExtremeResult> runExtremeSuite() {
     addTunnelling(out);
     addScales(out);
     addCrowds(out);
+    addRigidBodies(out);
     return out;
 }
 

@@ -27,31 +27,6 @@ Object dynamicShape(ShapeType type, glm::vec3 pos, float mass) {
     return o;
 }
 
-Object dynamicBox(glm::vec3 pos, glm::vec3 half, float mass = 1.0f) {
-    Object o = dynamicShape(ShapeType::Box, pos, mass);
-    o.size = half;
-    return o;
-}
-
-// A plank tilted θ about z (no ground) and a body at rest on it, turned with it, 3 m up the
-// slope from its middle; returns the distance it moved along the slope in `seconds`.
-Scene slopeScene(float degrees, float friction, Object body) {
-    Scene s = physicsWorld(9.81f, 0.0f, friction, false);
-    s.world.rolling = 0.0f;
-    Object plank = staticShape(ShapeType::Box, {});
-    plank.size = {20.0f, 0.5f, 2.0f};
-    plank.rot = {0.0f, 0.0f, degrees};
-    s.objects.push_back(plank);
-    const double t = double(degrees) * M_PI / 180.0;
-    const dvec3 along(std::cos(t), std::sin(t), 0.0), up(-std::sin(t), std::cos(t), 0.0);
-    const double lift =
-        0.5 + (body.type == ShapeType::Box ? double(body.size.y) : double(body.radius));
-    body.pos = glm::vec3(3.0 * along + lift * up);
-    if (body.type == ShapeType::Box) body.rot = {0.0f, 0.0f, degrees};
-    s.objects.push_back(body);
-    return s;
-}
-
 double slid(PhysicsWorld& w, double seconds, float degrees) {
     const double t = double(degrees) * M_PI / 180.0;
     const dvec3 along(std::cos(t), std::sin(t), 0.0);
@@ -149,10 +124,7 @@ TEST(RigidContacts, BoxDroppedFlatBouncesStraight) {
 // its contacts (the first second), and it settles by less than 1.5 cm: ten contacts, each
 // squeezed by the weight above to about its slop (measured 1.2 cm).
 TEST(RigidContacts, TenBoxStackStands) {
-    Scene s = physicsWorld(9.81f, 0.3f, 0.6f, true);
-    for (int k = 0; k < 10; ++k)
-        s.objects.push_back(dynamicBox({0, 0.5f + float(k), 0}, {0.5f, 0.5f, 0.5f}));
-    PhysicsWorld w(s);
+    PhysicsWorld w(boxStackScene(10));
     const dvec3 placed = w.rigid(9).pos;
     run(w, 1.0);
     const dvec3 settled = w.rigid(9).pos;
@@ -187,14 +159,7 @@ TEST(RigidContacts, TorusDroppedOverAPegSettlesAroundIt) {
 // A box 5 cm thick thrown at 50 m/s against a wall 10 cm thick does not pass through it:
 // 42 cm a step, more than both together; its speculative contacts stop it at the face.
 TEST(RigidContacts, ThinFastBoxDoesNotPassThroughAWall) {
-    Scene s = physicsWorld(0.0f, 0.0f, 0.3f, false);
-    Object wall = staticShape(ShapeType::Box, {2.0f, 0, 0});
-    wall.size = {0.05f, 2.0f, 2.0f};
-    s.objects.push_back(wall);
-    Object thin = dynamicBox({0, 0, 0}, {0.025f, 0.3f, 0.3f});
-    thin.vel = {50.0f, 0, 0};
-    s.objects.push_back(thin);
-    PhysicsWorld w(s);
+    PhysicsWorld w(thinBoxScene(50.0f));
     run(w, 0.5);
     EXPECT_LT(w.rigid(0).pos.x, 2.0 - 0.05) << "passed into or through the wall";
 }

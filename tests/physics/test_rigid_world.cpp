@@ -78,18 +78,7 @@ TEST(RigidWorld, TumblingBoxKeepsEnergyAndMomentum) {
 // box within 2 cm of where it began (20 faces, each sinking under the weight above by up to
 // the contacts' slop; measured 1.36 cm).
 TEST(RigidWorld, PyramidSettlesAndSleeps) {
-    Scene s = physicsWorld(9.81f, 0.0f, 0.6f, true);
-    const int base = 20;
-    for (int row = 0; row < base; ++row)
-        for (int k = 0; k < base - row; ++k) {
-            Object box;
-            box.type = ShapeType::Box;
-            box.size = glm::vec3(0.25f);
-            box.pos = {0.5f * float(k) - 0.25f * float(base - row - 1), 0.25f + 0.5f * float(row),
-                       0.0f};
-            s.objects.push_back(box);
-        }
-    PhysicsWorld w(s);
+    PhysicsWorld w(pyramidScene(20));
     const dvec3 top = w.rigid(w.rigidCount() - 1).pos;
     for (int i = 0; i < stepsFor(10.0, w.settings()) && (i == 0 || w.stats().awake > 0); ++i)
         w.step();

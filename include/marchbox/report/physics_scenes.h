@@ -38,6 +38,14 @@ glm::vec3 bowlCentre(float bowlRadius);
 // A 40 m plank tilted `degrees` about z (its top rises along +x), no ground; a sphere of 0.2 at
 // rest on its top face, 3 m up the slope from its middle.
 Scene rampScene(float degrees, float friction, float rolling);
+// A 40 m plank tilted `degrees` about z (its top rises along +x), no ground; `body` at rest on
+// its top face 3 m up the slope from its middle, a box turned with the plank.
+Scene slopeScene(float degrees, float friction, Object body);
+Object dynamicBox(glm::vec3 pos, glm::vec3 halfExtents, float mass = 1.0f);
+Scene boxStackScene(int count);  // unit boxes one on another on the ground, μ = 0.6, e = 0.3
+Scene pyramidScene(int base);    // boxes of 0.5 m, `base` wide at the bottom, μ = 0.6, e = 0
+// A box 5 cm thick at `speed` along +x at a static wall 10 cm thick 2 m away; no gravity.
+Scene thinBoxScene(float speed);
 Scene stackScene(float massRatio);                   // heavy on light, in a well barely wider
 Scene tunnelScene(float speed, float angleDegrees);  // at a 2 cm plate, angle from its normal
 Scene restingScene(float radius, float x);           // at rest on the ground at x

@@ -47,11 +47,17 @@ Object dynamicSphere(glm::vec3 pos, float radius, float mass, glm::vec3 vel) {
     return o;
 }
 
-Object staticBox(glm::vec3 pos, glm::vec3 halfExtents) {
+Object dynamicBox(glm::vec3 pos, glm::vec3 halfExtents, float mass) {
     Object o;
     o.type = ShapeType::Box;
     o.pos = pos;
     o.size = halfExtents;
+    o.mass = mass;
+    return o;
+}
+
+Object staticBox(glm::vec3 pos, glm::vec3 halfExtents) {
+    Object o = dynamicBox(pos, halfExtents, 1.0f);
     o.isStatic = true;
     return o;
 }
@@ -150,6 +156,47 @@ Scene cradleScene(int count, float speed) {
     s.objects.push_back(dynamicSphere({-2.0f * r - gap, 0, 0}, r, 1.0f, {speed, 0, 0}));
     for (int i = 0; i < count; ++i)
         s.objects.push_back(dynamicSphere({2.0f * r * float(i), 0, 0}, r, 1.0f));
+    return s;
+}
+
+Scene slopeScene(float degrees, float friction, Object body) {
+    Scene s = physicsWorld(9.81f, 0.0f, friction, false);
+    s.world.rolling = 0.0f;
+    Object plank = staticBox({}, {20.0f, 0.5f, 2.0f});
+    plank.rot = {0.0f, 0.0f, degrees};
+    s.objects.push_back(plank);
+    const float t = degrees * float(M_PI) / 180.0f;
+    const glm::vec3 along(std::cos(t), std::sin(t), 0.0f), up(-std::sin(t), std::cos(t), 0.0f);
+    const float lift = 0.5f + (body.type == ShapeType::Box ? body.size.y : body.radius);
+    body.pos = 3.0f * along + lift * up;
+    if (body.type == ShapeType::Box) body.rot = {0.0f, 0.0f, degrees};
+    s.objects.push_back(body);
+    return s;
+}
+
+Scene boxStackScene(int count) {
+    Scene s = physicsWorld(9.81f, 0.3f, 0.6f, true);
+    for (int k = 0; k < count; ++k)
+        s.objects.push_back(dynamicBox({0, 0.5f + float(k), 0}, {0.5f, 0.5f, 0.5f}));
+    return s;
+}
+
+Scene pyramidScene(int base) {
+    Scene s = physicsWorld(9.81f, 0.0f, 0.6f, true);
+    for (int row = 0; row < base; ++row)
+        for (int k = 0; k < base - row; ++k)
+            s.objects.push_back(dynamicBox(
+                {0.5f * float(k) - 0.25f * float(base - row - 1), 0.25f + 0.5f * float(row), 0.0f},
+                glm::vec3(0.25f)));
+    return s;
+}
+
+Scene thinBoxScene(float speed) {
+    Scene s = physicsWorld(0.0f, 0.0f, 0.3f, false);
+    s.objects.push_back(staticBox({2.0f, 0, 0}, {0.05f, 2.0f, 2.0f}));
+    Object thin = dynamicBox({0, 0, 0}, {0.025f, 0.3f, 0.3f});
+    thin.vel = {speed, 0, 0};
+    s.objects.push_back(thin);
     return s;
 }
 
