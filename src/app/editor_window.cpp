@@ -210,7 +210,9 @@ void App::screenshot(int width, int height) {
 }
 
 std::string App::title() const {
-    return "Marchbox - " + editor_.document().name() + (editor_.document().dirty() ? " *" : "");
+    const Document& d = editor_.document();
+    return "Marchbox - " + d.name() + (d.dirty() ? " *" : "") +
+           (d.time() > 0 ? " (" + timeLabel(d.time()) + ")" : "");
 }
 
 }  // namespace

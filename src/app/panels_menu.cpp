@@ -109,8 +109,9 @@ static void simulationMenu(UiContext& c) {
     if (menuItem("Simulation", e.simulation().playing() ? "Pause" : "Play", "Space"))
         e.togglePlay();
     if (menuItem("Simulation", "Step")) e.step();
-    if (menuItem("Simulation", "Reset", nullptr, false, e.simulation().canReset()))
-        e.resetSimulation();
+    const bool moved = e.document().time() > 0;
+    if (menuItem("Simulation", "Reset", nullptr, false, moved)) e.resetSimulation();
+    if (menuItem("Simulation", "Keep simulated poses", nullptr, false, moved)) e.keepPoses();
     ImGui::Separator();
     if (menuItem("Simulation", "Settings", nullptr, c.ui.showSimulation))
         c.ui.showSimulation = !c.ui.showSimulation;
@@ -193,9 +194,10 @@ static void noteRecentFile(UiContext& c) {
 }
 
 // The file's name at the bar's right end and, while saving would change the file, "unsaved
-// changes" beside it: the title's `*` is out of sight in a full-screen window.
+// changes" beside it: the title's `*` is out of sight in a full-screen window. At t > 0 the
+// time leads it: what shows is not what Save writes.
 static void fileStatus(const Document& d) {
-    const std::string name = d.name();
+    const std::string name = (d.time() > 0 ? timeLabel(d.time()) + "   " : "") + d.name();
     const char* unsaved = "unsaved changes";
     const ImGuiStyle& style = ImGui::GetStyle();
     float width = ImGui::CalcTextSize(name.c_str()).x + style.FramePadding.x;

@@ -13,9 +13,12 @@ static void controls(UiContext& c) {
     ImGui::SameLine();
     if (ImGui::Button("Step")) e.step();
     ImGui::SameLine();
-    ImGui::BeginDisabled(!e.simulation().canReset());
+    ImGui::BeginDisabled(e.document().time() <= 0);
     if (ImGui::Button("Reset")) e.resetSimulation();
+    ImGui::SameLine();
+    if (ImGui::Button("Keep poses")) e.keepPoses();
     ImGui::EndDisabled();
+    if (e.document().time() > 0) ImGui::Text("%s", timeLabel(e.document().time()).c_str());
 }
 
 static void worldFields(UiContext& c) {

@@ -175,8 +175,7 @@ static void statsOverlay(UiContext& c) {
         else ImGui::Text("%.0f ms/step", s.scene.stepMs);
         ImGui::PlotLines("##frames", s.frameMs, FrameStats::kHistory, s.next, "UI frame ms", 0.0f,
                          std::max(worst, 1.0f), ImVec2(200, 24));
-        const PhysicsWorld* world = c.editor.simulation().world();
-        const double simulated = world ? double(world->stepCount()) * world->settings().dt : 0.0;
+        const double simulated = c.editor.document().time();
         ImGui::Text("%zu objects   simulated %.2f s%s", c.editor.scene().objects.size(), simulated,
                     c.editor.simulation().playing() ? ", playing" : "");
         markItem("Statistics/simulated");

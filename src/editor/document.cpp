@@ -3,12 +3,19 @@
 
 #include "marchbox/scene/scene_io.h"
 
+#include <cstdio>
 #include <filesystem>
 
 namespace mb {
 
 bool sameCamera(const Camera& a, const Camera& b) {
     return a.pos == b.pos && a.target == b.target && a.fov == b.fov;
+}
+
+std::string timeLabel(double seconds) {
+    char text[48];
+    std::snprintf(text, sizeof text, "t = %.2f s", seconds);
+    return text;
 }
 
 std::string Document::name() const {
@@ -20,13 +27,16 @@ void Document::replace(const Scene& scene, const std::string& path) {
     path_ = path;
     history_.clear();
     saved_ = scene;
+    time_ = 0;
+    start_.reset();
+    moments_.clear();
     ++version_;
     ++opened_;
 }
 
 void Document::markSaved(const std::string& path) {
     path_ = path;
-    saved_ = scene_;
+    saved_ = start();
     ++version_;
     history_.seal();  // a later drag must not fold into the step that was saved
 }
@@ -35,24 +45,85 @@ void Document::markSaved(const std::string& path) {
 // 4096 objects.
 bool Document::dirty() const {
     if (checkedVersion_ != version_) {
-        saved_.camera = scene_.camera;
-        dirty_ = !(saved_ == scene_);
+        const Scene& first = start_ ? *start_ : scene_;
+        saved_.camera = first.camera;
+        dirty_ = !(saved_ == first);
         checkedVersion_ = version_;
     }
     return dirty_;
 }
 
+Scene Document::start() const {
+    Scene s = start_ ? *start_ : scene_;
+    s.camera = scene_.camera;
+    return s;
+}
+
+static bool sameObjects(const Scene& a, const Scene& b) {
+    Scene probe = a;
+    probe.objects = b.objects;
+    return probe == a;
+}
+
 void Document::apply(const std::string& label, const SceneChange& change, uint64_t mergeKey) {
+    const uint64_t was = history_.state();
     Scene before = scene_;
     change(scene_);
+    if (start_ && sameObjects(scene_, before)) {
+        Scene s = *start_;
+        change(s);
+        start_ = std::make_shared<const Scene>(std::move(s));
+    } else if (start_) {
+        scene_ = start();  // the change's camera, the start's bodies
+        start_.reset();
+        time_ = 0;
+        change(scene_);
+    }
     ++version_;
     history_.push(label, before, scene_, mergeKey);
+    pushed(was);
 }
 
 void Document::commit(const std::string& label, const Scene& before) {
+    const uint64_t was = history_.state();
     Scene from = before;
     from.camera = scene_.camera;  // the view moving meanwhile is not part of the step
     history_.push(label, from, scene_);
+    pushed(was);
+}
+
+Scene& Document::moving(double seconds) {
+    if (!start_) start_ = std::make_shared<const Scene>(scene_);
+    time_ += seconds;
+    return live();
+}
+
+bool Document::rewind(const std::string& label) { return start_ && restart(label, start()); }
+
+bool Document::keep(const std::string& label) { return start_ && restart(label, scene_); }
+
+bool Document::restart(const std::string& label, const Scene& first) {
+    const uint64_t was = history_.state();
+    Scene before = scene_;
+    scene_ = first;
+    start_.reset();
+    time_ = 0;
+    ++version_;
+    history_.pushEvenIfSame(label, before, scene_);
+    pushed(was);
+    return true;
+}
+
+void Document::pushed(uint64_t was) {
+    const uint64_t now = history_.state();
+    if (now == was) return;  // nothing was recorded
+    if (start_) moments_[now] = {time_, start_};
+}
+
+void Document::recall() {
+    auto m = moments_.find(history_.state());
+    time_ = m == moments_.end() ? 0 : m->second.time;
+    start_ = m == moments_.end() ? nullptr : m->second.start;
 }
 
 void Document::restore(const Scene& target, bool stepMovedCamera) {
@@ -66,6 +137,7 @@ bool Document::undo(std::string* label) {
     const HistoryStep* s = history_.undo();
     if (!s) return false;
     restore(s->before, !sameCamera(s->before.camera, s->after.camera));
+    recall();
     if (label) *label = s->label;
     return true;
 }
@@ -74,6 +146,7 @@ bool Document::redo(std::string* label) {
     const HistoryStep* s = history_.redo();
     if (!s) return false;
     restore(s->after, !sameCamera(s->before.camera, s->after.camera));
+    recall();
     if (label) *label = s->label;
     return true;
 }

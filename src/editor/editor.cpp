@@ -68,7 +68,6 @@ void Editor::replace(const Scene& scene, const std::string& path) {
     sim_.pause(doc_);  // before the history goes, so the run is not recorded into the new one
     doc_.replace(scene, path);
     sim_.sceneChanged(doc_);
-    sim_.forgetResetPoint();
     sel_.clear();
 }
 
@@ -92,9 +91,10 @@ bool Editor::saveAs(const std::string& path, std::string* error) {
         emitEvent("refuse " + *error);
         return false;
     }
-    // What is on screen is what gets saved: a running simulation is recorded first.
+    // The start is what gets saved, whatever time the view shows; a running simulation is
+    // recorded first so that the save names the state it was made in.
     sim_.commitRun(doc_);
-    if (!saveScene(path, doc_.scene(), error)) {
+    if (!saveScene(path, doc_.start(), error)) {
         emitEvent("save-failed " + *error);
         return false;
     }
@@ -147,7 +147,7 @@ bool Editor::redo() {
 // Runs a scene_edit command inside an undo step, keeping the scene untouched if it refuses.
 template <typename Command>
 static bool tryEdit(Editor& e, const std::string& label, Command command) {
-    Scene trial = e.scene();
+    Scene trial = e.document().start();  // an edit of the objects is an edit at t = 0
     if (!command(trial)) return false;
     e.edit(label, [&](Scene& s) { s = trial; });
     return true;
@@ -257,6 +257,13 @@ void Editor::resetSimulation() {
     sim_.reset(doc_);
     selectionClamp(sel_, doc_.scene());
     emitEvent("reset");
+}
+
+bool Editor::keepPoses() {
+    sim_.pause(doc_);
+    if (!doc_.keep("Keep simulated poses")) return false;
+    emitEvent("keep");
+    return true;
 }
 
 void Editor::frame(double seconds) { sim_.advance(doc_, seconds); }

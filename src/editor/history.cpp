@@ -8,6 +8,15 @@ namespace mb {
 void History::push(const std::string& label, const Scene& before, const Scene& after,
                    uint64_t mergeKey) {
     if (before == after) return;
+    record(label, before, after, mergeKey);
+}
+
+void History::pushEvenIfSame(const std::string& label, const Scene& before, const Scene& after) {
+    record(label, before, after, 0);
+}
+
+void History::record(const std::string& label, const Scene& before, const Scene& after,
+                     uint64_t mergeKey) {
     bool merge = mergeKey != 0 && !sealed_ && cursor_ == steps_.size() && cursor_ > 0 &&
                  steps_.back().mergeKey == mergeKey;
     sealed_ = false;

@@ -12,8 +12,6 @@ void Simulation::play(Document& doc) {
     playing_ = true;
     accumulator_ = {};
     runStart_ = doc.scene();
-    resetPoint_ = doc.scene();
-    hasResetPoint_ = true;
 }
 
 void Simulation::pause(Document& doc) {
@@ -38,19 +36,13 @@ void Simulation::step(Document& doc) {
     Scene before = doc.scene();
     ensureWorld(before);
     world_->step();
-    world_->writeBack(doc.live());
+    world_->writeBack(doc.moving(settings_.dt));
     doc.commit("Simulation step", before);
 }
 
 void Simulation::reset(Document& doc) {
-    if (!hasResetPoint_) return;
     pause(doc);
-    Camera view = doc.scene().camera;
-    doc.apply("Reset simulation", [&](Scene& s) {
-        s = resetPoint_;
-        s.camera = view;
-    });
-    world_.reset();
+    if (doc.rewind("Reset simulation")) world_.reset();
 }
 
 int Simulation::advance(Document& doc, double frameSeconds) {
@@ -59,7 +51,7 @@ int Simulation::advance(Document& doc, double frameSeconds) {
     if (steps == 0) return 0;
     ensureWorld(doc.scene());
     for (int i = 0; i < steps; ++i) world_->step();
-    world_->writeBack(doc.live());
+    world_->writeBack(doc.moving(steps * settings_.dt));
     return steps;
 }
 

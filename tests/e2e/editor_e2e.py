@@ -458,7 +458,8 @@ def case_drag(app, scene):
 
 
 def case_simulate(app, scene):
-    """J and Space move the spheres; Ctrl+Z undoes the run; Ctrl+Q asks about unsaved changes."""
+    """J and Space move the spheres; Save still writes the start until Simulation > Keep
+    simulated poses; Ctrl+Z undoes the keep and the run; Ctrl+Q asks about unsaved changes."""
     start = scene_values(scene, 'object', 'pos')
     app.key('j')
     app.wait('edit Random velocities')
@@ -469,9 +470,15 @@ def case_simulate(app, scene):
     app.wait('pause')
     app.key('ctrl+s')
     app.wait('save ')
+    check(scene_values(scene, 'object', 'pos') == start, 'Save wrote the simulated poses')
+    app.menu('Simulation', 'Keep simulated poses')  # 'keep' is told before the menu closes
+    app.key('ctrl+s')
+    app.wait('save ')
     moved = scene_values(scene, 'object', 'pos')
     check(moved[0] != start[0] and moved[1] != start[1], 'the spheres did not move: %s' % moved)
     check(moved[2] == start[2], 'the static box moved')
+    app.key('ctrl+z')
+    check(app.wait('undo ') == 'undo Keep simulated poses', 'undo did not undo the keep')
     app.key('ctrl+z')
     check(app.wait('undo ') == 'undo Simulation run', 'undo did not undo the run')
     app.key('ctrl+s')
@@ -512,6 +519,7 @@ def case_body(app, scene):
     time.sleep(5)
     app.key('space')
     app.wait('pause')
+    app.menu('Simulation', 'Keep simulated poses')  # 'keep' is told before the menu closes
     app.save()
     pos, (w, x, y, z) = scene_values(scene, 'object', 'pos')[2], scene_values(scene, 'object', 'orient')[2]
     check(pos != start[2], 'the box did not move')
@@ -519,6 +527,8 @@ def case_body(app, scene):
     # The y components of the turned box's axes: one of them is 1 when it rests on a face.
     up = [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)]
     check(max(abs(v) for v in up) > 0.999, 'the box rests on an edge or corner: orient %s' % [w, x, y, z])
+    app.key('ctrl+z')
+    app.wait('undo Keep simulated poses')
     app.key('ctrl+z')
     check(app.wait('undo ') == 'undo Simulation run', 'undo did not undo the run')
     app.save()

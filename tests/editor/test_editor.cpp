@@ -148,13 +148,16 @@ TEST(Editor, ASimulationRunIsOneUndoStep) {
     for (int i = 0; i < 30; ++i) e.frame(1.0 / 60);
     EXPECT_LT(e.scene().objects[0].pos.y, start.y);  // it fell
     e.togglePlay();
-    EXPECT_TRUE(e.document().dirty());
+    const double t = e.document().time();
+    EXPECT_NEAR(t, 0.5, 1e-9);
+    EXPECT_FALSE(e.document().dirty());  // Save would write the start: nothing to lose
     EXPECT_EQ(e.document().history().undoLabel(), "Simulation run");
     ASSERT_TRUE(e.undo());
     EXPECT_EQ(e.scene().objects[0].pos, start);
-    EXPECT_FALSE(e.document().dirty());
+    EXPECT_EQ(e.document().time(), 0.0);
     ASSERT_TRUE(e.redo());
     EXPECT_LT(e.scene().objects[0].pos.y, start.y);
+    EXPECT_EQ(e.document().time(), t);
 }
 
 TEST(Editor, AnEditWhilePlayingSplitsTheRun) {
@@ -182,12 +185,13 @@ TEST(Editor, ResetReturnsToWhenPlayWasPressed) {
     EXPECT_NE(e.scene().objects[0].pos, start.objects[0].pos);
 }
 
-// Issue 13, item 7: after Reset the title kept its '*' though the file would be identical.
+// After Reset the title kept its '*' though the file would be identical. A run alone never
+// marks the scene unsaved: Save writes the start, which the run leaves as it was.
 TEST(Editor, ResetBackToTheFileLeavesNothingUnsaved) {
     Editor e = openEditor(writeFile("reset-clean.txt", kScene));
     e.togglePlay();
     for (int i = 0; i < 20; ++i) e.frame(1.0 / 60);
-    EXPECT_TRUE(e.document().dirty());  // the spheres moved: quitting now asks
+    EXPECT_FALSE(e.document().dirty());
     e.togglePlay();
     e.resetSimulation();
     EXPECT_FALSE(e.document().dirty());
@@ -415,3 +419,91 @@ TEST(Editor, AddLookingAtTheSkyGoesBelowTheTarget) {
     ASSERT_TRUE(e.add(ItemKind::Object, &why)) << why;
     EXPECT_EQ(e.scene().objects.back().pos, glm::vec3(-2, -0.5f, 6));
 }
+
+//-----------------------------------------------------------------------------
+// The start (t = 0) and the simulated time
+//-----------------------------------------------------------------------------
+static void run(Editor& e, int frames) {
+    e.togglePlay();
+    for (int i = 0; i < frames; ++i) e.frame(1.0 / 60);
+    e.togglePlay();
+}
+
+static Scene saved(const std::string& path) {
+    Scene s;
+    std::vector<std::string> errors;
+    EXPECT_TRUE(loadScene(path, &s, &errors));
+    return s;
+}
+
+// Play then Save wrote the resting poses over the start without a word.
+TEST(Editor, SaveWritesTheStartNotTheSimulatedPoses) {
+    std::string path = writeFile("start.txt", kScene);
+    Editor e = openEditor(path);
+    const glm::vec3 start = e.scene().objects[0].pos;
+    run(e, 30);
+    ASSERT_LT(e.scene().objects[0].pos.y, start.y);
+    std::string error;
+    ASSERT_TRUE(e.save(&error)) << error;
+    EXPECT_EQ(saved(path).objects[0].pos, start);
+    EXPECT_LT(e.scene().objects[0].pos.y, start.y);  // the view still shows where it got to
+    ASSERT_TRUE(e.saveAs(tempPath("start-as.txt"), &error)) << error;
+    EXPECT_EQ(saved(tempPath("start-as.txt")).objects[0].pos, start);
+}
+
+TEST(Editor, KeepSimulatedPosesMakesThemTheStartAsOneStep) {
+    std::string path = writeFile("keep.txt", kScene);
+    Editor e = openEditor(path);
+    const glm::vec3 start = e.scene().objects[0].pos;
+    EXPECT_FALSE(e.keepPoses());  // at t = 0 there is nothing to keep
+    run(e, 30);
+    const glm::vec3 fallen = e.scene().objects[0].pos;
+    ASSERT_TRUE(e.keepPoses());
+    EXPECT_EQ(e.document().time(), 0.0);
+    EXPECT_EQ(e.scene().objects[0].pos, fallen);
+    EXPECT_TRUE(e.document().dirty());
+    EXPECT_EQ(e.document().history().undoLabel(), "Keep simulated poses");
+    std::string error;
+    ASSERT_TRUE(e.save(&error)) << error;
+    EXPECT_EQ(saved(path).objects[0].pos, fallen);
+
+    ASSERT_TRUE(e.undo());  // back to t = 0.5 s over the old start
+    EXPECT_NEAR(e.document().time(), 0.5, 1e-9);
+    EXPECT_EQ(e.scene().objects[0].pos, fallen);
+    ASSERT_TRUE(e.save(&error)) << error;
+    EXPECT_EQ(saved(path).objects[0].pos, start);
+}
+
+// The camera is a view, not the bodies: editing it keeps the time and what Save writes.
+TEST(Editor, EditingTheCameraKeepsTheSimulatedTime) {
+    Editor e = openEditor(writeFile("camera-time.txt", kScene));
+    const glm::vec3 start = e.scene().objects[0].pos;
+    run(e, 30);
+    const glm::vec3 fallen = e.scene().objects[0].pos;
+    e.edit("Edit camera", [](Scene& s) { s.camera.fov = 30; });
+    e.view().pos = {1, 2, -9};
+    EXPECT_NEAR(e.document().time(), 0.5, 1e-9);
+    EXPECT_EQ(e.scene().objects[0].pos, fallen);
+    EXPECT_EQ(e.document().start().objects[0].pos, start);
+    EXPECT_EQ(e.document().start().camera.fov, 30.0f);
+}
+
+// Gravity edited at t > 0 goes to the start too and the run carries on; moving an object is
+// an edit of the start, where the view goes back to.
+TEST(Editor, AnEditAtALaterTimeIsAnEditOfTheStart) {
+    Editor e = openEditor(writeFile("edit-later.txt", kScene));
+    run(e, 30);
+    e.edit("Gravity", [](Scene& s) { s.world.gravity = 2; });
+    EXPECT_NEAR(e.document().time(), 0.5, 1e-9);
+    EXPECT_EQ(e.document().start().world.gravity, 2.0f);
+
+    e.moveObject(1, {4, 0.5f, 0}, 0);
+    EXPECT_EQ(e.document().time(), 0.0);
+    EXPECT_EQ(e.scene().objects[0].pos, glm::vec3(0, 3, 0));  // the sphere back at its start
+    EXPECT_EQ(e.scene().objects[1].pos, glm::vec3(4, 0.5f, 0));
+    e.undo();
+    EXPECT_NEAR(e.document().time(), 0.5, 1e-9);
+    EXPECT_LT(e.scene().objects[0].pos.y, 3.0f);
+}
+
+TEST(Editor, TimeLabelSaysTheSimulatedSeconds) { EXPECT_EQ(timeLabel(2.345678), "t = 2.35 s"); }

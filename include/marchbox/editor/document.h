@@ -3,6 +3,11 @@
 // Unsaved means saving would change what the file says, the camera aside: the camera is written
 // with the scene, but looking around is not an edit. Undoing back to the file, or a simulation
 // Reset to it, leaves nothing unsaved.
+//
+// The scene as edited is the state at t = 0, its start. While the simulator has moved the
+// bodies (time() > 0) the scene shows them where they got to and the start is kept aside:
+// Save writes the start, and only keep() makes the shown poses the new start. Each undo state
+// remembers its time and start, so undoing a run goes back to the time before it.
 #pragma once
 
 #include "marchbox/editor/history.h"
@@ -10,6 +15,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
+#include <memory>
 #include <string>
 
 namespace mb {
@@ -21,7 +28,7 @@ public:
     const Scene& scene() const { return scene_; }
     const std::string& path() const { return path_; }  // empty for a scene never saved
     std::string name() const;  // the file's name without its folder, "untitled" without one
-    bool dirty() const;        // the scene differs from its file (from New's scene), camera aside
+    bool dirty() const;        // the start differs from its file (from New's scene), camera aside
     const History& history() const { return history_; }
 
     // New or Open: a fresh history, clean.
@@ -29,7 +36,9 @@ public:
     void markSaved(const std::string& path);
 
     // The one door for edits: runs `change` on the scene and records the difference as one
-    // undo step (see History::push for mergeKey).
+    // undo step (see History::push for mergeKey). At t > 0 a change that leaves the objects
+    // alone (camera, world, materials, lights) is made to the start too and the time stays;
+    // any other is an edit of the start: the scene goes back to t = 0 first.
     void apply(const std::string& label, const SceneChange& change, uint64_t mergeKey = 0);
     void seal() { history_.seal(); }
 
@@ -40,6 +49,14 @@ public:
         return scene_;
     }
     void commit(const std::string& label, const Scene& before);
+
+    // The simulator's door: the scene to write the bodies into after `seconds` more of motion.
+    // The first motion from t = 0 sets the start aside.
+    Scene& moving(double seconds);
+    double time() const { return time_; }   // simulated seconds the scene shows; 0 at the start
+    Scene start() const;                    // the scene at t = 0, with the current camera
+    bool rewind(const std::string& label);  // back to the start, as an undo step; false at t = 0
+    bool keep(const std::string& label);    // the shown poses become the start, as an undo step
 
     // Both keep the current camera unless the step itself changed the camera: looking around
     // is not an edit, and undoing an edit must not throw the view back.
@@ -53,8 +70,19 @@ public:
 
 private:
     void restore(const Scene& target, bool stepMovedCamera);
+    bool restart(const std::string& label, const Scene& first);  // `first` is now t = 0
+    void pushed(uint64_t before);  // after a history push: the new state's time and start
+    void recall();                 // after undo or redo: the time and start of that state
+
+    struct Moment {
+        double time = 0;
+        std::shared_ptr<const Scene> start;
+    };
 
     Scene scene_;
+    double time_ = 0;
+    std::shared_ptr<const Scene> start_;  // null at t = 0: the scene is its own start
+    std::map<uint64_t, Moment> moments_;  // the history states at t > 0
     std::string path_;
     History history_;
     mutable Scene saved_;  // as the file holds it; its camera follows scene_'s
@@ -65,5 +93,6 @@ private:
 };
 
 bool sameCamera(const Camera& a, const Camera& b);
+std::string timeLabel(double seconds);  // "t = 2.35 s", for the title and the menu bar
 
 }  // namespace mb

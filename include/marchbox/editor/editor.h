@@ -41,6 +41,7 @@ public:
     // untitled scene, which Save asks a name for.
     void start(const Scene& scene, const std::string& file);
 
+    // Both write the start (t = 0), never the poses the simulation got to: see keepPoses().
     bool save(std::string* error);  // to document().path(); fails when the scene has none
     bool saveAs(const std::string& path, std::string* error);  // "" is refused: asks for a name
     // The file last opened or saved, kept through New: where Save As starts a new scene.
@@ -77,7 +78,8 @@ public:
     //-------------------------------------------------------------------------
     void togglePlay();
     void step();
-    void resetSimulation();
+    void resetSimulation();      // back to t = 0
+    bool keepPoses();            // the simulated poses become the start; false at t = 0
     void frame(double seconds);  // the simulator's share of one frame
     const Simulation& simulation() const { return sim_; }
 

@@ -29,6 +29,9 @@ public:
     // the top step's `after` is replaced instead: one slider drag is one undo step.
     void push(const std::string& label, const Scene& before, const Scene& after,
               uint64_t mergeKey = 0);
+    // Records even when the scenes are equal: a step that changes what the document means by
+    // its scene (the time shown, the start) without moving anything.
+    void pushEvenIfSame(const std::string& label, const Scene& before, const Scene& after);
     void seal() { sealed_ = true; }  // the next push starts a new step whatever its key
 
     const HistoryStep* undo();  // the step undone (restore its `before`), or null
@@ -45,6 +48,9 @@ public:
     size_t size() const { return steps_.size(); }
 
 private:
+    void record(const std::string& label, const Scene& before, const Scene& after,
+                uint64_t mergeKey);
+
     std::deque<HistoryStep> steps_;
     size_t cursor_ = 0;  // steps_[0, cursor_) are done, the rest can be redone
     size_t maxSteps_;

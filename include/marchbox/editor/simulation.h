@@ -2,7 +2,7 @@
 //
 // While playing, the simulator changes the live scene every frame through the fixed-step
 // accumulator, outside the undo history; pausing records the whole run as one undo step.
-// Reset goes back to the scene as it was when Play was last pressed.
+// The document keeps the time and the start (t = 0); Reset goes back to that start.
 #pragma once
 
 #include "marchbox/editor/document.h"
@@ -17,13 +17,12 @@ public:
     explicit Simulation(const PhysicsSettings& settings = {}) : settings_(settings) {}
 
     bool playing() const { return playing_; }
-    bool canReset() const { return hasResetPoint_; }
     const PhysicsSettings& settings() const { return settings_; }
 
     void play(Document& doc);
     void pause(Document& doc);  // records the run since play() as "Simulation run"
     void step(Document& doc);   // one fixed step, as its own undo step; pauses first
-    void reset(Document& doc);  // back to the scene when Play was pressed, as an undo step
+    void reset(Document& doc);  // back to t = 0, as an undo step
 
     // Each frame: the steps the accumulator owes for frameSeconds, taken and written back.
     // Returns the number of steps; 0 while paused.
@@ -34,7 +33,6 @@ public:
     // is its own undo step; the run then continues from the edited scene.
     void commitRun(Document& doc);
     void sceneChanged(Document& doc);
-    void forgetResetPoint() { hasResetPoint_ = false; }  // a new file: its own start
 
     const PhysicsWorld* world() const { return world_.get(); }
 
@@ -44,9 +42,7 @@ private:
     PhysicsSettings settings_;
     std::unique_ptr<PhysicsWorld> world_;  // null when it no longer mirrors the scene
     StepAccumulator accumulator_;
-    Scene runStart_;    // the scene when this run (or its last committed part) began
-    Scene resetPoint_;  // the scene when Play was pressed
-    bool hasResetPoint_ = false;
+    Scene runStart_;  // the scene when this run (or its last committed part) began
     bool playing_ = false;
 };
 
