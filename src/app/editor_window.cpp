@@ -56,6 +56,7 @@ private:
     void openDrops(UiContext& c);
     void screenshot(int width, int height);
     std::string title() const;
+    void syncView(double now);
 
     // Destroyed bottom-up: the scene view's GL objects go while the window's context lives.
     Window window_;
@@ -179,10 +180,21 @@ void App::openDrops(UiContext& c) {
 //-----------------------------------------------------------------------------
 // Draw
 //-----------------------------------------------------------------------------
+// While playing along the keyframes the view shows the path's camera, not the record. The
+// version tells the two apart too, so pausing (which changes no scene) draws the record again.
+void App::syncView(double now) {
+    const uint64_t version = editor_.document().version() * 2 + (editor_.followsPath() ? 1 : 0);
+    if (!editor_.followsPath())
+        return view_.sync(editor_.scene(), version, ui_.render, ui_.quality, now);
+    Scene shown = editor_.scene();
+    shown.camera = editor_.shownCamera();
+    view_.sync(shown, version, ui_.render, ui_.quality, now);
+}
+
 void App::present(int width, int height) {
     double now = glfwGetTime();
     view_.pollShaders(editor_.scene(), now);
-    view_.sync(editor_.scene(), editor_.document().version(), ui_.render, ui_.quality, now);
+    syncView(now);
     renderDialog_.work(0.03);  // a few tiles a frame keep the window responsive
     // A changed scene draws its preview first, so this frame shows the change; bands of
     // refinement wait until after the swap, so the UI never waits for them.

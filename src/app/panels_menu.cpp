@@ -159,6 +159,12 @@ static void viewMenu(UiContext& c) {
         togglePost(ui.render, PostMode::Fxaa);
     if (menuItem("View", "Orbit preview", "1", ui.previewOrbit)) ui.previewOrbit = !ui.previewOrbit;
     if (menuItem("View", "Statistics", nullptr, ui.showStats)) ui.showStats = !ui.showStats;
+    ImGui::Separator();
+    if (menuItem("View", "Add camera key")) c.editor.addCameraKey();
+    if (menuItem("View", "Delete nearest camera key", nullptr, false,
+                 !c.editor.scene().keyframes.empty()))
+        c.editor.deleteCameraKey();
+    ImGui::Separator();
     if (menuItem("View", "Screenshot", "F12")) ui.wantScreenshot = true;
 }
 

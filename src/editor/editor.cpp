@@ -1,8 +1,10 @@
 // editor.cpp — the rules between document, selection and simulation.
 #include "marchbox/editor/editor.h"
 
+#include "marchbox/editor/camera_keys.h"
 #include "marchbox/editor/events.h"
 #include "marchbox/editor/picking.h"
+#include "marchbox/scene/camera_path.h"
 #include "marchbox/scene/scene_io.h"
 
 namespace mb {
@@ -263,6 +265,27 @@ bool Editor::keepPoses() {
     sim_.pause(doc_);
     if (!doc_.keep("Keep simulated poses")) return false;
     emitEvent("keep");
+    return true;
+}
+
+bool Editor::followsPath() const {
+    return sim_.playing() && doc_.time() > 0 && !scene().keyframes.empty();
+}
+
+Camera Editor::shownCamera() const {
+    return followsPath() ? cameraAt(scene().keyframes, scene().camera, doc_.time())
+                         : scene().camera;
+}
+
+void Editor::addCameraKey() {
+    const float t = float(doc_.time());
+    edit("Add camera key", [&](Scene& s) { setCameraKey(s, t, s.camera); });
+}
+
+bool Editor::deleteCameraKey() {
+    const int k = nearestCameraKey(scene(), doc_.time());
+    if (k < 0) return false;
+    edit("Delete camera key", [&](Scene& s) { s.keyframes.erase(s.keyframes.begin() + k); });
     return true;
 }
 

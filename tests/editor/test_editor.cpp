@@ -1,5 +1,6 @@
 // test_editor.cpp — the editor's rules: open failures, unsaved work, edits while simulating.
 #include "marchbox/editor/editor.h"
+#include "marchbox/scene/camera_path.h"
 #include "marchbox/scene/scene_io.h"
 #include "marchbox/scene/sdf.h"
 
@@ -507,3 +508,48 @@ TEST(Editor, AnEditAtALaterTimeIsAnEditOfTheStart) {
 }
 
 TEST(Editor, TimeLabelSaysTheSimulatedSeconds) { EXPECT_EQ(timeLabel(2.345678), "t = 2.35 s"); }
+
+//-----------------------------------------------------------------------------
+// Camera keyframes
+//-----------------------------------------------------------------------------
+TEST(Editor, CameraKeysAddAtTheSimulatedTimeAndDeleteTheNearest) {
+    Editor e = openEditor(writeFile("keys.txt", kScene));
+    EXPECT_FALSE(e.deleteCameraKey());
+    e.view() = Camera{{0, 2, -8}, {0, 1, 0}, 50};
+    e.addCameraKey();  // t = 0
+    run(e, 60);        // t = 1 s
+    e.view() = Camera{{6, 2, -8}, {0, 1, 0}, 40};
+    e.addCameraKey();
+    e.view().fov = 30;
+    e.addCameraKey();  // the same t: the key takes the new view
+    ASSERT_EQ(e.scene().keyframes.size(), 2u);
+    EXPECT_EQ(e.scene().keyframes[1].t, 1.0f);
+    EXPECT_EQ(e.scene().keyframes[1].pos, glm::vec3(6, 2, -8));
+    EXPECT_EQ(e.scene().keyframes[1].fov, 30.0f);
+    EXPECT_NEAR(e.document().time(), 1.0, 1e-9);           // keys are no edit of the bodies
+    EXPECT_EQ(e.document().start().keyframes.size(), 2u);  // and Save writes them
+
+    ASSERT_TRUE(e.deleteCameraKey());  // the one at 1 s
+    ASSERT_EQ(e.scene().keyframes.size(), 1u);
+    EXPECT_EQ(e.scene().keyframes[0].t, 0.0f);
+    e.undo();
+    EXPECT_EQ(e.scene().keyframes.size(), 2u);
+}
+
+TEST(Editor, ThePlayingViewFollowsTheKeyframesAndTheRecordOtherwise) {
+    Editor e = openEditor(writeFile("follow.txt", kScene));
+    const Camera rest{{0, 2, -8}, {0, 1, 0}, 50};
+    e.edit("Keys", [&](Scene& s) {
+        s.keyframes = {Keyframe{0, {0, 2, -8}, {0, 1, 0}, 50},
+                       Keyframe{1, {8, 2, -8}, {0, 1, 0}, 50}};
+        s.camera = rest;
+    });
+    e.togglePlay();
+    for (int i = 0; i < 30; ++i) e.frame(1.0 / 60);
+    const Camera path = cameraAt(e.scene().keyframes, rest, e.document().time());
+    EXPECT_EQ(e.shownCamera().pos, path.pos);
+    EXPECT_GT(e.shownCamera().pos.x, 1.0f);     // half way along: well off the record
+    EXPECT_EQ(e.scene().camera.pos, rest.pos);  // the record stays the view at rest
+    e.togglePlay();
+    EXPECT_EQ(e.shownCamera().pos, rest.pos);  // paused: editing the view again
+}

@@ -85,6 +85,12 @@ public:
 
     // The camera moves as a view, not an edit: no undo step, no unsaved change.
     Camera& view() { return doc_.live().camera; }
+    // What the view shows: while playing a scene with keyframes, their path at the simulated
+    // time; otherwise (at rest, paused, editing) the camera record.
+    Camera shownCamera() const;
+    bool followsPath() const;
+    void addCameraKey();     // a key at the simulated time from the camera record
+    bool deleteCameraKey();  // the key nearest the simulated time; false without keys
 
     const Document& document() const { return doc_; }
     const Scene& scene() const { return doc_.scene(); }
