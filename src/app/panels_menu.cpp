@@ -286,6 +286,9 @@ static void plainShortcut(UiContext& c, const KeyPress& k) {
         case GLFW_KEY_J:
             e.kick();
             break;
+        case GLFW_KEY_HOME:
+            e.seek(0);
+            break;
         case GLFW_KEY_1:
             c.ui.previewOrbit = !c.ui.previewOrbit;
             break;

@@ -2,9 +2,23 @@
 #include "ui.h"
 #include "widgets.h"
 
+#include <algorithm>
 #include <imgui.h>
 
 namespace mb {
+
+// The baked frames of the run from this start, to scrub through: one drag is one undo step.
+static void timeline(UiContext& c) {
+    Editor& e = c.editor;
+    const float end = float(e.simulation().cache().end(e.document().startShared()));
+    float t = float(e.document().time());
+    ImGui::BeginDisabled(end <= 0.0f);
+    if (ImGui::SliderFloat("t (s)", &t, 0.0f, std::max(end, 0.01f), "%.2f"))
+        e.seek(t, ImGui::GetID("t (s)"));
+    markItem("Simulation/timeline");
+    if (ImGui::IsItemDeactivated()) e.endEdit();
+    ImGui::EndDisabled();
+}
 
 static void controls(UiContext& c) {
     Editor& e = c.editor;
@@ -18,7 +32,7 @@ static void controls(UiContext& c) {
     ImGui::SameLine();
     if (ImGui::Button("Keep poses")) e.keepPoses();
     ImGui::EndDisabled();
-    if (e.document().time() > 0) ImGui::Text("%s", timeLabel(e.document().time()).c_str());
+    timeline(c);
 }
 
 static void worldFields(UiContext& c) {

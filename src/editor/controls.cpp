@@ -15,6 +15,7 @@ static const Control kControls[] = {
     {"Delete", "delete the selection"},
     {"J", "random velocities for the dynamic bodies"},
     {"Space", "play or pause the simulation"},
+    {"Home", "back to t = 0, keeping the run to scrub forward again"},
     {"Ctrl+Z, Ctrl+Y", "undo, redo (a simulation run is one step); Ctrl+Shift+Z redoes too"},
     {"Ctrl+N, Ctrl+O, Ctrl+S", "new, open, save"},
     {"Ctrl+Shift+S", "save as"},

@@ -114,6 +114,20 @@ bool Document::restart(const std::string& label, const Scene& first) {
     return true;
 }
 
+bool Document::seek(const std::string& label, double t, const SceneChange& pose,
+                    uint64_t mergeKey) {
+    if (!start_) return false;
+    const uint64_t was = history_.state();
+    Scene before = scene_;
+    scene_ = start();
+    if (t > 0) pose(scene_);
+    time_ = t;
+    ++version_;
+    history_.pushEvenIfSame(label, before, scene_, mergeKey);
+    pushed(was);
+    return true;
+}
+
 void Document::pushed(uint64_t was) {
     const uint64_t now = history_.state();
     if (now == was) return;  // nothing was recorded

@@ -289,6 +289,20 @@ bool Editor::deleteCameraKey() {
     return true;
 }
 
+bool Editor::seek(double t, uint64_t mergeKey) {
+    sim_.pause(doc_);
+    // Frame times are sums of steps: one a rounding error past t still counts as at t.
+    const BakedFrame* f = sim_.cache().at(doc_.startShared(), t + 1e-9);
+    const double to = f ? f->t : 0.0;
+    if (!doc_.seek(
+            "Scrub", to, [&](Scene& s) { applyFrame(*f, s); }, mergeKey))
+        return false;
+    sim_.sceneChanged(doc_);
+    if (mergeKey == 0 || mergeKey != loggedKey_) emitEvent("seek " + timeLabel(to));
+    loggedKey_ = mergeKey;
+    return true;
+}
+
 void Editor::frame(double seconds) { sim_.advance(doc_, seconds); }
 
 }  // namespace mb

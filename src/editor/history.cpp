@@ -11,8 +11,9 @@ void History::push(const std::string& label, const Scene& before, const Scene& a
     record(label, before, after, mergeKey);
 }
 
-void History::pushEvenIfSame(const std::string& label, const Scene& before, const Scene& after) {
-    record(label, before, after, 0);
+void History::pushEvenIfSame(const std::string& label, const Scene& before, const Scene& after,
+                             uint64_t mergeKey) {
+    record(label, before, after, mergeKey);
 }
 
 void History::record(const std::string& label, const Scene& before, const Scene& after,

@@ -37,6 +37,7 @@ void Simulation::step(Document& doc) {
     ensureWorld(before);
     world_->step();
     world_->writeBack(doc.moving(settings_.dt));
+    cache_.record(doc.startShared(), doc.time(), doc.scene());
     doc.commit("Simulation step", before);
 }
 
@@ -52,6 +53,7 @@ int Simulation::advance(Document& doc, double frameSeconds) {
     ensureWorld(doc.scene());
     for (int i = 0; i < steps; ++i) world_->step();
     world_->writeBack(doc.moving(steps * settings_.dt));
+    cache_.record(doc.startShared(), doc.time(), doc.scene());
     return steps;
 }
 

@@ -553,3 +553,44 @@ TEST(Editor, ThePlayingViewFollowsTheKeyframesAndTheRecordOtherwise) {
     e.togglePlay();
     EXPECT_EQ(e.shownCamera().pos, rest.pos);  // paused: editing the view again
 }
+
+//-----------------------------------------------------------------------------
+// The baked frames and the timeline
+//-----------------------------------------------------------------------------
+TEST(Editor, ScrubbingShowsEachBakedFrameAndGoesForwardAgain) {
+    Editor e = openEditor(writeFile("scrub.txt", kScene));
+    const Scene start = e.scene();
+    EXPECT_FALSE(e.seek(0.25));  // nothing has run
+    Editor quarter = openEditor(writeFile("scrub-quarter.txt", kScene));
+    run(quarter, 15);
+    run(e, 60);
+    const glm::vec3 end = e.scene().objects[0].pos;
+    EXPECT_NEAR(e.simulation().cache().end(e.document().startShared()), 1.0, 1e-9);
+
+    ASSERT_TRUE(e.seek(0.25));
+    EXPECT_NEAR(e.document().time(), 0.25, 1e-9);
+    EXPECT_EQ(e.scene().objects[0].pos, quarter.scene().objects[0].pos);
+    ASSERT_TRUE(e.seek(0));  // Home
+    EXPECT_EQ(e.document().time(), 0.0);
+    EXPECT_EQ(e.scene(), start);
+    ASSERT_TRUE(e.seek(0.25));
+    ASSERT_TRUE(e.seek(2.0));  // past the end: the last frame
+    EXPECT_EQ(e.scene().objects[0].pos, end);
+    e.undo();  // each scrub is a step
+    EXPECT_NEAR(e.document().time(), 0.25, 1e-9);
+    EXPECT_EQ(e.scene().objects[0].pos, quarter.scene().objects[0].pos);
+}
+
+TEST(Editor, AnEditOfTheStartDropsTheBakedFrames) {
+    Editor e = openEditor(writeFile("scrub-edit.txt", kScene));
+    run(e, 30);
+    e.edit("Gravity", [](Scene& s) { s.world.gravity = 2; });  // the time stays; the past differs
+    ASSERT_TRUE(e.seek(0.25));
+    EXPECT_EQ(e.document().time(), 0.0);  // no frame of the run from the new start before 0.5 s
+    e.moveObject(0, {1, 3, 0}, 0);
+    run(e, 10);
+    EXPECT_LT(e.simulation().cache().end(e.document().startShared()), 0.2);
+    ASSERT_TRUE(e.seek(0.4));  // only the new run's frames: its last
+    EXPECT_NEAR(e.document().time(), 10.0 / 60, 1e-9);
+    EXPECT_EQ(e.scene().objects[0].pos.x, 1.0f);
+}

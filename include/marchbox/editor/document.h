@@ -57,6 +57,11 @@ public:
     Scene start() const;                    // the scene at t = 0, with the current camera
     bool rewind(const std::string& label);  // back to the start, as an undo step; false at t = 0
     bool keep(const std::string& label);    // the shown poses become the start, as an undo step
+    // To time t of the run from the start, with `pose` putting the bodies where they were then
+    // (nothing at t = 0); the start stays, so that a scrub back can go forward again. An undo
+    // step; one drag of the slider (one mergeKey) is one. False when nothing has run.
+    bool seek(const std::string& label, double t, const SceneChange& pose, uint64_t mergeKey);
+    const std::shared_ptr<const Scene>& startShared() const { return start_; }  // null: scene
 
     // Both keep the current camera unless the step itself changed the camera: looking around
     // is not an edit, and undoing an edit must not throw the view back.
@@ -81,7 +86,7 @@ private:
 
     Scene scene_;
     double time_ = 0;
-    std::shared_ptr<const Scene> start_;  // null at t = 0: the scene is its own start
+    std::shared_ptr<const Scene> start_;  // null: t = 0 and the scene is its own start
     std::map<uint64_t, Moment> moments_;  // the history states at t > 0
     std::string path_;
     History history_;

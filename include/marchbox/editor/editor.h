@@ -78,8 +78,11 @@ public:
     //-------------------------------------------------------------------------
     void togglePlay();
     void step();
-    void resetSimulation();      // back to t = 0
-    bool keepPoses();            // the simulated poses become the start; false at t = 0
+    void resetSimulation();  // back to t = 0
+    bool keepPoses();        // the simulated poses become the start; false at t = 0
+    // To the cached frame at or before t (Home: t = 0), pausing; an undo step, one per drag
+    // of the timeline (one mergeKey). False when nothing has run from this start.
+    bool seek(double t, uint64_t mergeKey = 0);
     void frame(double seconds);  // the simulator's share of one frame
     const Simulation& simulation() const { return sim_; }
 

@@ -31,7 +31,8 @@ public:
               uint64_t mergeKey = 0);
     // Records even when the scenes are equal: a step that changes what the document means by
     // its scene (the time shown, the start) without moving anything.
-    void pushEvenIfSame(const std::string& label, const Scene& before, const Scene& after);
+    void pushEvenIfSame(const std::string& label, const Scene& before, const Scene& after,
+                        uint64_t mergeKey = 0);
     void seal() { sealed_ = true; }  // the next push starts a new step whatever its key
 
     const HistoryStep* undo();  // the step undone (restore its `before`), or null

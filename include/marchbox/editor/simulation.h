@@ -6,6 +6,7 @@
 #pragma once
 
 #include "marchbox/editor/document.h"
+#include "marchbox/editor/frame_cache.h"
 #include "marchbox/physics/physics.h"
 
 #include <memory>
@@ -35,6 +36,7 @@ public:
     void sceneChanged(Document& doc);
 
     const PhysicsWorld* world() const { return world_.get(); }
+    const FrameCache& cache() const { return cache_; }  // each frame of the runs so far
 
 private:
     void ensureWorld(const Scene& scene);
@@ -42,6 +44,7 @@ private:
     PhysicsSettings settings_;
     std::unique_ptr<PhysicsWorld> world_;  // null when it no longer mirrors the scene
     StepAccumulator accumulator_;
+    FrameCache cache_;
     Scene runStart_;  // the scene when this run (or its last committed part) began
     bool playing_ = false;
 };
