@@ -119,7 +119,11 @@ NormalRow rowOf(const RigidContact& c, double slop) {
     r.turnB = c.b.invInertia * r.armB;
     r.invMassA = c.a.invMass;
     r.invMassB = c.b.invMass;
-    r.mass = c.normalMass;
+    // 1 / K along the normal, from the arms and turns just made (rowMass's sum, in its order).
+    double k = r.invMassA + r.invMassB;
+    if (r.invMassA > 0.0) k += glm::dot(r.armA, r.turnA);
+    if (r.invMassB > 0.0) k += glm::dot(r.armB, r.turnB);
+    r.mass = k > 0.0 ? 1.0 / k : 0.0;
     r.impulse = c.normalImpulse;
     r.slop = slop;
     return r;
@@ -547,7 +551,6 @@ void RigidBodies::wake(std::vector<PhysicsBody>& spheres) {
 
 void RigidBodies::prepare(RigidContact& c) {
     tangentsOf(c);
-    c.normalMass = rowMass(c, c.normal);
     c.tangentMass[0] = rowMass(c, c.tangent[0]);
     c.tangentMass[1] = rowMass(c, c.tangent[1]);
     c.rolling = rolling_;
