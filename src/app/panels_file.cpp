@@ -4,9 +4,11 @@
 #include "marchbox/editor/events.h"
 #include "widgets.h"
 
+#include "marchbox/editor/file_browser.h"
 #include "marchbox/editor/files.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -77,26 +79,83 @@ static bool pathField(const char* popup, std::string* path, bool refocus = false
     return enter;
 }
 
-static void openDialog(UiContext& c) {
-    if (!beginModal(kOpenPopup)) return;
-    static std::vector<std::string> files;
-    if (ImGui::IsWindowAppearing())
-        files = listSceneFiles(c.editor.document().path(), c.ui.scenesDir);
-    bool go = false;
-    ImGui::BeginChild("files", ImVec2(480, 220), true);
-    for (const std::string& f : files) {
-        if (ImGui::Selectable(f.c_str(), f == c.ui.pathField,
-                              ImGuiSelectableFlags_AllowDoubleClick)) {
-            c.ui.pathField = f;
-            go = ImGui::IsMouseDoubleClicked(0);
-        }
+// Shows `folder` in the browser. Save As keeps the file name typed, to save it there; Open
+// puts the folder in the field, to type a name into or pick one from.
+static void browseTo(UiState& ui, const std::string& folder, bool keepName) {
+    ui.browsed = readFolder(folder);
+    std::string name = keepName ? std::filesystem::path(ui.pathField).filename().string() : "";
+    ui.pathField = entryPath(ui.browsed.folder, name);
+}
+
+// Open on a path that names a folder goes into it, as file dialogs do, rather than failing.
+// (Save As keeps refusing a folder with the save's own reason: the name to write is missing.)
+static bool intoFolder(UiState& ui, bool go) {
+    std::error_code ec;
+    if (!go || !std::filesystem::is_directory(ui.pathField, ec)) return false;
+    browseTo(ui, ui.pathField, false);
+    return true;
+}
+
+// The places to jump to: recent files' folders and the examples, named by their last part.
+static std::string placesList(UiState& ui) {
+    std::string go;
+    ImGui::BeginChild("places", ImVec2(160, 240), true);
+    for (size_t i = 0; i < ui.places.size(); ++i) {
+        const std::string& place = ui.places[i];
+        std::string name = std::filesystem::path(place).filename().string();
+        ImGui::PushID(int(i));
+        if (ImGui::Selectable(name.empty() ? place.c_str() : name.c_str(),
+                              place == ui.browsed.folder))
+            go = place;
+        ImGui::PopID();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", place.c_str());
     }
     ImGui::EndChild();
+    return go;
+}
+
+// The folder's listing above the path field: a click on a folder goes into it, on a file puts
+// the file in the field. True on a double click on a file: the dialog's OK.
+static bool folderBrowser(UiContext& c, const char* popup, bool keepName) {
+    UiState& ui = c.ui;
+    if (ImGui::IsWindowAppearing()) {
+        ui.browsed = readFolder(folderOf(ui.pathField));
+        const char* home = std::getenv("HOME");
+        ui.places = placesToBrowse(ui.recent.paths(), {ui.scenesDir, ".", home ? home : ""});
+    }
+    std::string go;
+    if (button(popup, "Up")) go = parentFolder(ui.browsed.folder);
+    ImGui::SameLine();
+    ImGui::TextUnformatted(ui.browsed.folder.c_str());
+    std::string place = placesList(ui);
+    ImGui::SameLine();
+    bool chosen = false;
+    ImGui::BeginChild("entries", ImVec2(420, 240), true);
+    if (!ui.browsed.error.empty()) fieldErrorLine(ui.browsed.error);
+    for (const FolderEntry& e : ui.browsed.entries) {
+        const std::string path = entryPath(ui.browsed.folder, e.name);
+        const std::string label = e.folder ? e.name + "/" : e.name;
+        if (ImGui::Selectable(label.c_str(), path == ui.pathField,
+                              ImGuiSelectableFlags_AllowDoubleClick)) {
+            if (e.folder) go = path;
+            else ui.pathField = path, chosen = ImGui::IsMouseDoubleClicked(0);
+        }
+        markItem(std::string(popup) + "/" + label);
+    }
+    ImGui::EndChild();
+    if (!place.empty()) go = place;
+    if (!go.empty()) browseTo(ui, go, keepName);
+    return chosen;
+}
+
+static void openDialog(UiContext& c) {
+    if (!beginModal(kOpenPopup)) return;
+    bool go = folderBrowser(c, kOpenPopup, false);
     go |= pathField(kOpenPopup, &c.ui.pathField);
     go |= button(kOpenPopup, "Open");
     ImGui::SameLine();
     bool cancel = button(kOpenPopup, "Cancel") || escaped(c);
-    go = go && !cancel;
+    go = go && !cancel && !intoFolder(c.ui, go);
     if (go || cancel) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
     if (go) openFile(c, c.ui.pathField);  // may raise the unsaved prompt: after EndPopup
@@ -131,8 +190,9 @@ static bool confirmedTarget(UiContext& c, bool go) {
 
 static void saveAsDialog(UiContext& c) {
     if (!beginModal(kSaveAsPopup)) return;
+    bool go = folderBrowser(c, kSaveAsPopup, true);
     bool enter = pathField(kSaveAsPopup, &c.ui.pathField, c.ui.refocusPath);
-    bool go = enter;
+    go |= enter;
     go |= button(kSaveAsPopup, "Save");
     ImGui::SameLine();
     bool cancel = button(kSaveAsPopup, "Cancel") || escaped(c);

@@ -6,6 +6,7 @@
 #include "marchbox/editor/input_queue.h"
 #include "marchbox/editor/messages.h"
 #include "marchbox/editor/panel_layout.h"
+#include "marchbox/editor/file_browser.h"
 #include "marchbox/editor/recent.h"
 #include "marchbox/gl/quality_preset.h"
 #include "marchbox/gl/renderer.h"
@@ -45,6 +46,8 @@ struct UiState {
     // Requests raised by menus and shortcuts, carried out by drawDialogs() this frame.
     bool wantOpen = false, wantSaveAs = false, wantObjectPopup = false, wantScreenshot = false;
     std::string pathField;                // the Open and Save As dialogs' path
+    FolderView browsed;                   // the folder those dialogs show
+    std::vector<std::string> places;      // the folders beside it: recent ones, the examples
     std::vector<std::string> openErrors;  // FILE:LINE lines of the last failed open
     bool saveThenLeave = false;           // Save As was asked for by the unsaved-changes prompt
     std::string replacePath;              // Save As warned once that this file exists

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <set>
 
 namespace fs = std::filesystem;
 
@@ -47,29 +46,6 @@ bool startingScene(const std::string& scenePath, const std::string& defaultScene
         return true;
     }
     return loadScene(scenePath, scene, errors);  // says why: unreadable, a folder, no folder
-}
-
-// Keyed by canonical path, so the same file reached as "scenes/a.txt" and "/src/scenes/a.txt"
-// is listed once, under the first spelling.
-static void addScenesIn(const fs::path& folder, std::map<std::string, std::string>* out) {
-    std::error_code ec;
-    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-        if (!it->is_regular_file(ec) || !hasSceneExtension(it->path().string())) continue;
-        std::error_code ignored;
-        std::string key = fs::weakly_canonical(it->path(), ignored).string();
-        out->emplace(key, it->path().lexically_normal().string());
-    }
-}
-
-std::vector<std::string> listSceneFiles(const std::string& currentScene,
-                                        const std::string& scenesDir) {
-    std::map<std::string, std::string> found;
-    fs::path folder = fs::path(currentScene).parent_path();
-    addScenesIn(folder.empty() ? fs::path(".") : folder, &found);
-    addScenesIn(scenesDir, &found);
-    std::set<std::string> paths;
-    for (const auto& entry : found) paths.insert(entry.second);
-    return {paths.begin(), paths.end()};
 }
 
 FolderWatch::FolderWatch(std::string folder) : folder_(std::move(folder)), stamps_(scan()) {}

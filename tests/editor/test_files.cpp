@@ -1,46 +1,18 @@
-// test_files.cpp — File > Open's list and the shader folder watch.
+// test_files.cpp — Save As's proposal, the starting scene and the shader folder watch.
 #include "marchbox/editor/files.h"
 #include "marchbox/scene/scene_io.h"
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+
+#include "../fresh_dir.h"
 
 using namespace mb;
 namespace fs = std::filesystem;
 
 static fs::path freshDir(const std::string& name) {
-    fs::path dir = fs::path(MARCHBOX_BINARY_DIR) / "test-output" / "editor-files" / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-TEST(Files, ListsSceneFilesOfBothFoldersOnce) {
-    fs::path dir = freshDir("list");
-    std::ofstream(dir / "b.txt") << "\n";
-    std::ofstream(dir / "a.TXT") << "\n";
-    std::ofstream(dir / "notes.md") << "\n";
-    fs::create_directories(dir / "sub.txt");
-    auto files =
-        listSceneFiles((dir / "b.txt").string(), std::string(MARCHBOX_SOURCE_DIR) + "/scenes");
-    auto has = [&](const fs::path& p) {
-        return std::find(files.begin(), files.end(), p.lexically_normal().string()) != files.end();
-    };
-    EXPECT_TRUE(has(dir / "a.TXT"));
-    EXPECT_TRUE(has(dir / "b.txt"));
-    EXPECT_FALSE(has(dir / "notes.md"));
-    EXPECT_FALSE(has(dir / "sub.txt"));
-    EXPECT_TRUE(has(fs::path(MARCHBOX_SOURCE_DIR) / "scenes" / "default.txt"));
-
-    // The same folder by two spellings: listed once.
-    auto twice = listSceneFiles((dir / "b.txt").string(), dir.string());
-    EXPECT_EQ(twice.size(), 2u);
-}
-
-TEST(Files, MissingFoldersListNothing) {
-    EXPECT_TRUE(listSceneFiles("/nonexistent/x.txt", "/nonexistent/scenes").empty());
+    return mb::test::freshDir("editor-files", name);
 }
 
 TEST(Files, WatchNoticesRewrites) {

@@ -7,15 +7,14 @@
 #include <fstream>
 #include <gtest/gtest.h>
 
+#include "../fresh_dir.h"
+
 using namespace mb;
 using mb::test::ScopedEnv;
 namespace fs = std::filesystem;
 
 static fs::path freshDir(const std::string& name) {
-    fs::path dir = fs::path(MARCHBOX_BINARY_DIR) / "test-output" / "editor-recent" / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
+    return mb::test::freshDir("editor-recent", name);
 }
 
 TEST(RecentFiles, LivesUnderXdgConfigHomeElseDotConfig) {

@@ -1,5 +1,5 @@
-// marchbox/editor/files.h — the scene files File > Open offers, the path Save As proposes, and
-// noticing files that change.
+// marchbox/editor/files.h — what counts as a scene file, the path Save As proposes, the scene
+// the editor starts on, and noticing files that change.
 #pragma once
 
 #include "marchbox/scene/scene.h"
@@ -10,11 +10,6 @@
 #include <vector>
 
 namespace mb {
-
-// The .txt files in the folder of `currentScene` and in `scenesDir`, each once, sorted by
-// path. Folders that do not exist add nothing.
-std::vector<std::string> listSceneFiles(const std::string& currentScene,
-                                        const std::string& scenesDir);
 
 bool hasSceneExtension(const std::string& path);  // ".txt", any case
 
