@@ -134,6 +134,21 @@ static void toggleFog(UiContext& c) {
     emitEvent(std::string("refuse ") + kNoFog);
 }
 
+// Frame all (Home) and Frame selected (numpad .), for the view's own shape. With nothing to
+// frame the status line says so rather than nothing happening.
+static void frameView(UiContext& c, bool all) {
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    const float aspect = size.y > 0.0f ? size.x / size.y : 1.0f;
+    if (all ? c.editor.frameAll(aspect) : c.editor.frameSelected(aspect)) {
+        emitEvent(all ? "frame all" : "frame selected");
+        return;
+    }
+    const char* why = all ? "nothing to frame: the scene has no objects"
+                          : "nothing to frame: select an object or a point light first";
+    c.ui.messages.say(Place::Status, why);
+    emitEvent(std::string("refuse ") + why);
+}
+
 static void viewMenu(UiContext& c) {
     UiState& ui = c.ui;
     if (menuItem("View", "Camera and render", nullptr, ui.showView)) ui.showView = !ui.showView;
@@ -157,6 +172,8 @@ static void viewMenu(UiContext& c) {
     if (!fog) itemTooltip("View/Fog", kNoFog);
     if (menuItem("View", "FXAA", "P", ui.render.post != PostMode::None))
         togglePost(ui.render, PostMode::Fxaa);
+    if (menuItem("View", "Frame selected", "Numpad .")) frameView(c, false);
+    if (menuItem("View", "Frame all", "Home")) frameView(c, true);
     if (menuItem("View", "Orbit preview", "1", ui.previewOrbit)) ui.previewOrbit = !ui.previewOrbit;
     if (menuItem("View", "Statistics", nullptr, ui.showStats)) ui.showStats = !ui.showStats;
     ImGui::Separator();
@@ -287,7 +304,13 @@ static void plainShortcut(UiContext& c, const KeyPress& k) {
             e.kick();
             break;
         case GLFW_KEY_HOME:
-            e.seek(0);
+            frameView(c, true);
+            break;
+        case GLFW_KEY_KP_DECIMAL:
+            frameView(c, false);
+            break;
+        case GLFW_KEY_LEFT:  // as Blender's Shift+Left: to the start
+            if (k.mods & GLFW_MOD_SHIFT) e.seek(0);
             break;
         case GLFW_KEY_1:
             c.ui.previewOrbit = !c.ui.previewOrbit;

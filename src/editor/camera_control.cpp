@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -70,6 +71,57 @@ void previewOrbit(Camera& c, float seconds, const CameraControls& k) {
     if (s.r <= 0.0f) return;
     s.yaw += k.previewRadiansPerSecond * seconds;
     c.pos = c.target + fromSpherical(s);
+}
+
+// Half the view's angle across (x) and up (y): tan of the vertical half angle is tan(fov/2),
+// the horizontal one's is `aspect` times that (cameraRay()).
+static glm::vec2 halfAngles(const Camera& c, float aspect) {
+    float t = std::tan(glm::radians(c.fov) * 0.5f);
+    return {std::atan(aspect * t), std::atan(t)};
+}
+
+bool ballInView(const Camera& c, const Ball& b, float aspect) {
+    CameraBasis basis = cameraBasis(c);
+    glm::vec3 d = b.centre - c.pos;
+    float z = glm::dot(d, basis.forward);
+    float x = glm::dot(d, glm::normalize(basis.right)), y = glm::dot(d, glm::normalize(basis.up));
+    glm::vec2 a = halfAngles(c, aspect);
+    // Each side of the view is a plane through the eye at angle a from the forward axis; the
+    // ball is inside when its centre is at least its radius inside every one.
+    auto inside = [&](float across, float half) {
+        return std::abs(across) * std::cos(half) + b.radius <= z * std::sin(half);
+    };
+    return inside(x, a.x) && inside(y, a.y);
+}
+
+void frameBalls(Camera& c, const std::vector<Ball>& balls, float aspect, const CameraControls& k) {
+    if (balls.empty()) return;
+    glm::vec3 lo = balls[0].centre, hi = lo;
+    for (const Ball& b : balls) {
+        lo = glm::min(lo, b.centre - b.radius);
+        hi = glm::max(hi, b.centre + b.radius);
+    }
+    glm::vec3 back = c.pos - c.target;
+    back = glm::length(back) > 0.0f ? glm::normalize(back) : glm::vec3(0.0f, 0.0f, -1.0f);
+    c.target = 0.5f * (lo + hi);
+    c.pos = c.target + back;
+    const CameraBasis basis = cameraBasis(c);
+    const glm::vec3 right = glm::normalize(basis.right), up = glm::normalize(basis.up);
+    const glm::vec2 a = halfAngles(c, aspect);
+    // ballInView's test solved for the eye's distance d from the target: a ball at (x, y, z)
+    // from the target in the view's frame needs (d + z)·sin a ≥ |x|·cos a + r on each axis.
+    float distance = k.minDistance;
+    for (const Ball& b : balls) {
+        const glm::vec3 o = b.centre - c.target;
+        const float z = glm::dot(o, basis.forward);
+        for (int axis = 0; axis < 2; ++axis) {
+            const float across = std::abs(glm::dot(o, axis == 0 ? right : up));
+            const float need = (across * std::cos(a[axis]) + b.radius) / std::sin(a[axis]) - z;
+            distance = std::max(distance, need);
+        }
+    }
+    // 2% back from touching the edges, so what is framed is seen whole, not grazed.
+    c.pos = c.target + back * std::min(distance * 1.02f, k.maxDistance);
 }
 
 }  // namespace mb

@@ -1,11 +1,13 @@
 // editor.cpp — the rules between document, selection and simulation.
 #include "marchbox/editor/editor.h"
 
+#include "marchbox/editor/camera_control.h"
 #include "marchbox/editor/camera_keys.h"
 #include "marchbox/editor/events.h"
 #include "marchbox/editor/picking.h"
 #include "marchbox/scene/camera_path.h"
 #include "marchbox/scene/scene_io.h"
+#include "marchbox/scene/sdf.h"
 
 namespace mb {
 
@@ -270,6 +272,30 @@ bool Editor::keepPoses() {
 
 bool Editor::followsPath() const {
     return sim_.playing() && doc_.time() > 0 && !scene().keyframes.empty();
+}
+
+// A point light's ball: big enough that framing it alone shows a little of around it.
+static constexpr float kLightFrameRadius = 0.5f;
+
+static Ball objectBall(const Object& o) { return {o.pos, boundingRadius(o)}; }
+
+bool Editor::frameSelected(float aspect) {
+    std::vector<Ball> balls;
+    const Scene& s = scene();
+    if (sel_.kind == ItemKind::Object && sel_.index >= 0)
+        balls.push_back(objectBall(s.objects[size_t(sel_.index)]));
+    const bool pointLight = sel_.kind == ItemKind::Light && sel_.index >= 0 &&
+                            !s.lights[size_t(sel_.index)].directional;
+    if (pointLight) balls.push_back({s.lights[size_t(sel_.index)].vec, kLightFrameRadius});
+    frameBalls(view(), balls, aspect);
+    return !balls.empty();
+}
+
+bool Editor::frameAll(float aspect) {
+    std::vector<Ball> balls;
+    for (const Object& o : scene().objects) balls.push_back(objectBall(o));
+    frameBalls(view(), balls, aspect);
+    return !balls.empty();
 }
 
 Camera Editor::shownCamera() const {

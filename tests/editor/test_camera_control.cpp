@@ -79,3 +79,41 @@ TEST(Picking, PlaneBehindTheCameraMisses) {
     glm::vec3 hit;
     EXPECT_FALSE(pixelOnPlane(c, {200, 150}, {400, 300}, 0.0f, &hit));
 }
+
+static constexpr float kWide = 16.0f / 9.0f;
+
+TEST(CameraFraming, BallInViewOnlyWhenWhollyInside) {
+    const Camera c{{0, 0, -10}, {0, 0, 0}, 90};  // tan(45°) = 1: the view is 10 m tall at z = 0
+    EXPECT_TRUE(ballInView(c, {{0, 0, 0}, 1}, 1.0f));
+    // At the top edge's plane y = z + 10 (45°), a ball of radius r needs its centre r·√2 below.
+    const float r = 1.0f, edge = 10.0f - r * std::sqrt(2.0f);
+    EXPECT_TRUE(ballInView(c, {{0, edge - 1e-3f, 0}, r}, 1.0f));
+    EXPECT_FALSE(ballInView(c, {{0, edge + 1e-3f, 0}, r}, 1.0f));
+    EXPECT_FALSE(ballInView(c, {{0, 0, -12}, 0.5f}, 1.0f));  // behind the eye
+    EXPECT_TRUE(ballInView(c, {{12, 0, 10}, 1}, 2.0f));      // wide view: room across
+    EXPECT_FALSE(ballInView(c, {{19.5f, 0, 10}, 1}, 1.0f));
+}
+
+TEST(CameraFraming, FrameAllFitsEveryBallFromTheSameDirection) {
+    const std::vector<Ball> balls = {{{-3, 0.5f, 0}, 0.5f}, {{4, 2, 1}, 1}, {{0, 6, -2}, 0.3f}};
+    for (float aspect : {kWide, 1.0f, 0.5f}) {
+        Camera c = kStart;
+        const glm::vec3 dir = glm::normalize(c.pos - c.target);
+        frameBalls(c, balls, aspect);
+        EXPECT_NEAR(glm::length(glm::normalize(c.pos - c.target) - dir), 0.0f, 1e-5f);
+        for (const Ball& b : balls) EXPECT_TRUE(ballInView(c, b, aspect)) << aspect;
+        // As close as that allows, with 2% to spare: 3% nearer, some ball is cut.
+        Camera nearer = c;
+        nearer.pos = c.target + (c.pos - c.target) * 0.97f;
+        bool cut = false;
+        for (const Ball& b : balls) cut |= !ballInView(nearer, b, aspect);
+        EXPECT_TRUE(cut) << "aspect " << aspect;
+    }
+}
+
+TEST(CameraFraming, NothingToFrameLeavesTheCamera) {
+    Camera c = kStart;
+    frameBalls(c, {}, kWide);
+    EXPECT_EQ(c.pos, kStart.pos);
+    EXPECT_EQ(c.target, kStart.target);
+}

@@ -8,6 +8,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <vector>
 
 namespace mb {
 
@@ -36,5 +37,21 @@ void flyCamera(Camera& c, glm::vec3 move, float seconds, const CameraControls& k
 
 // Key 1's preview: a slow turn about the vertical through the target.
 void previewOrbit(Camera& c, float seconds, const CameraControls& k = {});
+
+// A ball to frame: an object's bounding sphere, or a light's position with a small radius.
+struct Ball {
+    glm::vec3 centre{0.0f};
+    float radius = 0.0f;
+};
+
+// True when the whole ball lies inside the view of a camera whose image is `aspect` times as
+// wide as it is tall.
+bool ballInView(const Camera& c, const Ball& b, float aspect);
+
+// Frame selected and Frame all: looks at the middle of the balls from the same direction, as
+// close as lets every ball fit the view, within the controls' distance limits. Nothing to
+// frame leaves the camera as it was.
+void frameBalls(Camera& c, const std::vector<Ball>& balls, float aspect,
+                const CameraControls& k = {});
 
 }  // namespace mb

@@ -88,6 +88,11 @@ public:
 
     // The camera moves as a view, not an edit: no undo step, no unsaved change.
     Camera& view() { return doc_.live().camera; }
+    // Numpad . and Home: the camera looks at the selection (an object or a point light), or at
+    // every object, as they stand now, from where it looks, as close as lets them fit a view
+    // `aspect` times as wide as tall. False, the camera unmoved, when there is nothing to frame.
+    bool frameSelected(float aspect);
+    bool frameAll(float aspect);
     // What the view shows: while playing a scene with keyframes, their path at the simulated
     // time; otherwise (at rest, paused, editing) the camera record.
     Camera shownCamera() const;
