@@ -177,6 +177,12 @@ static void viewMenu(UiContext& c) {
     if (menuItem("View", "Orbit preview", "1", ui.previewOrbit)) ui.previewOrbit = !ui.previewOrbit;
     if (menuItem("View", "Statistics", nullptr, ui.showStats)) ui.showStats = !ui.showStats;
     ImGui::Separator();
+    static const char* const handles[kGizmoModeCount][2] = {
+        {"Move handles", "G"}, {"Rotate handles", "R"}, {"Scale handles", "T"}};
+    for (int m = 0; m < kGizmoModeCount; ++m)
+        if (menuItem("View", handles[m][0], handles[m][1], int(ui.gizmo) == m))
+            setGizmoMode(ui, GizmoMode(m));
+    ImGui::Separator();
     if (menuItem("View", "Add camera key")) c.editor.addCameraKey();
     if (menuItem("View", "Delete nearest camera key", nullptr, false,
                  !c.editor.scene().keyframes.empty()))
@@ -320,6 +326,15 @@ static void plainShortcut(UiContext& c, const KeyPress& k) {
             break;
         case GLFW_KEY_P:
             togglePost(c.ui.render, PostMode::Fxaa);
+            break;
+        case GLFW_KEY_G:  // Blender's grab; W, E and S fly
+            setGizmoMode(c.ui, GizmoMode::Move);
+            break;
+        case GLFW_KEY_R:
+            setGizmoMode(c.ui, GizmoMode::Rotate);
+            break;
+        case GLFW_KEY_T:
+            setGizmoMode(c.ui, GizmoMode::Scale);
             break;
         default:
             break;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "marchbox/editor/editor.h"
+#include "marchbox/editor/gizmo.h"
 #include "marchbox/editor/input_queue.h"
 #include "marchbox/editor/messages.h"
 #include "marchbox/editor/panel_layout.h"
@@ -58,6 +59,7 @@ struct UiState {
     RenderOptions render = viewOptions();  // debug view and uber shader
     QualityPreset quality = QualityPreset::Normal;  // View > Quality, over the scene's; not saved
     bool previewOrbit = false;                      // key 1
+    GizmoMode gizmo = GizmoMode::Move;              // the selection's handles: G, R, T
     std::string scenesDir;                          // scenes/ of the source tree, for File > Open
     RecentFiles recent{recentFilesPath()};          // File > Open Recent
     std::string recentNoted;  // the editor's last file, as last put in `recent`
@@ -100,6 +102,11 @@ void drawEditWindows(UiContext& c);
 
 // [panels_sim.cpp] Play, Pause, Step, Reset and the world's settings.
 void drawSimulationWindow(UiContext& c);
+
+// [gizmo_view.cpp] over the scene, under the panels: the selection's handles, `hot` lit (held
+// or under the mouse), and a marker at each point light. viewSize in framebuffer pixels.
+void drawGizmo(const UiContext& c, GizmoHandle hot, glm::vec2 viewSize);
+void setGizmoMode(UiState& ui, GizmoMode m);  // G, R, T and the View menu
 
 // [panels_view.cpp] camera, render settings, debug views, help, statistics, shader log.
 void drawViewWindows(UiContext& c);

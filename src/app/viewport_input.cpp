@@ -1,5 +1,5 @@
-// viewport_input.cpp — orbit, pan, zoom, fly; click to select; right click to edit; Ctrl drag
-// to move over the ground.
+// viewport_input.cpp — orbit, pan, zoom, fly; click to select; right click to edit; drag a
+// gizmo handle to move, turn or size the selection; Ctrl drag to move over the ground.
 #include "viewport_input.h"
 
 #define GLFW_INCLUDE_NONE
@@ -43,6 +43,7 @@ void ViewportInput::press(UiContext& c) {
     }
     if (!ImGui::IsMouseClicked(ImGuiMouseButton_Left)) return;
     button_ = ImGuiMouseButton_Left;
+    if (!io.KeyShift && grabGizmo(c, at)) return;
     drag_ = io.KeyShift ? Drag::Pan : Drag::Orbit;
     if (io.KeyCtrl) {
         int hit = c.editor.pick(at, view_);
@@ -51,6 +52,37 @@ void ViewportInput::press(UiContext& c) {
             ++moves_;
         }
     }
+}
+
+// A press on a handle of the selection takes it; with Ctrl held too, it snaps rather than
+// starting a move over the ground.
+bool ViewportInput::grabGizmo(UiContext& c, glm::vec2 at) {
+    const Scene& s = c.editor.scene();
+    GizmoFrame f;
+    GizmoMode mode;
+    if (c.editor.followsPath()) return false;  // no handles drawn: see drawGizmo()
+    if (!selectionGizmo(s, c.editor.selection(), c.ui.gizmo, view_, &f, &mode)) return false;
+    const GizmoHandle h = hitGizmo(s.camera, f, mode, at, view_);
+    if (h.kind == HandleKind::None || !gizmo_.begin(s.camera, f, h, at, view_)) return false;
+    held_ = c.editor.selection();
+    // A light is held as an object at its place: only its centre moves.
+    heldObject_ = held_.kind == ItemKind::Object ? s.objects[size_t(held_.index)] : Object{};
+    if (held_.kind == ItemKind::Light) heldObject_.pos = s.lights[size_t(held_.index)].vec;
+    drag_ = Drag::Gizmo;
+    ++moves_;
+    return true;
+}
+
+GizmoHandle ViewportInput::hotHandle(const UiContext& c) const {
+    if (drag_ == Drag::Gizmo) return gizmo_.handle;
+    const ImGuiIO& io = ImGui::GetIO();
+    GizmoFrame f;
+    GizmoMode mode;
+    if (drag_ != Drag::None || io.WantCaptureMouse || !ImGui::IsMousePosValid() ||
+        c.editor.followsPath() ||
+        !selectionGizmo(c.editor.scene(), c.editor.selection(), c.ui.gizmo, view_, &f, &mode))
+        return {};
+    return hitGizmo(c.editor.scene().camera, f, mode, pixel({io.MousePos.x, io.MousePos.y}), view_);
 }
 
 void ViewportInput::hold(UiContext& c) {
@@ -80,21 +112,42 @@ void ViewportInput::follow(UiContext& c, glm::vec2 delta) {
             glm::vec3 pos;
             if (ground_.follow(c.editor.scene().camera, pixel({io.MousePos.x, io.MousePos.y}),
                                view_, &pos))
-                c.editor.moveObject(ground_.object, pos, 0x4d6f7665ull << 32 | moves_);  // "Move"
+                c.editor.moveObject(ground_.object, pos, dragKey());
             break;
         }
+        case Drag::Gizmo:
+            dragGizmo(c, pixel({io.MousePos.x, io.MousePos.y}));
+            break;
         case Drag::None:
             break;
     }
 }
 
+// Each frame applies the whole drag so far to the item as it was at the press.
+void ViewportInput::dragGizmo(UiContext& c, glm::vec2 at) {
+    GizmoDelta d;
+    if (!gizmo_.follow(c.editor.scene().camera, at, view_, ImGui::GetIO().KeyCtrl, &d)) return;
+    const Object o = applyGizmo(heldObject_, d);
+    if (held_.kind == ItemKind::Light) return c.editor.moveLight(held_.index, o.pos, dragKey());
+    const HandleKind k = gizmo_.handle.kind;
+    const char* label = k == HandleKind::Ring    ? "Rotate object"
+                        : k == HandleKind::Scale ? "Scale object"
+                                                 : "Move object";
+    c.editor.setObject(held_.index, o, label, dragKey());
+}
+
 void ViewportInput::release(UiContext& c) {
-    // A left press that never became a drag is a click: select what is under it.
+    // A left press that never became a drag is a click: select the light marker or the object
+    // under it (a marker is drawn over the scene, so it comes first).
     if (drag_ == Drag::Orbit && !moved_) {
         ImGuiIO& io = ImGui::GetIO();
-        c.editor.pick(pixel({io.MousePos.x, io.MousePos.y}), view_);
+        const glm::vec2 at = pixel({io.MousePos.x, io.MousePos.y});
+        const int light =
+            pickLightMarker(c.editor.scene(), at, view_, GizmoSettings{}.markerPixels);
+        if (light >= 0) c.editor.select(ItemKind::Light, light);
+        else c.editor.pick(at, view_);
     }
-    if (drag_ == Drag::Move) c.editor.endEdit();
+    if (drag_ == Drag::Move || drag_ == Drag::Gizmo) c.editor.endEdit();
     ground_.end();
     drag_ = Drag::None;
 }

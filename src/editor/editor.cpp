@@ -239,6 +239,18 @@ void Editor::moveObject(int index, glm::vec3 pos, uint64_t mergeKey) {
         "Move object", [&](Scene& s) { s.objects[size_t(index)].pos = pos; }, mergeKey);
 }
 
+void Editor::setObject(int index, const Object& o, const std::string& label, uint64_t mergeKey) {
+    if (index < 0 || index >= int(doc_.scene().objects.size())) return;
+    edit(
+        label, [&](Scene& s) { s.objects[size_t(index)] = o; }, mergeKey);
+}
+
+void Editor::moveLight(int index, glm::vec3 pos, uint64_t mergeKey) {
+    if (index < 0 || index >= int(doc_.scene().lights.size())) return;
+    edit(
+        "Move light", [&](Scene& s) { s.lights[size_t(index)].vec = pos; }, mergeKey);
+}
+
 //-----------------------------------------------------------------------------
 // [SECTION] Simulation
 //-----------------------------------------------------------------------------

@@ -54,7 +54,8 @@ TEST(Controls, DocsListEveryControlAsHelpShowsIt) {
 TEST(Controls, EveryKeyTheWindowHandlesIsListed) {
     std::string all;
     for (const Control& c : editorControls()) all += std::string(c.keys) + ", ";
-    for (const char* key : {"1", "F", "P", "J", "Space", "Delete", "F12", "Esc", "Ctrl+Z", "Ctrl+Y",
-                            "Ctrl+N", "Ctrl+O", "Ctrl+S", "Ctrl+Shift+S", "W A S D, Q E"})
+    for (const char* key :
+         {"1", "F", "P", "J", "Space", "Delete", "F12", "Esc", "Ctrl+Z", "Ctrl+Y", "Ctrl+N",
+          "Ctrl+O", "Ctrl+S", "Ctrl+Shift+S", "W A S D, Q E", "G", "R", "T"})
         EXPECT_NE(all.find(std::string(key) + ","), std::string::npos) << key;
 }

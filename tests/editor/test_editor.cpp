@@ -507,6 +507,34 @@ TEST(Editor, AnEditAtALaterTimeIsAnEditOfTheStart) {
     EXPECT_LT(e.scene().objects[0].pos.y, 3.0f);
 }
 
+// A gizmo drag sends the whole drag so far every frame: one undo step puts the start back.
+TEST(Editor, AGizmoDragOfAnObjectOrALightIsOneUndoStep) {
+    Editor e = openEditor(
+        writeFile("gizmo-drag.txt", std::string(kScene) + "light pos:0,4,-2 color:1,1,1\n"));
+    const Scene start = e.scene();
+    Object o = start.objects[1];
+    for (float x : {3.2f, 3.4f, 3.6f}) {
+        o.pos.x = x;
+        o.size.y = x / 4.0f;
+        e.setObject(1, o, "Scale object", 7);
+    }
+    e.endEdit();
+    EXPECT_EQ(e.scene().objects[1].size.y, 0.9f);
+    for (float y : {4.0f, 5.0f}) e.moveLight(0, {1, y, 2}, 8);
+    e.endEdit();
+    EXPECT_EQ(e.scene().lights[0].vec, glm::vec3(1, 5, 2));
+    EXPECT_EQ(e.document().history().undoLabel(), "Move light");
+    ASSERT_TRUE(e.undo());
+    EXPECT_EQ(e.scene().lights[0].vec, start.lights[0].vec);
+    EXPECT_EQ(e.scene().objects[1].pos.x, 3.6f);
+    ASSERT_TRUE(e.undo());
+    EXPECT_EQ(e.scene().objects[1].pos, start.objects[1].pos);
+    EXPECT_EQ(e.scene().objects[1].size, start.objects[1].size);
+    e.setObject(5, o, "Move object", 9);  // past the end: nothing, no step
+    e.moveLight(3, {0, 0, 0}, 9);
+    EXPECT_EQ(e.document().history().undoLabel(), "");
+}
+
 TEST(Editor, TimeLabelSaysTheSimulatedSeconds) { EXPECT_EQ(timeLabel(2.345678), "t = 2.35 s"); }
 
 //-----------------------------------------------------------------------------

@@ -72,6 +72,9 @@ public:
     int pick(glm::vec2 pixel, glm::vec2 viewSize);  // selects the object there, or nothing
     bool removeSelected(std::string* why);
     void moveObject(int index, glm::vec3 pos, uint64_t mergeKey);  // a drag: one undo step
+    // A gizmo's drag: object `index` becomes `o` ("Rotate object", ...), one undo step per key.
+    void setObject(int index, const Object& o, const std::string& label, uint64_t mergeKey);
+    void moveLight(int index, glm::vec3 pos, uint64_t mergeKey);  // a point light's marker
 
     //-------------------------------------------------------------------------
     // [SECTION] Simulation
