@@ -17,7 +17,7 @@ namespace {
 
 constexpr int kRingPoints = 65;  // 64 segments, as hitGizmo() measures them
 const ImU32 kHot = IM_COL32(255, 220, 60, 255);
-const ImU32 kCentre = IM_COL32(240, 240, 240, 255);
+const ImU32 kSelected = IM_COL32(240, 240, 240, 255);  // a selected light's ring
 
 ImU32 axisColour(int axis, bool hot, int alpha = 255) {
     static const ImU32 rgb[3] = {IM_COL32(230, 70, 70, 0), IM_COL32(110, 210, 70, 0),
@@ -107,7 +107,7 @@ void drawLightMarkers(ImDrawList* dl, const Screen& s, const Scene& scene, const
         const bool selected = sel.is(ItemKind::Light, int(i));
         const float r = k.markerPixels * 0.6f;
         dl->AddCircleFilled(c, r, fill);
-        dl->AddCircle(c, r, selected ? kCentre : IM_COL32(20, 20, 20, 255), 0,
+        dl->AddCircle(c, r, selected ? kSelected : IM_COL32(20, 20, 20, 255), 0,
                       selected ? 2.5f : 1.5f);
         for (int j = 0; j < 8; ++j) {
             const float a = glm::two_pi<float>() * float(j) / 8.0f;
@@ -135,8 +135,7 @@ void drawGizmo(const UiContext& c, GizmoHandle hot, glm::vec2 viewSize) {
     if (mode == GizmoMode::Move) drawPlanes(dl, s, f, hot, k);
     if (mode == GizmoMode::Rotate) drawRings(dl, s, f, hot);
     else drawAxes(dl, s, f, mode, hot, k);
-    ImVec2 centre;
-    if (s.at(f.centre, &centre)) dl->AddCircleFilled(centre, 3.5f, kCentre);
+    // Nothing at the centre itself: the selection's own colour shows there (e2e.select).
 }
 
 void setGizmoMode(UiState& ui, GizmoMode m) {
