@@ -144,8 +144,12 @@ void ViewportInput::release(UiContext& c) {
         const glm::vec2 at = pixel({io.MousePos.x, io.MousePos.y});
         const int light =
             pickLightMarker(c.editor.scene(), at, view_, GizmoSettings{}.markerPixels);
-        if (light >= 0) c.editor.select(ItemKind::Light, light);
-        else c.editor.pick(at, view_);
+        if (light >= 0) {
+            c.editor.select(ItemKind::Light, light);
+            c.ui.showLights = true;  // its fields, as the Objects panel shows a clicked object's
+        } else {
+            c.editor.pick(at, view_);
+        }
     }
     if (drag_ == Drag::Move || drag_ == Drag::Gizmo) c.editor.endEdit();
     ground_.end();

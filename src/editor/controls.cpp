@@ -14,7 +14,7 @@ static const Control kControls[] = {
     {"Left drag a handle", "move, rotate or scale the selection (one undo step per drag)"},
     {"G, R, T", "move, rotate or scale handles"},
     {"Ctrl, dragging a handle", "snap: 0.1 m, 15 degrees, a tenth of the size"},
-    {"Click a light's marker", "select the light; drag its handles to move it"},
+    {"Click a light's marker", "select the light and show Lights; drag its handles to move it"},
     {"Ctrl drag", "move the object under the mouse over the ground"},
     {"Delete", "delete the selection"},
     {"J", "random velocities for the dynamic bodies"},
