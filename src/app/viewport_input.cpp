@@ -54,15 +54,23 @@ void ViewportInput::press(UiContext& c) {
     }
 }
 
+// The selection's handle at `at` and the frame it belongs to; kind None where there is none,
+// or while the view follows the camera keys (no handles drawn: see drawGizmo()).
+GizmoHandle ViewportInput::handleAt(const UiContext& c, glm::vec2 at, GizmoFrame* f) const {
+    const Scene& s = c.editor.scene();
+    GizmoMode mode;
+    if (c.editor.followsPath() ||
+        !selectionGizmo(s, c.editor.selection(), c.ui.gizmo, view_, f, &mode))
+        return {};
+    return hitGizmo(s.camera, *f, mode, at, view_);
+}
+
 // A press on a handle of the selection takes it; with Ctrl held too, it snaps rather than
 // starting a move over the ground.
 bool ViewportInput::grabGizmo(UiContext& c, glm::vec2 at) {
     const Scene& s = c.editor.scene();
     GizmoFrame f;
-    GizmoMode mode;
-    if (c.editor.followsPath()) return false;  // no handles drawn: see drawGizmo()
-    if (!selectionGizmo(s, c.editor.selection(), c.ui.gizmo, view_, &f, &mode)) return false;
-    const GizmoHandle h = hitGizmo(s.camera, f, mode, at, view_);
+    const GizmoHandle h = handleAt(c, at, &f);
     if (h.kind == HandleKind::None || !gizmo_.begin(s.camera, f, h, at, view_)) return false;
     held_ = c.editor.selection();
     // A light is held as an object at its place: only its centre moves.
@@ -77,12 +85,8 @@ GizmoHandle ViewportInput::hotHandle(const UiContext& c) const {
     if (drag_ == Drag::Gizmo) return gizmo_.handle;
     const ImGuiIO& io = ImGui::GetIO();
     GizmoFrame f;
-    GizmoMode mode;
-    if (drag_ != Drag::None || io.WantCaptureMouse || !ImGui::IsMousePosValid() ||
-        c.editor.followsPath() ||
-        !selectionGizmo(c.editor.scene(), c.editor.selection(), c.ui.gizmo, view_, &f, &mode))
-        return {};
-    return hitGizmo(c.editor.scene().camera, f, mode, pixel({io.MousePos.x, io.MousePos.y}), view_);
+    if (drag_ != Drag::None || io.WantCaptureMouse || !ImGui::IsMousePosValid()) return {};
+    return handleAt(c, pixel({io.MousePos.x, io.MousePos.y}), &f);
 }
 
 void ViewportInput::hold(UiContext& c) {

@@ -23,6 +23,7 @@ private:
     enum class Drag { None, Orbit, Pan, Move, Gizmo };
     glm::vec2 pixel(glm::vec2 mouse) const;  // window coordinates to a bottom-up view pixel
     void press(UiContext& c);
+    GizmoHandle handleAt(const UiContext& c, glm::vec2 at, GizmoFrame* f) const;
     bool grabGizmo(UiContext& c, glm::vec2 at);  // a press on a handle of the selection
     void hold(UiContext& c);
     void follow(UiContext& c, glm::vec2 delta);  // the drag moved the mouse by delta
