@@ -68,8 +68,8 @@ std::vector<dvec3> clip(const std::vector<dvec3>& polygon, const dvec3& n, doubl
 }
 
 // Reference face of `ref` (axis k) facing n; the other box's incident face clipped to its sides.
-std::vector<BoxContact> clipFaces(const Frame& ref, int k, const dvec3& n, const Frame& inc,
-                                  double reach, bool flip, int base) {
+std::vector<PairContact> clipFaces(const Frame& ref, int k, const dvec3& n, const Frame& inc,
+                                   double reach, bool flip, int base) {
     std::vector<dvec3> polygon = incidentFace(inc, n);
     for (int side = 1; side <= 2; ++side) {
         const dvec3& s = ref.axis[(k + side) % 3];
@@ -78,7 +78,7 @@ std::vector<BoxContact> clipFaces(const Frame& ref, int k, const dvec3& n, const
         polygon = clip(polygon, -s, -c + h);
     }
     const double face = glm::dot(ref.centre, n) + ref.half[k] * std::abs(glm::dot(ref.axis[k], n));
-    std::vector<BoxContact> out;
+    std::vector<PairContact> out;
     for (size_t i = 0; i < polygon.size(); ++i) {
         const double separation = glm::dot(polygon[i], n) - face;
         if (separation >= reach) continue;
@@ -97,8 +97,8 @@ dvec3 supportEdge(const Frame& f, int i, const dvec3& n) {
 }
 
 // Closest points of the lines p + s·u and q + t·v (not parallel), each clamped to its edge.
-BoxContact edgeContact(const Frame& a, int i, const Frame& b, int j, const dvec3& n,
-                       double separation) {
+PairContact edgeContact(const Frame& a, int i, const Frame& b, int j, const dvec3& n,
+                        double separation) {
     const dvec3 p = supportEdge(a, i, n), q = supportEdge(b, j, -n), u = a.axis[i], v = b.axis[j];
     const dvec3 w = p - q;
     const double uv = glm::dot(u, v), denom = 1.0 - uv * uv;
@@ -111,7 +111,7 @@ BoxContact edgeContact(const Frame& a, int i, const Frame& b, int j, const dvec3
 
 }  // namespace
 
-std::vector<BoxContact> collideBoxes(const BoxPose& pa, const BoxPose& pb, double reach) {
+std::vector<PairContact> collideBoxes(const BoxPose& pa, const BoxPose& pb, double reach) {
     const Frame a = frameOf(pa), b = frameOf(pb);
     Axis face, edge;
     for (int i = 0; i < 3; ++i) consider(face, a, b, a.axis[i], i);

@@ -8,6 +8,8 @@
 // an edge axis separates clearly more, so a resting stack keeps its face contacts.
 #pragma once
 
+#include "pair_contact.h"
+
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 #include <vector>
@@ -20,14 +22,7 @@ struct BoxPose {
     glm::dvec3 half;  // half extents along the box's local axes
 };
 
-struct BoxContact {
-    glm::dvec3 point;   // midway between the two surfaces
-    glm::dvec3 normal;  // unit, from a to b
-    double separation;  // < 0 overlaps
-    int feature;        // stable from step to step while the same features touch
-};
-
 // The contacts of a and b closer than `reach`; none where they are further apart.
-std::vector<BoxContact> collideBoxes(const BoxPose& a, const BoxPose& b, double reach);
+std::vector<PairContact> collideBoxes(const BoxPose& a, const BoxPose& b, double reach);
 
 }  // namespace mb

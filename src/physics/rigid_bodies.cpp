@@ -2,8 +2,9 @@
 #include "rigid_bodies.h"
 
 #include "box_box.h"
-#include "manifold_points.h"
+#include "capsule_contacts.h"
 #include "island.h"
+#include "manifold_points.h"
 #include "rigid_body.h"
 
 #include <algorithm>
@@ -253,6 +254,19 @@ double lowest(const std::vector<Candidate>& all) {
     return low;
 }
 
+BoxPose boxOf(const RigidBody& b) { return {b.pos, b.orient, dvec3(b.shape.size)}; }
+
+CapsulePose capsuleOf(const RigidBody& b) {
+    return {b.pos, b.orient, 0.5 * double(b.shape.height), double(b.shape.radius)};
+}
+
+// Where a side of an analytic contact turns from: a capsule's segment point, r + ½·s behind the
+// contact along the normal (`behind`: −1 on a's side, +1 on b's); a box's point turns with it.
+dvec3 coreOf(const RigidBody& body, const PairContact& c, double behind) {
+    if (body.shape.type != ShapeType::Capsule) return c.point;
+    return c.point + behind * (double(body.shape.radius) + 0.5 * c.separation) * c.normal;
+}
+
 }  // namespace
 
 RigidBodies::RigidBodies(const Scene& scene, const PhysicsSettings& settings)
@@ -385,7 +399,7 @@ void RigidBodies::collideStatics(int i) {
         for (const Candidate& c : candidates_) {
             RigidContact k = contactFrom(c, low, pairKey(i, -1) | std::uint64_t(f) << 8);
             k.a = fixed;
-            k.b = sideOf(b, c.point, c.centre);
+            k.b = sideOf(b, c.point, c.centreB);
             setSurface(k, combine(b.surface, statics_.surface(int(f))));
             contacts_.push_back(k);
         }
@@ -404,7 +418,7 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
         if (size_t(hit.feature) >= byFeature.size()) byFeature.resize(size_t(hit.feature) + 1);
         const dvec3 point = at - (radius + 0.5 * hit.separation) * hit.normal;
         byFeature[size_t(hit.feature)].push_back(
-            {point, hit.normal, hit.separation, probe, centre, false});
+            {point, hit.normal, hit.separation, probe, point, centre});
     };
     for (size_t k = 0; k < b.probes.size(); ++k) {
         const dvec3 c = b.pos + b.orient * b.probes[k].local;
@@ -431,14 +445,20 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
     }
 }
 
+// How far apart two bodies' points may be and still meet within the step: the slop's margin
+// and how far their relative motion and turning carry them.
+double RigidBodies::reachOf(const RigidBody& a, const RigidBody& b) const {
+    return 4.0 * settings_.linearSlop +
+           (glm::length(a.vel - b.vel) + glm::length(a.spin) * a.bound +
+            glm::length(b.spin) * b.bound) *
+               dt_;
+}
+
 // The prober's probes against the shape's SDF; `flip` where the prober is the pair's a, so
 // every normal points from a to b. Keys: offset + probe.
 void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bool flip,
                              int offset) {
-    const double reach = 4.0 * settings_.linearSlop + (glm::length(prober.vel - shape.vel) +
-                                                       glm::length(prober.spin) * prober.bound +
-                                                       glm::length(shape.spin) * shape.bound) *
-                                                          dt_;
+    const double reach = reachOf(prober, shape);
     // Most probes are far from the shape: its bounding sphere, then its distance, and only
     // then the four more samples of its normal.
     auto probe = [&](const dvec3& at, double radius, int key, const dvec3& centre) {
@@ -447,8 +467,8 @@ void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bo
         if (separation >= reach) return;
         const dvec3 normal = normalAt(shape, at);
         const dvec3 point = at - (radius + 0.5 * separation) * normal;
-        candidates_.push_back(
-            {point, flip ? -normal : normal, separation, offset + key, centre, flip});
+        candidates_.push_back({point, flip ? -normal : normal, separation, offset + key,
+                               flip ? centre : point, flip ? point : centre});
     };
     for (size_t k = 0; k < prober.probes.size(); ++k) {
         const dvec3 c = prober.pos + prober.orient * prober.probes[k].local;
@@ -470,19 +490,35 @@ void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bo
     }
 }
 
-// Boxes by their faces and edges (box_box.h); every other pair by probing both ways.
+// The pair's contacts in closed form where both are boxes or capsules (box_box.h,
+// capsule_contacts.h), normals from a to b; false for every other pair.
+bool RigidBodies::collideAnalytic(const RigidBody& a, const RigidBody& b) {
+    const ShapeType ta = a.shape.type, tb = b.shape.type;
+    const bool boxA = ta == ShapeType::Box, boxB = tb == ShapeType::Box;
+    if ((!boxA && ta != ShapeType::Capsule) || (!boxB && tb != ShapeType::Capsule)) return false;
+    const double reach = reachOf(a, b);
+    std::vector<PairContact> found;
+    if (boxA && boxB) {
+        found = collideBoxes(boxOf(a), boxOf(b), reach);
+    } else if (!boxA && !boxB) {
+        found = collideCapsules(capsuleOf(a), capsuleOf(b), reach);
+    } else if (boxB) {
+        found = collideCapsuleBox(capsuleOf(a), boxOf(b), reach);
+    } else {  // found from the capsule, b, to the box: turned to point from a to b
+        found = collideCapsuleBox(capsuleOf(b), boxOf(a), reach);
+        for (PairContact& c : found) c.normal = -c.normal;
+    }
+    for (const PairContact& c : found)
+        candidates_.push_back(
+            {c.point, c.normal, c.separation, c.feature, coreOf(a, c, -1.0), coreOf(b, c, 1.0)});
+    return true;
+}
+
+// Boxes and capsules in closed form (collideAnalytic); every other pair by probing both ways.
 void RigidBodies::collidePair(int i, int j) {
     candidates_.clear();
     const RigidBody &bi = bodies_[size_t(i)], &bj = bodies_[size_t(j)];
-    if (bi.shape.type == ShapeType::Box && bj.shape.type == ShapeType::Box) {
-        const double reach = 4.0 * settings_.linearSlop +
-                             (glm::length(bi.vel - bj.vel) + glm::length(bi.spin) * bi.bound +
-                              glm::length(bj.spin) * bj.bound) *
-                                 dt_;
-        for (const BoxContact& c : collideBoxes({bi.pos, bi.orient, dvec3(bi.shape.size)},
-                                                {bj.pos, bj.orient, dvec3(bj.shape.size)}, reach))
-            candidates_.push_back({c.point, c.normal, c.separation, c.feature, c.point, false});
-    } else {
+    if (!collideAnalytic(bi, bj)) {
         probeShape(bj, bi, false, 0);
         probeShape(bi, bj, true, 128);
     }
@@ -491,8 +527,8 @@ void RigidBodies::collidePair(int i, int j) {
     RigidBody &a = bodies_[size_t(i)], &b = bodies_[size_t(j)];
     for (const Candidate& c : candidates_) {
         RigidContact k = contactFrom(c, low, pairKey(i, j));
-        k.a = sideOf(a, c.point, c.proberIsA ? c.centre : c.point);
-        k.b = sideOf(b, c.point, c.proberIsA ? c.point : c.centre);
+        k.a = sideOf(a, c.point, c.centreA);
+        k.b = sideOf(b, c.point, c.centreB);
         setSurface(k, combine(a.surface, b.surface));
         contacts_.push_back(k);
         touching_[size_t(i)] |= b.awake && glm::length(b.vel) > settings_.sleepSpeed;

@@ -3,7 +3,8 @@
 //
 // A body's probes (rigid_probes.h) are tested against the SDF of whatever it may touch: the
 // static scene and the ground, another body (both ways: each one's probes against the other's
-// shape), or a sphere. Each pair keeps at most four of its points, the deepest and then those
+// shape), or a sphere. Boxes and capsules meet each other in closed form instead (box_box.h,
+// capsule_contacts.h). Each pair keeps at most four of its points, the deepest and then those
 // that span the largest area, so a box rests flat on four corners; points keep their probe's
 // key across steps and start from last step's impulses.
 //
@@ -130,15 +131,18 @@ private:
     struct Candidate {
         glm::dvec3 point, normal;  // normal from a to b
         double separation;
-        int probe;          // key within the pair
-        glm::dvec3 centre;  // of the probe, which belongs to b, or to a where proberIsA
-        bool proberIsA;
+        int probe;  // key within the pair
+        // Where each side's anchor turns from (sideOf's `centre`): a probe's centre, a capsule's
+        // segment point, or the point itself where it turns with the body (a corner).
+        glm::dvec3 centreA, centreB;
     };
     void collideStatics(int i);
     void collidePair(int i, int j);
     void collideSphere(int i, PhysicsBody& sphere, int sphereIndex);
     void probeStatics(int i, std::vector<std::vector<Candidate>>& byFeature);
     void probeShape(const RigidBody& prober, const RigidBody& shape, bool flip, int offset);
+    bool collideAnalytic(const RigidBody& a, const RigidBody& b);
+    double reachOf(const RigidBody& a, const RigidBody& b) const;
     void sortBottomUp();
     static RigidContact contactFrom(const Candidate& c, double height, std::uint64_t pair);
     // `centre`: the probe's, where b holds it; else the point itself, a point of b's surface.

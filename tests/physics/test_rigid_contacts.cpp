@@ -163,3 +163,102 @@ TEST(RigidContacts, ThinFastBoxDoesNotPassThroughAWall) {
     run(w, 0.5);
     EXPECT_LT(w.rigid(0).pos.x, 2.0 - 0.05) << "passed into or through the wall";
 }
+
+namespace {
+
+// A capsule (r = 0.1, segment 0.4) dropped along x onto a heavy box lying on the ground, tilted
+// by `tilt` degrees, from 2 cm above the face.
+Scene capsuleOnBoxScene(float tilt) {
+    Scene s = physicsWorld(9.81f, 0.2f, 0.5f, true);
+    s.objects.push_back(dynamicBox({0, 0.1f, 0}, {0.5f, 0.1f, 0.4f}, 10.0f));
+    Object capsule = dynamicShape(ShapeType::Capsule, {0.05f, 0.32f, 0}, 1.0f);
+    capsule.radius = 0.1f;
+    capsule.height = 0.4f;
+    capsule.rot = {0.0f, 0.0f, 90.0f - tilt};
+    if (tilt > 0.0f) capsule.pos.y += 0.2f * std::sin(float(tilt) * float(M_PI) / 180.0f);
+    s.objects.push_back(capsule);
+    return s;
+}
+
+// Each of a line's two points may rest anywhere within the rows' slop (0.1 · linearSlop) of
+// its surface, so a capsule lying on points 0.4 apart is level to 0.1 · linearSlop / 0.4 rad.
+double levelBound(const PhysicsWorld& w) { return 0.1 * w.settings().linearSlop / 0.4; }
+
+// After 3 s the capsule lies on the face (its line of two points): its centre at the box's top
+// + r, within the linear slop the solver allows, level (levelBound) and with no spin left
+// (< 1e-3 rad/s). On one point it would rock about it and tilt.
+void expectRestingFlat(float tilt) {
+    PhysicsSettings awake;  // sleep would zero the spin this measures
+    awake.sleep = false;
+    PhysicsWorld w(capsuleOnBoxScene(tilt), awake);
+    run(w, 3.0);
+    const RigidState box = w.rigid(0), capsule = w.rigid(1);
+    const double top = box.pos.y + 0.1, level = std::abs((capsule.orient * dvec3(0, 1, 0)).y);
+    std::printf("capsule on box, tilt %g: above the top by %.5f m, axis %.3g rad, spin %.3g\n",
+                double(tilt), capsule.pos.y - top, level, glm::length(capsule.spin));
+    EXPECT_NEAR(capsule.pos.y, top + 0.1, w.settings().linearSlop);
+    EXPECT_LT(level, levelBound(w));
+    EXPECT_LT(glm::length(capsule.spin), 1e-3);
+}
+
+}  // namespace
+
+TEST(RigidContacts, CapsuleLyingOnABoxRestsFlatAtItsRadius) { expectRestingFlat(0.0f); }
+
+TEST(RigidContacts, CapsuleDroppedTiltedOnABoxComesToRestFlat) { expectRestingFlat(20.0f); }
+
+// A capsule (segment 0.6) lying on another on the ground, shifted 0.2 along it: its centre is
+// over their overlap, so it rests there on the overlap's two ends (0.4 apart), level
+// (levelBound), its centre 2r above the lower one's within the slop, and still (< 0.01 rad/s).
+// On the one closest point (under the lower one's centre) it would rock, at 0.2 rad/s.
+TEST(RigidContacts, ParallelCapsuleRestsOnAShiftedOne) {
+    Scene s = physicsWorld(9.81f, 0.2f, 0.5f, true);
+    for (float x : {0.0f, 0.2f}) {
+        Object capsule = dynamicShape(ShapeType::Capsule, {x, x == 0.0f ? 0.1f : 0.31f, 0}, 1.0f);
+        capsule.radius = 0.1f;
+        capsule.height = 0.6f;
+        capsule.rot = {0.0f, 0.0f, 90.0f};
+        s.objects.push_back(capsule);
+    }
+    PhysicsSettings awake;  // sleep would stop the tipping this looks for
+    awake.sleep = false;
+    PhysicsWorld w(s, awake);
+    run(w, 3.0);
+    const RigidState lower = w.rigid(0), upper = w.rigid(1);
+    const double level = std::abs((upper.orient * dvec3(0, 1, 0)).y);
+    std::printf("capsule on capsule: %.5f m above, axis %.3g rad, shift %.4f m, spin %.3g\n",
+                upper.pos.y - lower.pos.y, level, upper.pos.x - lower.pos.x,
+                glm::length(upper.spin));
+    EXPECT_NEAR(upper.pos.y - lower.pos.y, 0.2, w.settings().linearSlop);
+    EXPECT_LT(level, levelBound(w));
+    EXPECT_NEAR(upper.pos.x - lower.pos.x, 0.2, 0.01);
+    EXPECT_LT(glm::length(upper.spin), 0.01);
+}
+
+// A capsule rolling without slipping at 6 m/s (60 rad/s) across a long heavy box stays on the
+// face: its centre within 1 mm of the box's top + r the whole way (0.55 s), twice the rows'
+// slop (0.1 · linearSlop: it rests 0.6 mm deep). Its contact stays under its segment as it
+// turns; were the contact's anchor carried round with the body, each substep's rows would see
+// the surface fall away under it and let it sink (4.3 mm).
+TEST(RigidContacts, CapsuleRollsAcrossABoxAtItsRadius) {
+    Scene s = physicsWorld(9.81f, 0.0f, 0.8f, true);
+    s.objects.push_back(dynamicBox({0, 0.1f, 0}, {2.0f, 0.1f, 0.5f}, 100.0f));
+    Object capsule = dynamicShape(ShapeType::Capsule, {-1.8f, 0.3f, 0}, 1.0f);
+    capsule.radius = 0.1f;
+    capsule.height = 0.4f;
+    capsule.rot = {90.0f, 0.0f, 0.0f};  // its axis along z, across the way it rolls
+    capsule.vel = {6.0f, 0.0f, 0.0f};
+    capsule.spin = {0.0f, 0.0f, -60.0f};
+    s.objects.push_back(capsule);
+    PhysicsSettings awake;
+    awake.sleep = false;
+    PhysicsWorld w(s, awake);
+    double worst = 0.0;
+    for (int i = 0; i < stepsFor(0.55, w.settings()); ++i) {
+        w.step();
+        worst = std::max(worst, std::abs(w.rigid(1).pos.y - (w.rigid(0).pos.y + 0.2)));
+    }
+    std::printf("rolling capsule: %.4f m from the top + r at worst, at x = %.3f\n", worst,
+                w.rigid(1).pos.x);
+    EXPECT_LT(worst, 0.2 * w.settings().linearSlop);
+}
