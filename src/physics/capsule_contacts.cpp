@@ -74,13 +74,14 @@ dvec3 crossingNormal(const Segment& a, const Segment& b) {
     return glm::dot(w, b.centre - a.centre) < 0.0 ? -w : w;
 }
 
-// Where b's projection onto a's axis overlaps a, as a's parameters; false where it does not.
+// Where b's projection onto a's axis overlaps a, as a's parameters; false where it covers no
+// more than a quarter of the shorter segment (crossing near square, or end to end).
 bool overlapOnA(const Segment& a, const Segment& b, double& lo, double& hi) {
     const double q = glm::dot(b.centre - a.centre, a.axis);
     const double e = b.half * std::abs(glm::dot(a.axis, b.axis));
     lo = std::max(-a.half, q - e);
     hi = std::min(a.half, q + e);
-    return hi - lo > 1e-6 * (a.half + b.half);
+    return hi - lo > 0.5 * std::min(a.half, b.half);
 }
 
 //-----------------------------------------------------------------------------
@@ -189,8 +190,7 @@ std::vector<PairContact> collideCapsules(const CapsulePose& pa, const CapsulePos
         sphereContact(at(a, p.s), pa.radius, at(b, p.t), pb.radius, crossingNormal(a, b), 0);
     if (closest.separation >= reach) return {};
     double lo, hi;
-    if (glm::length(glm::cross(a.axis, b.axis)) >= kAligned || !overlapOnA(a, b, lo, hi))
-        return {closest};
+    if (!overlapOnA(a, b, lo, hi)) return {closest};
     PairContact ends[2];
     for (int i = 0; i < 2; ++i) {
         const dvec3 end = at(a, i == 0 ? lo : hi);

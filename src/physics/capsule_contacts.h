@@ -7,11 +7,16 @@
 // the box, or the segment against one of its twelve edges); where the segment reaches into the
 // box, the face it lies least deep behind.
 //
-// A segment lying along the other shape (within kAligned of parallel to the other segment or to
-// the box's face) touches along a line. The line's two ends, the segment clipped to the other's
-// extent, are its points, so a capsule lying on either rests on two points and does not rock
-// on one. Where the closest point lies deeper than both ends (segments crossing at a small
-// angle, a segment dipping past a face's edge), it is kept as well.
+// A segment lying along the other shape touches along a line. The line's two ends, the segment
+// clipped to the other's extent, are its points, so a capsule lying on either rests on two
+// points and does not rock on one. Where the closest point lies deeper than both ends
+// (segments crossing at an angle, a segment dipping past a face's edge), it is kept as well.
+// - Along a box face: within kAligned of parallel to it.
+// - Along another segment: wherever one's projection onto the other covers more than a
+//   quarter of the shorter one, whatever the angle. The ends are then points of speculative
+//   contact that a single closest point would miss: two capsules crossing at 10° to 45° and
+//   turning as they land slid through each other on one point (5.8 cm deep in the mixed pile
+//   of 1000, 1.8 cm with the ends).
 // Features: 0 the closest point, 1 and 2 the line's ends.
 #pragma once
 
@@ -24,7 +29,7 @@
 
 namespace mb {
 
-constexpr double kAligned = 0.05;  // sine of the angle within which a segment lies along (2.9°)
+constexpr double kAligned = 0.05;  // a segment lies along a face within this sine: 2.9°
 
 struct CapsulePose {
     glm::dvec3 centre;

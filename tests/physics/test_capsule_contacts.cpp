@@ -72,18 +72,21 @@ TEST(CapsuleContacts, ParallelCapsulesTouchAtBothEndsOfTheirOverlap) {
     }
 }
 
-// Crossing at β = 2° (within the aligned range): the line's ends lie √(0.19² + (0.15·sin 2β)²)
-// apart, higher than the centre, which sinks deepest and is kept as well.
-TEST(CapsuleContacts, CapsulesCrossingAtASmallAngleKeepTheDeeperMiddle) {
-    const double beta = 2.0 * M_PI / 180.0;
-    const dquat turned = glm::angleAxis(-beta, dvec3(0, 1, 0)) * kAlongX;
-    const auto found = collideCapsules({dvec3(0.0), kAlongX, 0.3, 0.1},
-                                       {dvec3(0, 0.19, 0), turned, 0.3, 0.1}, 0.02);
-    ASSERT_EQ(found.size(), 3u);
-    expectContact(found[0], dvec3(0, 0.095, 0), dvec3(0, 1, 0), -0.01);
-    const double ends = std::hypot(0.19, 0.15 * std::sin(2.0 * beta)) - 0.2;
-    EXPECT_NEAR(found[1].separation, ends, kExact);
-    EXPECT_NEAR(found[2].separation, ends, kExact);
+// Crossing at β, one 0.19 above the other: the centre sinks deepest, and the ends of their
+// overlap lie √(0.19² + (0.15·sin 2β)²) apart, higher: points that a turning pair would meet.
+// At 2° they touch (1 cm deep, like the centre); at 30°, 3 cm apart, they are speculative.
+TEST(CapsuleContacts, CapsulesCrossingAtAnAngleKeepTheirOverlapsEnds) {
+    for (double degrees : {2.0, 30.0}) {
+        const double beta = degrees * M_PI / 180.0;
+        const dquat turned = glm::angleAxis(-beta, dvec3(0, 1, 0)) * kAlongX;
+        const auto found = collideCapsules({dvec3(0.0), kAlongX, 0.3, 0.1},
+                                           {dvec3(0, 0.19, 0), turned, 0.3, 0.1}, 0.05);
+        ASSERT_EQ(found.size(), 3u) << degrees << "°";
+        expectContact(found[0], dvec3(0, 0.095, 0), dvec3(0, 1, 0), -0.01);
+        const double ends = std::hypot(0.19, 0.15 * std::sin(2.0 * beta)) - 0.2;
+        EXPECT_NEAR(found[1].separation, ends, kExact) << degrees << "°";
+        EXPECT_NEAR(found[2].separation, ends, kExact) << degrees << "°";
+    }
 }
 
 TEST(CapsuleContacts, CapsulesApartBeyondReachDoNotTouch) {
