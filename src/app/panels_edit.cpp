@@ -237,6 +237,23 @@ static void listButtons(UiContext& c, ItemKind k) {
     if (k == ItemKind::Object) moveButtons(c, chosen, why);
 }
 
+// A row of the Objects list dragged onto another moves there, one undo step, as Move up and
+// Move down do one place at a time.
+static void dragToReorder(UiContext& c, int row, const std::string& name) {
+    static const char* kPayload = "object row";
+    if (ImGui::BeginDragDropSource()) {
+        ImGui::SetDragDropPayload(kPayload, &row, sizeof row);
+        ImGui::TextUnformatted(name.c_str());
+        ImGui::EndDragDropSource();
+    }
+    if (!ImGui::BeginDragDropTarget()) return;
+    if (const ImGuiPayload* p = ImGui::AcceptDragDropPayload(kPayload)) {
+        const int from = *static_cast<const int*>(p->Data);
+        if (from != row) c.editor.reorder(from, row - from, c.ui.messages.at(Place::Objects));
+    }
+    ImGui::EndDragDropTarget();
+}
+
 static void itemList(UiContext& c, ItemKind k, const char* title) {
     const Scene& s = c.editor.scene();
     ImGui::BeginChild("list", ImVec2(0, 150), true);
@@ -252,6 +269,7 @@ static void itemList(UiContext& c, ItemKind k, const char* title) {
         const std::string name = itemName(s, k, i);
         if (ImGui::Selectable(name.c_str(), c.editor.selection().is(k, i))) c.editor.select(k, i);
         markItem(std::string(title) + "/" + name);
+        if (k == ItemKind::Object) dragToReorder(c, i, name);
         ImGui::PopID();
     }
     ImGui::EndChild();

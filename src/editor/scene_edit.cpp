@@ -3,6 +3,7 @@
 
 #include "marchbox/scene/sdf.h"
 
+#include <algorithm>
 #include <random>
 
 namespace mb {
@@ -163,7 +164,10 @@ int reorderObject(Scene& s, int index, int by, std::string* why) {
         *why = "object " + std::to_string(index) + " is already " + (by < 0 ? "first" : "last");
         return -1;
     }
-    std::swap(s.objects[size_t(index)], s.objects[size_t(to)]);
+    // The ones between shift one place towards where it was: a drag from 0 onto 3 gives 1 2 3 0.
+    auto at = [&](int i) { return s.objects.begin() + i; };
+    if (by < 0) std::rotate(at(to), at(index), at(index + 1));
+    else std::rotate(at(index), at(index + 1), at(to + 1));
     return to;
 }
 

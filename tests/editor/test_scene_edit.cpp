@@ -155,3 +155,21 @@ TEST(Selection, ClampsToTheList) {
     selectionClamp(sel, s);
     EXPECT_EQ(sel.object(), 0);
 }
+
+// A drag in the Objects list moves a row several places; the rows it passes close up behind.
+TEST(SceneEdit, ReorderMovesAnObjectPastSeveralKeepingTheOthersInOrder) {
+    Scene s;
+    for (int i = 0; i < 4; ++i) s.objects.emplace_back().name = std::to_string(i);
+    auto order = [&] {
+        std::string o;
+        for (const Object& obj : s.objects) o += obj.name;
+        return o;
+    };
+    std::string why;
+    EXPECT_EQ(reorderObject(s, 0, 3, &why), 3);
+    EXPECT_EQ(order(), "1230");
+    EXPECT_EQ(reorderObject(s, 3, -2, &why), 1);
+    EXPECT_EQ(order(), "1023");
+    EXPECT_EQ(reorderObject(s, 1, 3, &why), -1);  // past the end: refused, nothing moved
+    EXPECT_EQ(order(), "1023");
+}

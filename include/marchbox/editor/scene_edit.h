@@ -41,8 +41,9 @@ int duplicateItem(Scene& s, ItemKind k, int index, std::string* why);
 // objects remain.
 bool deleteItem(Scene& s, ItemKind k, int index, std::string* why);
 
-// Moves object `index` by `by` places in the list (−1: up, earlier in the CSG chain; +1: down),
-// its comment lines with it. Returns its new index, or -1 with *why past either end.
+// Moves object `index` by `by` places in the list (−1: up, earlier in the CSG chain; +1: down;
+// more for a drag in the Objects list), its comment lines with it, the objects it passes one
+// place the other way. Returns its new index, or -1 with *why past either end.
 int reorderObject(Scene& s, int index, int by, std::string* why);
 
 // Empties a list. Clearing materials leaves one default material when objects remain.
