@@ -10,7 +10,7 @@ namespace mb {
 // The baked frames of the run from this start, to scrub through: one drag is one undo step.
 static void timeline(UiContext& c) {
     Editor& e = c.editor;
-    const float end = float(e.simulation().cache().end(e.document().startShared()));
+    const float end = float(e.simulation().cache().end());
     float t = float(e.document().time());
     ImGui::BeginDisabled(end <= 0.0f);
     if (ImGui::SliderFloat("t (s)", &t, 0.0f, std::max(end, 0.01f), "%.2f"))

@@ -29,6 +29,7 @@ void Document::replace(const Scene& scene, const std::string& path) {
     saved_ = scene;
     time_ = 0;
     start_.reset();
+    run_.reset();
     moments_.clear();
     ++version_;
     ++opened_;
@@ -65,6 +66,14 @@ static bool sameObjects(const Scene& a, const Scene& b) {
     return probe == a;
 }
 
+// What the simulator reads: the rest (camera, looks, keys) leaves the run as it was.
+static bool sameMotion(const Scene& a, const Scene& b) {
+    Scene pa, pb;
+    pa.objects = a.objects, pa.world = a.world;
+    pb.objects = b.objects, pb.world = b.world;
+    return pa == pb;
+}
+
 void Document::apply(const std::string& label, const SceneChange& change, uint64_t mergeKey) {
     const uint64_t was = history_.state();
     Scene before = scene_;
@@ -73,15 +82,27 @@ void Document::apply(const std::string& label, const SceneChange& change, uint64
         Scene s = *start_;
         change(s);
         start_ = std::make_shared<const Scene>(std::move(s));
-    } else if (start_) {
-        scene_ = start();  // the change's camera, the start's bodies
+    } else if (start_ && time_ == 0) {  // scrubbed back to the start: an edit of it
+        scene_ = start();               // the change's camera, the start's bodies
         start_.reset();
-        time_ = 0;
         change(scene_);
     }
+    if (!sameMotion(scene_, before)) edited(time_);
     ++version_;
     history_.push(label, before, scene_, mergeKey);
     pushed(was);
+}
+
+void Document::edited(double t) {
+    if (t <= 0) {  // an edit of the start: nothing has run from it yet
+        run_.reset();
+        return;
+    }
+    const std::shared_ptr<const RunPiece>& at = pieceAt(run_, t);
+    // Edits at one time (each frame of a drag) make one piece: the last replaces the others.
+    std::shared_ptr<const RunPiece> before = at && at->from == t ? at->before : at;
+    auto objects = std::make_shared<const std::vector<Object>>(scene_.objects);
+    run_ = std::make_shared<const RunPiece>(RunPiece{t, std::move(objects), std::move(before)});
 }
 
 void Document::commit(const std::string& label, const Scene& before) {
@@ -94,13 +115,20 @@ void Document::commit(const std::string& label, const Scene& before) {
 
 Scene& Document::moving(double seconds) {
     if (!start_) start_ = std::make_shared<const Scene>(scene_);
+    if (!run_) run_ = std::make_shared<const RunPiece>();  // from 0, with the start's objects
+    run_ = pieceAt(run_, time_);  // an edit after now is no part of what follows
     time_ += seconds;
     return live();
 }
 
+// The run stays: it is still the run from this start, to scrub forward again.
 bool Document::rewind(const std::string& label) { return start_ && restart(label, start()); }
 
-bool Document::keep(const std::string& label) { return start_ && restart(label, scene_); }
+bool Document::keep(const std::string& label) {
+    if (!start_) return false;
+    run_.reset();  // a new start: nothing has run from it
+    return restart(label, scene_);
+}
 
 bool Document::restart(const std::string& label, const Scene& first) {
     const uint64_t was = history_.state();
@@ -114,14 +142,14 @@ bool Document::restart(const std::string& label, const Scene& first) {
     return true;
 }
 
-bool Document::seek(const std::string& label, double t, const SceneChange& pose,
-                    uint64_t mergeKey) {
-    if (!start_) return false;
+bool Document::seek(const std::string& label, const BakedFrame* frame, uint64_t mergeKey) {
+    if (!run_) return false;
     const uint64_t was = history_.state();
     Scene before = scene_;
+    if (!start_ && frame) start_ = std::make_shared<const Scene>(scene_);
     scene_ = start();
-    if (t > 0) pose(scene_);
-    time_ = t;
+    if (frame) applyFrame(*frame, scene_);
+    time_ = frame ? frame->t : 0;
     ++version_;
     history_.pushEvenIfSame(label, before, scene_, mergeKey);
     pushed(was);
@@ -131,13 +159,14 @@ bool Document::seek(const std::string& label, double t, const SceneChange& pose,
 void Document::pushed(uint64_t was) {
     const uint64_t now = history_.state();
     if (now == was) return;  // nothing was recorded
-    if (start_) moments_[now] = {time_, start_};
+    if (start_ || run_) moments_[now] = {time_, start_, run_};
 }
 
 void Document::recall() {
     auto m = moments_.find(history_.state());
     time_ = m == moments_.end() ? 0 : m->second.time;
     start_ = m == moments_.end() ? nullptr : m->second.start;
+    run_ = m == moments_.end() ? nullptr : m->second.run;
 }
 
 void Document::restore(const Scene& target, bool stepMovedCamera) {

@@ -151,7 +151,7 @@ bool Editor::redo() {
 // Runs a scene_edit command inside an undo step, keeping the scene untouched if it refuses.
 template <typename Command>
 static bool tryEdit(Editor& e, const std::string& label, Command command) {
-    Scene trial = e.document().start();  // an edit of the objects is an edit at t = 0
+    Scene trial = e.scene();  // made at the time shown, as every edit is
     if (!command(trial)) return false;
     e.edit(label, [&](Scene& s) { s = trial; });
     return true;
@@ -278,6 +278,7 @@ void Editor::resetSimulation() {
 bool Editor::keepPoses() {
     sim_.pause(doc_);
     if (!doc_.keep("Keep simulated poses")) return false;
+    sim_.sceneChanged(doc_);  // nothing has run from the new start
     emitEvent("keep");
     return true;
 }
@@ -330,12 +331,9 @@ bool Editor::deleteCameraKey() {
 bool Editor::seek(double t, uint64_t mergeKey) {
     sim_.pause(doc_);
     // Frame times are sums of steps: one a rounding error past t still counts as at t.
-    const BakedFrame* f = sim_.cache().at(doc_.startShared(), t + 1e-9);
-    const double to = f ? f->t : 0.0;
-    if (!doc_.seek(
-            "Scrub", to, [&](Scene& s) { applyFrame(*f, s); }, mergeKey))
-        return false;
+    if (!doc_.seek("Scrub", sim_.cache().at(t + 1e-9), mergeKey)) return false;
     sim_.sceneChanged(doc_);
+    const double to = doc_.time();
     if (mergeKey == 0 || mergeKey != loggedKey_) emitEvent("seek " + timeLabel(to));
     loggedKey_ = mergeKey;
     return true;

@@ -5,13 +5,18 @@
 
 namespace mb {
 
-void FrameCache::record(const std::shared_ptr<const Scene>& start, double t, const Scene& scene) {
-    if (start != start_) frames_.clear();
-    start_ = start;
+const std::shared_ptr<const RunPiece>& pieceAt(const std::shared_ptr<const RunPiece>& run,
+                                               double t) {
+    const std::shared_ptr<const RunPiece>* p = &run;
+    while (*p && (*p)->from > t && (*p)->before) p = &(*p)->before;
+    return *p;
+}
+
+void FrameCache::record(const std::shared_ptr<const RunPiece>& run, double t, const Scene& scene) {
     // A run going on from an earlier time (after a scrub or an undo) replaces what followed.
     while (!frames_.empty() && frames_.back().t >= t) frames_.pop_back();
-    if (!start || frames_.size() >= kMaxFrames) return;
-    BakedFrame f{t, {}};
+    if (!run || frames_.size() >= kMaxFrames) return;
+    BakedFrame f{t, pieceAt(run, t), {}};
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
         if (o.dynamic()) f.bodies.push_back({int(i), o.pos, o.vel, o.spin, o.orient});
@@ -19,18 +24,23 @@ void FrameCache::record(const std::shared_ptr<const Scene>& start, double t, con
     frames_.push_back(std::move(f));
 }
 
-const BakedFrame* FrameCache::at(const std::shared_ptr<const Scene>& start, double t) const {
-    if (!start || start != start_) return nullptr;
+void FrameCache::follow(const std::shared_ptr<const RunPiece>& run) {
+    auto stray = std::find_if(frames_.begin(), frames_.end(), [&](const BakedFrame& f) {
+        return !run || f.piece != pieceAt(run, f.t);
+    });
+    frames_.erase(stray, frames_.end());
+}
+
+const BakedFrame* FrameCache::at(double t) const {
     auto after = std::upper_bound(frames_.begin(), frames_.end(), t,
                                   [](double v, const BakedFrame& f) { return v < f.t; });
     return after == frames_.begin() ? nullptr : &*(after - 1);
 }
 
-double FrameCache::end(const std::shared_ptr<const Scene>& start) const {
-    return start && start == start_ && !frames_.empty() ? frames_.back().t : 0.0;
-}
+double FrameCache::end() const { return frames_.empty() ? 0.0 : frames_.back().t; }
 
 void applyFrame(const BakedFrame& frame, Scene& scene) {
+    if (frame.piece && frame.piece->objects) scene.objects = *frame.piece->objects;
     for (const BodyState& b : frame.bodies) {
         if (b.object >= int(scene.objects.size())) continue;
         Object& o = scene.objects[size_t(b.object)];

@@ -28,6 +28,10 @@ void Simulation::commitRun(Document& doc) {
 
 void Simulation::sceneChanged(Document& doc) {
     world_.reset();
+    cache_.follow(doc.run());
+    // An edit at t (or an undo to a time the cache lost) shows a frame of the run: the first
+    // of what follows.
+    if (doc.time() > cache_.end()) cache_.record(doc.run(), doc.time(), doc.scene());
     if (playing_) runStart_ = doc.scene();
 }
 
@@ -37,13 +41,13 @@ void Simulation::step(Document& doc) {
     ensureWorld(before);
     world_->step();
     world_->writeBack(doc.moving(settings_.dt));
-    cache_.record(doc.startShared(), doc.time(), doc.scene());
+    cache_.record(doc.run(), doc.time(), doc.scene());
     doc.commit("Simulation step", before);
 }
 
 void Simulation::reset(Document& doc) {
     pause(doc);
-    if (doc.rewind("Reset simulation")) world_.reset();
+    if (doc.rewind("Reset simulation")) sceneChanged(doc);
 }
 
 int Simulation::advance(Document& doc, double frameSeconds) {
@@ -53,7 +57,7 @@ int Simulation::advance(Document& doc, double frameSeconds) {
     ensureWorld(doc.scene());
     for (int i = 0; i < steps; ++i) world_->step();
     world_->writeBack(doc.moving(steps * settings_.dt));
-    cache_.record(doc.startShared(), doc.time(), doc.scene());
+    cache_.record(doc.run(), doc.time(), doc.scene());
     return steps;
 }
 

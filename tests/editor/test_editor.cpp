@@ -489,22 +489,31 @@ TEST(Editor, EditingTheCameraKeepsTheSimulatedTime) {
     EXPECT_EQ(e.document().start().camera.fov, 30.0f);
 }
 
-// Gravity edited at t > 0 goes to the start too and the run carries on; moving an object is
-// an edit of the start, where the view goes back to.
-TEST(Editor, AnEditAtALaterTimeIsAnEditOfTheStart) {
+// Gravity edited at t > 0 goes to the start too and the run carries on; moving an object at
+// t > 0 is an event of the run, made there: the time and the start stay.
+TEST(Editor, AnEditAtALaterTimeIsMadeAtThatTime) {
     Editor e = openEditor(writeFile("edit-later.txt", kScene));
     run(e, 30);
     e.edit("Gravity", [](Scene& s) { s.world.gravity = 2; });
     EXPECT_NEAR(e.document().time(), 0.5, 1e-9);
     EXPECT_EQ(e.document().start().world.gravity, 2.0f);
 
+    const glm::vec3 fallen = e.scene().objects[0].pos;
     e.moveObject(1, {4, 0.5f, 0}, 0);
-    EXPECT_EQ(e.document().time(), 0.0);
-    EXPECT_EQ(e.scene().objects[0].pos, glm::vec3(0, 3, 0));  // the sphere back at its start
+    EXPECT_NEAR(e.document().time(), 0.5, 1e-9);
+    EXPECT_EQ(e.scene().objects[0].pos, fallen);
     EXPECT_EQ(e.scene().objects[1].pos, glm::vec3(4, 0.5f, 0));
+    EXPECT_EQ(e.document().start().objects[1].pos, glm::vec3(3, 0.5f, 0));
     e.undo();
     EXPECT_NEAR(e.document().time(), 0.5, 1e-9);
-    EXPECT_LT(e.scene().objects[0].pos.y, 3.0f);
+    EXPECT_EQ(e.scene().objects[1].pos, glm::vec3(3, 0.5f, 0));
+
+    std::string why;
+    ASSERT_TRUE(e.add(ItemKind::Object, &why)) << why;  // the others stay where they are shown
+    EXPECT_NEAR(e.document().time(), 0.5, 1e-9);
+    EXPECT_EQ(e.scene().objects.size(), 3u);
+    EXPECT_EQ(e.scene().objects[0].pos, fallen);
+    EXPECT_EQ(e.document().start().objects.size(), 2u);
 }
 
 // A gizmo drag sends the whole drag so far every frame: one undo step puts the start back.
@@ -593,7 +602,7 @@ TEST(Editor, ScrubbingShowsEachBakedFrameAndGoesForwardAgain) {
     run(quarter, 15);
     run(e, 60);
     const glm::vec3 end = e.scene().objects[0].pos;
-    EXPECT_NEAR(e.simulation().cache().end(e.document().startShared()), 1.0, 1e-9);
+    EXPECT_NEAR(e.simulation().cache().end(), 1.0, 1e-9);
 
     ASSERT_TRUE(e.seek(0.25));
     EXPECT_NEAR(e.document().time(), 0.25, 1e-9);
@@ -612,13 +621,58 @@ TEST(Editor, ScrubbingShowsEachBakedFrameAndGoesForwardAgain) {
 TEST(Editor, AnEditOfTheStartDropsTheBakedFrames) {
     Editor e = openEditor(writeFile("scrub-edit.txt", kScene));
     run(e, 30);
-    e.edit("Gravity", [](Scene& s) { s.world.gravity = 2; });  // the time stays; the past differs
-    ASSERT_TRUE(e.seek(0.25));
-    EXPECT_EQ(e.document().time(), 0.0);  // no frame of the run from the new start before 0.5 s
+    ASSERT_TRUE(e.seek(0));
     e.moveObject(0, {1, 3, 0}, 0);
+    EXPECT_EQ(e.simulation().cache().end(), 0.0);
+    EXPECT_FALSE(e.seek(0.25));  // nothing has run from the new start
     run(e, 10);
-    EXPECT_LT(e.simulation().cache().end(e.document().startShared()), 0.2);
     ASSERT_TRUE(e.seek(0.4));  // only the new run's frames: its last
     EXPECT_NEAR(e.document().time(), 10.0 / 60, 1e-9);
     EXPECT_EQ(e.scene().objects[0].pos.x, 1.0f);
+}
+
+// Dragging the sphere at 0.5 s of a 1 s run: what ran before stays to scrub, what came after
+// goes, and the run goes on from the sphere where it was put.
+TEST(Editor, AnEditAtALaterTimeDropsOnlyTheFramesAfterIt) {
+    Editor e = openEditor(writeFile("scrub-later.txt", kScene));
+    Editor quarter = openEditor(writeFile("scrub-later-quarter.txt", kScene));
+    run(quarter, 15);
+    run(e, 60);
+    ASSERT_TRUE(e.seek(0.5));
+    e.moveObject(0, {1, 3, 0}, 7);
+    e.moveObject(0, {2, 3, 0}, 7);  // one drag: one edit at 0.5 s
+    e.endEdit();
+    EXPECT_NEAR(e.document().time(), 0.5, 1e-9);
+    EXPECT_NEAR(e.simulation().cache().end(), 0.5, 1e-9);
+    EXPECT_EQ(e.document().start().objects[0].pos, glm::vec3(0, 3, 0));
+
+    ASSERT_TRUE(e.seek(0.25));
+    EXPECT_EQ(e.scene().objects[0].pos, quarter.scene().objects[0].pos);
+    ASSERT_TRUE(e.seek(0.5));
+    EXPECT_EQ(e.scene().objects[0].pos, glm::vec3(2, 3, 0));
+    run(e, 15);
+    EXPECT_NEAR(e.simulation().cache().end(), 0.75, 1e-9);
+    EXPECT_EQ(e.scene().objects[0].pos.x, 2.0f);
+    EXPECT_LT(e.scene().objects[0].pos.y, 3.0f);  // it fell on from where it was put
+
+    for (int i = 0; i < 3; ++i) e.undo();  // the run and two scrubs
+    EXPECT_EQ(e.document().history().undoLabel(), "Move object");
+    e.undo();  // the drag: the frames made after it go
+    EXPECT_NEAR(e.document().time(), 0.5, 1e-9);
+    EXPECT_NEAR(e.simulation().cache().end(), 0.5, 1e-9);
+    ASSERT_TRUE(e.seek(0.75));
+    EXPECT_EQ(e.scene().objects[0].pos.x, 0.0f);
+}
+
+// Played again from before an edit, the run is simulated anew and the edit is no part of it.
+TEST(Editor, PlayingFromBeforeAnEditRunsWithoutIt) {
+    Editor e = openEditor(writeFile("replay-edit.txt", kScene));
+    run(e, 30);
+    e.edit("Radius", [](Scene& s) { s.objects[0].radius = 1; });  // at 0.5 s
+    ASSERT_TRUE(e.seek(0.25));
+    EXPECT_EQ(e.scene().objects[0].radius, 0.5f);
+    run(e, 30);  // to 0.75 s
+    EXPECT_EQ(e.scene().objects[0].radius, 0.5f);
+    ASSERT_TRUE(e.seek(0.6));
+    EXPECT_EQ(e.scene().objects[0].radius, 0.5f);
 }

@@ -6,10 +6,13 @@
 //
 // The scene as edited is the state at t = 0, its start. While the simulator has moved the
 // bodies (time() > 0) the scene shows them where they got to and the start is kept aside:
-// Save writes the start, and only keep() makes the shown poses the new start. Each undo state
-// remembers its time and start, so undoing a run goes back to the time before it.
+// Save writes the start, and only keep() makes the shown poses the new start. The run is a
+// chain of pieces (marchbox/editor/frame_cache.h), one more for each edit of the bodies or the
+// world made at t > 0. Each undo state remembers its time, start and run, so undoing a run
+// goes back to the time before it.
 #pragma once
 
+#include "marchbox/editor/frame_cache.h"
 #include "marchbox/editor/history.h"
 #include "marchbox/scene/scene.h"
 
@@ -36,9 +39,10 @@ public:
     void markSaved(const std::string& path);
 
     // The one door for edits: runs `change` on the scene and records the difference as one
-    // undo step (see History::push for mergeKey). At t > 0 a change that leaves the objects
-    // alone (camera, world, materials, lights) is made to the start too and the time stays;
-    // any other is an edit of the start: the scene goes back to t = 0 first.
+    // undo step (see History::push for mergeKey). At t > 0 the change is made at that time and
+    // the time stays: one that leaves the objects alone (camera, world, materials, lights) is
+    // made to the start too, so Save keeps it; one of the objects is an event of the run, from
+    // t on, and the start stays. A change of the objects or the world begins a run piece at t.
     void apply(const std::string& label, const SceneChange& change, uint64_t mergeKey = 0);
     void seal() { history_.seal(); }
 
@@ -51,17 +55,19 @@ public:
     void commit(const std::string& label, const Scene& before);
 
     // The simulator's door: the scene to write the bodies into after `seconds` more of motion.
-    // The first motion from t = 0 sets the start aside.
+    // The first motion from t = 0 sets the start aside; motion from a time before the run's
+    // last edit drops that edit from the run: what follows is simulated anew.
     Scene& moving(double seconds);
     double time() const { return time_; }   // simulated seconds the scene shows; 0 at the start
     Scene start() const;                    // the scene at t = 0, with the current camera
     bool rewind(const std::string& label);  // back to the start, as an undo step; false at t = 0
     bool keep(const std::string& label);    // the shown poses become the start, as an undo step
-    // To time t of the run from the start, with `pose` putting the bodies where they were then
-    // (nothing at t = 0); the start stays, so that a scrub back can go forward again. An undo
-    // step; one drag of the slider (one mergeKey) is one. False when nothing has run.
-    bool seek(const std::string& label, double t, const SceneChange& pose, uint64_t mergeKey);
-    const std::shared_ptr<const Scene>& startShared() const { return start_; }  // null: scene
+    // To a baked frame of the run (null: t = 0, the start); the start and the run stay, so that
+    // a scrub back can go forward again. An undo step; one drag of the timeline (one mergeKey)
+    // is one. False when nothing has run.
+    bool seek(const std::string& label, const BakedFrame* frame, uint64_t mergeKey);
+    // The run the shown scene is part of; null when nothing has run from this start.
+    const std::shared_ptr<const RunPiece>& run() const { return run_; }
 
     // Both keep the current camera unless the step itself changed the camera: looking around
     // is not an edit, and undoing an edit must not throw the view back.
@@ -76,18 +82,21 @@ public:
 private:
     void restore(const Scene& target, bool stepMovedCamera);
     bool restart(const std::string& label, const Scene& first);  // `first` is now t = 0
+    void edited(double t);         // the objects or the world changed at time t
     void pushed(uint64_t before);  // after a history push: the new state's time and start
     void recall();                 // after undo or redo: the time and start of that state
 
     struct Moment {
         double time = 0;
         std::shared_ptr<const Scene> start;
+        std::shared_ptr<const RunPiece> run;
     };
 
     Scene scene_;
     double time_ = 0;
-    std::shared_ptr<const Scene> start_;  // null: t = 0 and the scene is its own start
-    std::map<uint64_t, Moment> moments_;  // the history states at t > 0
+    std::shared_ptr<const Scene> start_;   // null: t = 0 and the scene is its own start
+    std::shared_ptr<const RunPiece> run_;  // null: nothing has run from this start
+    std::map<uint64_t, Moment> moments_;   // the history states with a start or a run
     std::string path_;
     History history_;
     mutable Scene saved_;  // as the file holds it; its camera follows scene_'s

@@ -1,9 +1,12 @@
 // marchbox/editor/frame_cache.h — every dynamic body's state at each simulated frame, to scrub.
 //
-// A cache belongs to one start (the document's scene at t = 0, by identity): a run from another
-// start, or a run going on from an earlier time, drops the frames that no longer follow. Only
-// the bodies are kept (about 60 bytes each): a minute at 60 frames/s of 4096 bodies is under
-// 1 GB, so the cache stops at kMaxFrames and the slider ends there.
+// A run is a chain of pieces: the first goes on from the start (t = 0); an edit at a later time
+// t begins another, which goes on from the scene as edited at t. Each frame names the piece it
+// was simulated in. The cache holds one timeline, that of the document's run: after an edit,
+// an undo or a replay from an earlier time, follow() drops the frames that no longer belong to
+// it, which are all those after the time that changed. Only the bodies are kept (about 60
+// bytes each): a minute at 60 frames/s of 4096 bodies is under 1 GB, so the cache stops at
+// kMaxFrames and the timeline ends there.
 #pragma once
 
 #include "marchbox/scene/scene.h"
@@ -15,6 +18,18 @@
 
 namespace mb {
 
+// One stretch of a run, immutable and shared: the pieces before it stay the run's past.
+struct RunPiece {
+    double from = 0;                                     // s: where it begins
+    std::shared_ptr<const std::vector<Object>> objects;  // as edited at `from`; null: the start's
+    std::shared_ptr<const RunPiece> before;              // the piece it goes on from; null: none
+};
+
+// The piece of `run` that holds time t: the last to begin at or before it (an edit at t
+// belongs to the time it was made at). Null for a null run.
+const std::shared_ptr<const RunPiece>& pieceAt(const std::shared_ptr<const RunPiece>& run,
+                                               double t);
+
 struct BodyState {
     int object = 0;
     glm::vec3 pos{0.0f}, vel{0.0f}, spin{0.0f};
@@ -22,7 +37,8 @@ struct BodyState {
 };
 
 struct BakedFrame {
-    double t = 0;  // s since the start
+    double t = 0;                           // s since the start
+    std::shared_ptr<const RunPiece> piece;  // the piece it was simulated in
     std::vector<BodyState> bodies;
 };
 
@@ -30,18 +46,22 @@ class FrameCache {
 public:
     static constexpr size_t kMaxFrames = 3600;
 
-    // The scene's dynamic bodies at time t of the run from `start`.
-    void record(const std::shared_ptr<const Scene>& start, double t, const Scene& scene);
-    // The last frame at or before t of the run from `start`; null where none is (t = 0 is the
-    // start itself).
-    const BakedFrame* at(const std::shared_ptr<const Scene>& start, double t) const;
-    double end(const std::shared_ptr<const Scene>& start) const;  // the last frame's t, or 0
+    // The scene's dynamic bodies at time t of `run` (its last piece), after the frames before t.
+    void record(const std::shared_ptr<const RunPiece>& run, double t, const Scene& scene);
+    // Keeps the frames up to the first that is not of `run` (all of them go for a null run).
+    void follow(const std::shared_ptr<const RunPiece>& run);
+
+    // The last frame at or before t; null where none is (t = 0 is the start itself).
+    const BakedFrame* at(double t) const;
+    double end() const;  // the last frame's t, or 0
+    bool empty() const { return frames_.empty(); }
 
 private:
-    std::shared_ptr<const Scene> start_;  // held, so that no other start takes its address
-    std::vector<BakedFrame> frames_;      // in order of t
+    std::vector<BakedFrame> frames_;  // in order of t
 };
 
-void applyFrame(const BakedFrame& frame, Scene& scene);  // the bodies back where they were
+// The bodies back where they were: the frame's piece's objects where an edit made them, then
+// each dynamic body's state. `scene` holds the start's objects before.
+void applyFrame(const BakedFrame& frame, Scene& scene);
 
 }  // namespace mb

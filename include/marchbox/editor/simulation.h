@@ -30,8 +30,9 @@ public:
     int advance(Document& doc, double frameSeconds);
 
     // The scene was edited, undone or replaced: the physics world is rebuilt before the next
-    // step. While playing, the run so far must be committed first (commitRun) so that the edit
-    // is its own undo step; the run then continues from the edited scene.
+    // step, and the cache keeps only the frames of the document's run. While playing, the run so
+    // far must be committed first (commitRun) so that the edit is its own undo step; the run then
+    // continues from the edited scene.
     void commitRun(Document& doc);
     void sceneChanged(Document& doc);
 

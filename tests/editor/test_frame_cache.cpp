@@ -1,0 +1,86 @@
+// test_frame_cache.cpp — a run's pieces, and the frames that follow an edit at a later time.
+#include "marchbox/editor/frame_cache.h"
+
+#include <gtest/gtest.h>
+
+using namespace mb;
+
+using Piece = std::shared_ptr<const RunPiece>;
+
+static Piece piece(double from, Piece before, float x = 0) {
+    Object o;
+    o.pos = {x, 1, 0};
+    auto objects = std::make_shared<const std::vector<Object>>(std::vector<Object>{o});
+    return std::make_shared<const RunPiece>(RunPiece{from, from > 0 ? objects : nullptr, before});
+}
+
+// One falling sphere at height y.
+static Scene sphereAt(float y) {
+    Scene s;
+    s.objects.resize(1);
+    s.objects[0].pos = {0, y, 0};
+    return s;
+}
+
+// Frames at 0.1, 0.2, ... 1.0 s, the sphere at height 10 t.
+static FrameCache baked(const Piece& run) {
+    FrameCache cache;
+    for (int k = 1; k <= 10; ++k) cache.record(run, k / 10.0, sphereAt(float(k)));
+    return cache;
+}
+
+TEST(FrameCache, AnEditBelongsToTheTimeItWasMadeAt) {
+    Piece root = piece(0, nullptr), one = piece(1, root), two = piece(2, one);
+    EXPECT_EQ(pieceAt(two, 0.5), root);
+    EXPECT_EQ(pieceAt(two, 1.0), one);  // the frame at the edit shows the edit
+    EXPECT_EQ(pieceAt(two, 1.5), one);
+    EXPECT_EQ(pieceAt(two, 2.0), two);
+    EXPECT_EQ(pieceAt(two, 9.0), two);
+    EXPECT_EQ(pieceAt(nullptr, 1.0), nullptr);
+}
+
+TEST(FrameCache, AnEditAtTDropsTheFramesFromTOn) {
+    Piece root = piece(0, nullptr);
+    FrameCache cache = baked(root);
+    Piece edit = piece(0.5, root, 4);
+    cache.follow(edit);
+    EXPECT_DOUBLE_EQ(cache.end(), 0.4);  // the frame at 0.5 showed the bodies before the edit
+    ASSERT_NE(cache.at(0.45), nullptr);
+    EXPECT_EQ(cache.at(0.45)->bodies[0].pos.y, 4.0f);  // what ran before stays as it ran
+
+    cache.record(edit, 0.5, sphereAt(5));
+    cache.record(edit, 0.6, sphereAt(6));
+    cache.follow(edit);  // the run it holds: nothing goes
+    EXPECT_DOUBLE_EQ(cache.end(), 0.6);
+    cache.follow(root);  // the edit undone: the frames made after it go
+    EXPECT_DOUBLE_EQ(cache.end(), 0.4);
+    cache.follow(nullptr);  // a new start
+    EXPECT_TRUE(cache.empty());
+}
+
+// Played again from 0.35 s (a scrub back), the frames after it are made anew.
+TEST(FrameCache, RecordingFromAnEarlierTimeReplacesWhatFollowed) {
+    Piece root = piece(0, nullptr);
+    FrameCache cache = baked(root);
+    cache.record(root, 0.35, sphereAt(-1));
+    EXPECT_DOUBLE_EQ(cache.end(), 0.35);
+    EXPECT_EQ(cache.at(0.99)->bodies[0].pos.y, -1.0f);
+    EXPECT_EQ(cache.at(0.3)->bodies[0].pos.y, 3.0f);
+    EXPECT_EQ(cache.at(0.05), nullptr);  // before the first frame: the start
+}
+
+TEST(FrameCache, AFrameAfterAnEditPutsBackTheEditedObjects) {
+    Scene edited = sphereAt(2);
+    edited.objects[0].radius = 2;  // the edit made it larger
+    auto objects = std::make_shared<const std::vector<Object>>(edited.objects);
+    Piece edit = std::make_shared<const RunPiece>(RunPiece{0.5, objects, piece(0, nullptr)});
+    FrameCache cache;
+    cache.record(edit, 0.5, edited);
+    edited.objects[0].pos.y = 1.5f;  // fallen on
+    cache.record(edit, 0.6, edited);
+
+    Scene shown = sphereAt(7);  // the start's objects, as a scrub begins
+    applyFrame(*cache.at(0.6), shown);
+    EXPECT_EQ(shown.objects[0].radius, 2.0f);
+    EXPECT_EQ(shown.objects[0].pos, glm::vec3(0, 1.5f, 0));  // the body's state at the frame
+}
