@@ -2,23 +2,9 @@
 #include "ui.h"
 #include "widgets.h"
 
-#include <algorithm>
 #include <imgui.h>
 
 namespace mb {
-
-// The baked frames of the run from this start, to scrub through: one drag is one undo step.
-static void timeline(UiContext& c) {
-    Editor& e = c.editor;
-    const float end = float(e.simulation().cache().end());
-    float t = float(e.document().time());
-    ImGui::BeginDisabled(end <= 0.0f);
-    if (ImGui::SliderFloat("t (s)", &t, 0.0f, std::max(end, 0.01f), "%.2f"))
-        e.seek(t, ImGui::GetID("t (s)"));
-    markItem("Simulation/timeline");
-    if (ImGui::IsItemDeactivated()) e.endEdit();
-    ImGui::EndDisabled();
-}
 
 static void controls(UiContext& c) {
     Editor& e = c.editor;
@@ -32,7 +18,7 @@ static void controls(UiContext& c) {
     ImGui::SameLine();
     if (ImGui::Button("Keep poses")) e.keepPoses();
     ImGui::EndDisabled();
-    timeline(c);
+    drawTimeline(c);
 }
 
 static void worldFields(UiContext& c) {

@@ -108,6 +108,10 @@ void drawSimulationWindow(UiContext& c);
 void drawGizmo(const UiContext& c, GizmoHandle hot, glm::vec2 viewSize);
 void setGizmoMode(UiState& ui, GizmoMode m);  // G, R, T and the View menu
 
+// [timeline_strip.cpp] The strip of simulated time: the baked frames, the time shown and the
+// camera keys as markers; a click or drag scrubs, a click on a key's marker goes to the key.
+void drawTimeline(UiContext& c);
+
 // [panels_view.cpp] camera, render settings, debug views, help, statistics, shader log.
 void drawViewWindows(UiContext& c);
 void postModeCombo(UiState& ui);  // FXAA and its debug views

@@ -9,6 +9,8 @@
 #include "marchbox/scene/scene_io.h"
 #include "marchbox/scene/sdf.h"
 
+#include <cmath>
+
 namespace mb {
 
 static const char* leaveName(Leave what) {
@@ -337,6 +339,14 @@ bool Editor::seek(double t, uint64_t mergeKey) {
     if (mergeKey == 0 || mergeKey != loggedKey_) emitEvent("seek " + timeLabel(to));
     loggedKey_ = mergeKey;
     return true;
+}
+
+bool Editor::seekKey(int index, uint64_t mergeKey) {
+    if (index < 0 || index >= int(scene().keyframes.size())) return false;
+    // A key's time is the float nearest the frame it was added at, which may be a rounding
+    // below that frame's time: the next float up is at or past it.
+    const float t = scene().keyframes[size_t(index)].t;
+    return seek(std::nextafter(t, INFINITY), mergeKey);
 }
 
 void Editor::frame(double seconds) { sim_.advance(doc_, seconds); }

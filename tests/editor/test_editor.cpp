@@ -676,3 +676,17 @@ TEST(Editor, PlayingFromBeforeAnEditRunsWithoutIt) {
     ASSERT_TRUE(e.seek(0.6));
     EXPECT_EQ(e.scene().objects[0].radius, 0.5f);
 }
+
+// A key's time is a float, the frame it was added at a double a rounding above it (0.35 s).
+TEST(Editor, GoingToACameraKeyShowsTheFrameItWasAddedAt) {
+    Editor e = openEditor(writeFile("seek-key.txt", kScene));
+    run(e, 21);
+    const double added = e.document().time();
+    const glm::vec3 there = e.scene().objects[0].pos;
+    e.addCameraKey();
+    run(e, 10);
+    EXPECT_FALSE(e.seekKey(1));
+    ASSERT_TRUE(e.seekKey(0));
+    EXPECT_EQ(e.document().time(), added);
+    EXPECT_EQ(e.scene().objects[0].pos, there);
+}

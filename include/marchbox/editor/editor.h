@@ -86,6 +86,8 @@ public:
     // To the cached frame at or before t (Home: t = 0), pausing; an undo step, one per drag
     // of the timeline (one mergeKey). False when nothing has run from this start.
     bool seek(double t, uint64_t mergeKey = 0);
+    // To camera key `index`'s time as seek() does; false without that key.
+    bool seekKey(int index, uint64_t mergeKey = 0);
     void frame(double seconds);  // the simulator's share of one frame
     const Simulation& simulation() const { return sim_; }
 

@@ -1,0 +1,28 @@
+// marchbox/editor/timeline.h — the timeline strip's geometry: seconds to pixels and back, and
+// the camera key under the mouse. The Simulation window draws it (src/app/panels_sim.cpp).
+#pragma once
+
+#include "marchbox/scene/scene.h"
+
+#include <vector>
+
+namespace mb {
+
+struct TimelineStrip {
+    float left = 0.0f, width = 1.0f;  // px
+    double span = 1.0;                // s from the left end to the right
+
+    float x(double t) const;      // the pixel column of time t
+    double time(float px) const;  // the time under pixel column px, within 0..span
+};
+
+// A strip from t = 0 past the last of the baked frames (cached), the camera keys and the time
+// shown (now), with a tenth to spare so that the end is never at the edge; at least 1 s.
+TimelineStrip timelineStrip(float left, float width, double cached,
+                            const std::vector<Keyframe>& keys, double now);
+
+// The camera key whose marker is within `reach` px of column px, the nearest; -1 for none.
+int keyMarkerAt(const TimelineStrip& strip, const std::vector<Keyframe>& keys, float px,
+                float reach);
+
+}  // namespace mb

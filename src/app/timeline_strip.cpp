@@ -1,0 +1,83 @@
+// timeline_strip.cpp — the strip of simulated time in the Simulation window: the baked frames,
+// the time shown and the camera keys, drawn with ImGui's draw list; a click or a drag scrubs.
+#include "marchbox/editor/timeline.h"
+#include "ui.h"
+#include "widgets.h"
+
+#include <cmath>
+#include <imgui.h>
+
+namespace mb {
+
+static constexpr float kStripHeight = 24.0f;  // px
+static constexpr float kKeyReach = 6.0f;  // px either side of a key's marker that take its click
+
+// A click on a key's marker goes to the key; any other click, and a drag, to the time under
+// the mouse. One press is one undo step ("Scrub").
+static void scrub(Editor& e, const TimelineStrip& strip, ImGuiID id) {
+    const std::vector<Keyframe>& keys = e.scene().keyframes;
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool pressed = ImGui::IsItemActivated();
+    const int key = pressed ? keyMarkerAt(strip, keys, io.MousePos.x, kKeyReach) : -1;
+    if (key >= 0) e.seekKey(key, id);
+    else if (pressed || (ImGui::IsItemActive() && io.MouseDelta.x != 0.0f))
+        e.seek(strip.time(io.MousePos.x), id);
+    if (ImGui::IsItemDeactivated()) e.endEdit();
+}
+
+// Ticks at 1, 2 or 5 times a power of ten seconds, about 40 px apart or more.
+static double tickStep(const TimelineStrip& strip) {
+    const double least = strip.span * 40.0 / strip.width;
+    double step = std::pow(10.0, std::floor(std::log10(least)));
+    for (double m : {1.0, 2.0, 5.0, 10.0})
+        if (step * m >= least) return step * m;
+    return step * 10.0;
+}
+
+static void drawStrip(const TimelineStrip& strip, float top, const Editor& e) {
+    ImDrawList* d = ImGui::GetWindowDrawList();
+    const float bottom = top + kStripHeight, right = strip.left + strip.width;
+    d->AddRectFilled({strip.left, top}, {right, bottom}, ImGui::GetColorU32(ImGuiCol_FrameBg));
+    const float baked = strip.x(e.simulation().cache().end());
+    d->AddRectFilled({strip.left, top + 8}, {baked, bottom},
+                     ImGui::GetColorU32(ImGuiCol_PlotHistogram, 0.6f));
+    const double step = tickStep(strip);
+    for (double t = 0; t <= strip.span; t += step)
+        d->AddLine({strip.x(t), bottom - 5}, {strip.x(t), bottom},
+                   ImGui::GetColorU32(ImGuiCol_Text));
+    for (const Keyframe& k : e.scene().keyframes) {  // diamonds along the top
+        const float x = strip.x(k.t), y = top + 5;
+        d->AddQuadFilled({x, y - 4}, {x + 4, y}, {x, y + 4}, {x - 4, y},
+                         IM_COL32(255, 210, 60, 255));
+    }
+    const float now = strip.x(e.document().time());
+    d->AddLine({now, top}, {now, bottom}, IM_COL32(255, 80, 80, 255), 2.0f);
+}
+
+static void keyTooltip(const TimelineStrip& strip, const std::vector<Keyframe>& keys) {
+    if (!ImGui::IsItemHovered()) return;
+    const int key = keyMarkerAt(strip, keys, ImGui::GetIO().MousePos.x, kKeyReach);
+    if (key < 0) return;
+    char text[64];
+    std::snprintf(text, sizeof text, "camera key at %.2f s: click to go there",
+                  double(keys[size_t(key)].t));
+    itemTooltip("Simulation/timeline key", text);
+}
+
+void drawTimeline(UiContext& c) {
+    Editor& e = c.editor;
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    const float width = ImGui::GetContentRegionAvail().x;
+    const TimelineStrip strip = timelineStrip(at.x, width, e.simulation().cache().end(),
+                                              e.scene().keyframes, e.document().time());
+    const ImGuiID id = ImGui::GetID("timeline");
+    ImGui::InvisibleButton("timeline", ImVec2(strip.width, kStripHeight));
+    markItem("Simulation/timeline");
+    scrub(e, strip, id);
+    keyTooltip(strip, e.scene().keyframes);
+    drawStrip(strip, at.y, e);
+    ImGui::Text("%s   baked to %.2f s   %zu camera keys", timeLabel(e.document().time()).c_str(),
+                e.simulation().cache().end(), e.scene().keyframes.size());
+}
+
+}  // namespace mb

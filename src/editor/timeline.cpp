@@ -1,0 +1,33 @@
+// timeline.cpp — the timeline strip's pixels and seconds.
+#include "marchbox/editor/timeline.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mb {
+
+float TimelineStrip::x(double t) const { return left + float(t / span) * width; }
+
+double TimelineStrip::time(float px) const {
+    return std::clamp(double(px - left) / double(width), 0.0, 1.0) * span;
+}
+
+TimelineStrip timelineStrip(float left, float width, double cached,
+                            const std::vector<Keyframe>& keys, double now) {
+    double last = std::max(cached, now);
+    for (const Keyframe& k : keys) last = std::max(last, double(k.t));
+    return {left, std::max(width, 1.0f), std::max(1.0, last * 1.1)};
+}
+
+int keyMarkerAt(const TimelineStrip& strip, const std::vector<Keyframe>& keys, float px,
+                float reach) {
+    int best = -1;
+    float nearest = 0.0f;
+    for (size_t i = 0; i < keys.size(); ++i) {
+        const float d = std::abs(strip.x(keys[i].t) - px);
+        if (d <= reach && (best < 0 || d < nearest)) best = int(i), nearest = d;
+    }
+    return best;
+}
+
+}  // namespace mb

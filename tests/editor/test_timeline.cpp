@@ -1,0 +1,40 @@
+// test_timeline.cpp — the timeline strip's seconds and pixels, and clicks on camera keys.
+#include "marchbox/editor/timeline.h"
+
+#include <gtest/gtest.h>
+
+using namespace mb;
+
+static std::vector<Keyframe> keysAt(std::initializer_list<float> times) {
+    std::vector<Keyframe> keys;
+    for (float t : times) keys.push_back(Keyframe{t});
+    return keys;
+}
+
+TEST(Timeline, TheStripSpansEverythingThereIsToShowAndATenthMore) {
+    EXPECT_DOUBLE_EQ(timelineStrip(0, 100, 0, {}, 0).span, 1.0);  // nothing yet: one second
+    EXPECT_DOUBLE_EQ(timelineStrip(0, 100, 5, {}, 2).span, 5.5);
+    EXPECT_DOUBLE_EQ(timelineStrip(0, 100, 5, keysAt({1, 8}), 2).span, 8.8);
+    EXPECT_DOUBLE_EQ(timelineStrip(0, 100, 5, {}, 6).span, 6.6);  // shown past what is baked
+}
+
+TEST(Timeline, PixelsAndSecondsGoBothWays) {
+    const TimelineStrip s = timelineStrip(20, 200, 10, {}, 0);  // 11 s over 200 px from x = 20
+    EXPECT_FLOAT_EQ(s.x(0), 20.0f);
+    EXPECT_FLOAT_EQ(s.x(5.5), 120.0f);
+    EXPECT_NEAR(s.time(120), 5.5, 1e-9);
+    EXPECT_EQ(s.time(0), 0.0);       // left of the strip: its start
+    EXPECT_EQ(s.time(400), s.span);  // right of it: its end
+}
+
+TEST(Timeline, AClickNearAKeysMarkerIsOnTheNearestKey) {
+    const std::vector<Keyframe> keys = keysAt({0, 1, 1.5f, 9});
+    const TimelineStrip s = timelineStrip(0, 110, 10, keys, 0);  // 10 px a second
+    EXPECT_EQ(keyMarkerAt(s, keys, 3, 6), 0);
+    EXPECT_EQ(keyMarkerAt(s, keys, 10.5f, 6), 1);
+    EXPECT_EQ(keyMarkerAt(s, keys, 13.5f, 6), 2);   // between 1 and 1.5 s: the nearer
+    EXPECT_EQ(keyMarkerAt(s, keys, 12.5f, 6), 1);   // as near to both: the earlier
+    EXPECT_EQ(keyMarkerAt(s, keys, 50, 6), -1);     // far from any
+    EXPECT_EQ(keyMarkerAt(s, keys, 96.5f, 6), -1);  // 6.5 px from the last: out of reach
+    EXPECT_EQ(keyMarkerAt(s, {}, 0, 6), -1);
+}
