@@ -112,6 +112,8 @@ static void simulationMenu(UiContext& c) {
     const bool moved = e.document().time() > 0;
     if (menuItem("Simulation", "Reset", nullptr, false, moved)) e.resetSimulation();
     if (menuItem("Simulation", "Keep simulated poses", nullptr, false, moved)) e.keepPoses();
+    if (menuItem("Simulation", "Loop", nullptr, e.simulation().loop()))
+        e.setLoop(!e.simulation().loop());
     ImGui::Separator();
     if (menuItem("Simulation", "Settings", nullptr, c.ui.showSimulation))
         c.ui.showSimulation = !c.ui.showSimulation;

@@ -18,6 +18,13 @@ static void controls(UiContext& c) {
     ImGui::SameLine();
     if (ImGui::Button("Keep poses")) e.keepPoses();
     ImGui::EndDisabled();
+    ImGui::SameLine();
+    bool loop = e.simulation().loop();
+    if (ImGui::Checkbox("Loop", &loop)) e.setLoop(loop);
+    markItem("Simulation/Loop");
+    itemTooltip("Simulation/Loop",
+                "Play goes back to t = 0 at the last camera key, or without "
+                "keys at the end of the baked frames.");
     drawTimeline(c);
 }
 

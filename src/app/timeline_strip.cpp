@@ -50,6 +50,10 @@ static void drawStrip(const TimelineStrip& strip, float top, const Editor& e) {
         d->AddQuadFilled({x, y - 4}, {x + 4, y}, {x, y + 4}, {x - 4, y},
                          IM_COL32(255, 210, 60, 255));
     }
+    if (e.simulation().loop()) {  // where Play goes back to t = 0
+        const float end = strip.x(loopEnd(e.scene().keyframes, e.simulation().cache().end()));
+        d->AddLine({end, top}, {end, bottom}, ImGui::GetColorU32(ImGuiCol_Text), 1.0f);
+    }
     const float now = strip.x(e.document().time());
     d->AddLine({now, top}, {now, bottom}, IM_COL32(255, 80, 80, 255), 2.0f);
 }

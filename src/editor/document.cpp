@@ -142,15 +142,19 @@ bool Document::restart(const std::string& label, const Scene& first) {
     return true;
 }
 
-bool Document::seek(const std::string& label, const BakedFrame* frame, uint64_t mergeKey) {
-    if (!run_) return false;
-    const uint64_t was = history_.state();
-    Scene before = scene_;
+void Document::show(const BakedFrame* frame) {
     if (!start_ && frame) start_ = std::make_shared<const Scene>(scene_);
     scene_ = start();
     if (frame) applyFrame(*frame, scene_);
     time_ = frame ? frame->t : 0;
     ++version_;
+}
+
+bool Document::seek(const std::string& label, const BakedFrame* frame, uint64_t mergeKey) {
+    if (!run_) return false;
+    const uint64_t was = history_.state();
+    Scene before = scene_;
+    show(frame);
     history_.pushEvenIfSame(label, before, scene_, mergeKey);
     pushed(was);
     return true;

@@ -266,6 +266,12 @@ void Editor::togglePlay() {
     }
 }
 
+void Editor::setLoop(bool on) {
+    if (on == sim_.loop()) return;
+    sim_.setLoop(on);
+    emitEvent(on ? "loop on" : "loop off");
+}
+
 void Editor::step() {
     sim_.step(doc_);
     emitEvent("step");

@@ -1,6 +1,8 @@
 // simulation.cpp — the physics world driven by frames, recorded as undo steps.
 #include "marchbox/editor/simulation.h"
 
+#include "marchbox/editor/timeline.h"
+
 namespace mb {
 
 void Simulation::ensureWorld(const Scene& scene) {
@@ -12,6 +14,8 @@ void Simulation::play(Document& doc) {
     playing_ = true;
     accumulator_ = {};
     runStart_ = doc.scene();
+    head_ = doc.time();
+    bakedAtPlay_ = cache_.end();
 }
 
 void Simulation::pause(Document& doc) {
@@ -33,15 +37,13 @@ void Simulation::sceneChanged(Document& doc) {
     // of what follows.
     if (doc.time() > cache_.end()) cache_.record(doc.run(), doc.time(), doc.scene());
     if (playing_) runStart_ = doc.scene();
+    head_ = doc.time();
 }
 
 void Simulation::step(Document& doc) {
     pause(doc);
     Scene before = doc.scene();
-    ensureWorld(before);
-    world_->step();
-    world_->writeBack(doc.moving(settings_.dt));
-    cache_.record(doc.run(), doc.time(), doc.scene());
+    simulate(doc, 1);
     doc.commit("Simulation step", before);
 }
 
@@ -52,13 +54,30 @@ void Simulation::reset(Document& doc) {
 
 int Simulation::advance(Document& doc, double frameSeconds) {
     if (!playing_) return 0;
-    int steps = accumulator_.advance(frameSeconds, settings_);
+    const int steps = accumulator_.advance(frameSeconds, settings_);
     if (steps == 0) return 0;
+    const double end = loop_ ? loopEnd(doc.scene().keyframes, bakedAtPlay_) : 0.0;
+    head_ = playHead(head_, steps * settings_.dt, end);
+    // Frame times are sums of steps: one a rounding error past the head is still at it.
+    if (head_ <= cache_.end() + 1e-9) {
+        show(doc, cache_.at(head_ + 1e-9));
+        return steps;
+    }
+    simulate(doc, steps);  // past the baked frames (from before the last: the same again)
+    head_ = doc.time();
+    return steps;
+}
+
+void Simulation::show(Document& doc, const BakedFrame* frame) {
+    doc.show(frame);
+    world_.reset();  // built again from the frame where the run is simulated on
+}
+
+void Simulation::simulate(Document& doc, int steps) {
     ensureWorld(doc.scene());
     for (int i = 0; i < steps; ++i) world_->step();
     world_->writeBack(doc.moving(steps * settings_.dt));
     cache_.record(doc.run(), doc.time(), doc.scene());
-    return steps;
 }
 
 }  // namespace mb

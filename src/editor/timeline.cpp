@@ -30,4 +30,15 @@ int keyMarkerAt(const TimelineStrip& strip, const std::vector<Keyframe>& keys, f
     return best;
 }
 
+double loopEnd(const std::vector<Keyframe>& keys, double baked) {
+    const double last = keys.empty() ? 0.0 : double(keys.back().t);
+    return last > 0 ? last : baked;
+}
+
+double playHead(double head, double seconds, double end) {
+    const double next = head + seconds;
+    // Step sums run a rounding past a time they were meant to meet: that is still at the end.
+    return end > 0 && next > end + 1e-9 ? 0.0 : next;
+}
+
 }  // namespace mb

@@ -430,6 +430,13 @@ static void run(Editor& e, int frames) {
     e.togglePlay();
 }
 
+// The scene a fresh editor on kScene shows after `frames` frames of play, to compare with.
+static Scene playedFor(int frames) {
+    Editor e = openEditor(writeFile("played.txt", kScene));
+    run(e, frames);
+    return e.scene();
+}
+
 static Scene saved(const std::string& path) {
     Scene s;
     std::vector<std::string> errors;
@@ -598,15 +605,14 @@ TEST(Editor, ScrubbingShowsEachBakedFrameAndGoesForwardAgain) {
     Editor e = openEditor(writeFile("scrub.txt", kScene));
     const Scene start = e.scene();
     EXPECT_FALSE(e.seek(0.25));  // nothing has run
-    Editor quarter = openEditor(writeFile("scrub-quarter.txt", kScene));
-    run(quarter, 15);
+    const Scene quarter = playedFor(15);
     run(e, 60);
     const glm::vec3 end = e.scene().objects[0].pos;
     EXPECT_NEAR(e.simulation().cache().end(), 1.0, 1e-9);
 
     ASSERT_TRUE(e.seek(0.25));
     EXPECT_NEAR(e.document().time(), 0.25, 1e-9);
-    EXPECT_EQ(e.scene().objects[0].pos, quarter.scene().objects[0].pos);
+    EXPECT_EQ(e.scene().objects[0].pos, quarter.objects[0].pos);
     ASSERT_TRUE(e.seek(0));  // Home
     EXPECT_EQ(e.document().time(), 0.0);
     EXPECT_EQ(e.scene(), start);
@@ -615,7 +621,7 @@ TEST(Editor, ScrubbingShowsEachBakedFrameAndGoesForwardAgain) {
     EXPECT_EQ(e.scene().objects[0].pos, end);
     e.undo();  // each scrub is a step
     EXPECT_NEAR(e.document().time(), 0.25, 1e-9);
-    EXPECT_EQ(e.scene().objects[0].pos, quarter.scene().objects[0].pos);
+    EXPECT_EQ(e.scene().objects[0].pos, quarter.objects[0].pos);
 }
 
 TEST(Editor, AnEditOfTheStartDropsTheBakedFrames) {
@@ -635,8 +641,7 @@ TEST(Editor, AnEditOfTheStartDropsTheBakedFrames) {
 // goes, and the run goes on from the sphere where it was put.
 TEST(Editor, AnEditAtALaterTimeDropsOnlyTheFramesAfterIt) {
     Editor e = openEditor(writeFile("scrub-later.txt", kScene));
-    Editor quarter = openEditor(writeFile("scrub-later-quarter.txt", kScene));
-    run(quarter, 15);
+    const Scene quarter = playedFor(15);
     run(e, 60);
     ASSERT_TRUE(e.seek(0.5));
     e.moveObject(0, {1, 3, 0}, 7);
@@ -647,7 +652,7 @@ TEST(Editor, AnEditAtALaterTimeDropsOnlyTheFramesAfterIt) {
     EXPECT_EQ(e.document().start().objects[0].pos, glm::vec3(0, 3, 0));
 
     ASSERT_TRUE(e.seek(0.25));
-    EXPECT_EQ(e.scene().objects[0].pos, quarter.scene().objects[0].pos);
+    EXPECT_EQ(e.scene().objects[0].pos, quarter.objects[0].pos);
     ASSERT_TRUE(e.seek(0.5));
     EXPECT_EQ(e.scene().objects[0].pos, glm::vec3(2, 3, 0));
     run(e, 15);
@@ -664,17 +669,57 @@ TEST(Editor, AnEditAtALaterTimeDropsOnlyTheFramesAfterIt) {
     EXPECT_EQ(e.scene().objects[0].pos.x, 0.0f);
 }
 
-// Played again from before an edit, the run is simulated anew and the edit is no part of it.
-TEST(Editor, PlayingFromBeforeAnEditRunsWithoutIt) {
+// Stepped on from before an edit, the run is simulated anew and the edit is no part of it.
+TEST(Editor, SimulatingFromBeforeAnEditRunsWithoutIt) {
     Editor e = openEditor(writeFile("replay-edit.txt", kScene));
     run(e, 30);
     e.edit("Radius", [](Scene& s) { s.objects[0].radius = 1; });  // at 0.5 s
     ASSERT_TRUE(e.seek(0.25));
     EXPECT_EQ(e.scene().objects[0].radius, 0.5f);
-    run(e, 30);  // to 0.75 s
+    e.step();  // replaces what followed 0.25 s
+    EXPECT_NEAR(e.simulation().cache().end(), 0.25 + 1.0 / 120, 1e-9);
+    run(e, 30);  // simulated on, past 0.5 s
     EXPECT_EQ(e.scene().objects[0].radius, 0.5f);
     ASSERT_TRUE(e.seek(0.6));
     EXPECT_EQ(e.scene().objects[0].radius, 0.5f);
+}
+
+// Play from a scrub shows the frames baked after it rather than simulating them again, then
+// simulates on past the last.
+TEST(Editor, PlayingOverBakedFramesPlaysThemBack) {
+    Editor e = openEditor(writeFile("play-back.txt", kScene));
+    const Scene half = playedFor(30);
+    run(e, 60);
+    ASSERT_TRUE(e.seek(0.25));
+    e.togglePlay();
+    for (int i = 0; i < 15; ++i) e.frame(1.0 / 60);
+    EXPECT_NEAR(e.document().time(), 0.5, 1e-9);
+    EXPECT_EQ(e.scene().objects[0].pos, half.objects[0].pos);
+    EXPECT_NEAR(e.simulation().cache().end(), 1.0, 1e-9);  // nothing made again
+    for (int i = 0; i < 45; ++i) e.frame(1.0 / 60);
+    EXPECT_NEAR(e.document().time(), 1.25, 1e-9);  // and on past the last
+    EXPECT_NEAR(e.simulation().cache().end(), 1.25, 1e-9);
+    e.togglePlay();
+}
+
+// Loop over a baked second: past its end playing starts again at t = 0, from the baked frames.
+TEST(Editor, LoopPlaysTheBakedFramesAgainFromTheStart) {
+    Editor e = openEditor(writeFile("loop.txt", kScene));
+    const Scene half = playedFor(30);
+    run(e, 60);
+    ASSERT_TRUE(e.seek(0.5));
+    e.setLoop(true);
+    e.togglePlay();
+    for (int i = 0; i < 30; ++i) e.frame(1.0 / 60);
+    EXPECT_NEAR(e.document().time(), 1.0, 1e-9);  // the end is still shown
+    e.frame(1.0 / 60);
+    EXPECT_EQ(e.document().time(), 0.0);  // then the start
+    EXPECT_EQ(e.scene().objects[0].pos, glm::vec3(0, 3, 0));
+    for (int i = 0; i < 30; ++i) e.frame(1.0 / 60);
+    EXPECT_NEAR(e.document().time(), 0.5, 1e-9);
+    EXPECT_EQ(e.scene().objects[0].pos, half.objects[0].pos);
+    EXPECT_NEAR(e.simulation().cache().end(), 1.0, 1e-9);
+    e.togglePlay();
 }
 
 // A key's time is a float, the frame it was added at a double a rounding above it (0.35 s).

@@ -38,3 +38,18 @@ TEST(Timeline, AClickNearAKeysMarkerIsOnTheNearestKey) {
     EXPECT_EQ(keyMarkerAt(s, keys, 96.5f, 6), -1);  // 6.5 px from the last: out of reach
     EXPECT_EQ(keyMarkerAt(s, {}, 0, 6), -1);
 }
+
+TEST(Timeline, ALoopEndsAtTheLastKeyElseWhereTheBakedFramesEnd) {
+    EXPECT_EQ(loopEnd(keysAt({0, 1, 4}), 2.5), 4.0);
+    EXPECT_EQ(loopEnd(keysAt({0}), 2.5), 2.5);  // one key at 0 makes no clip
+    EXPECT_EQ(loopEnd({}, 2.5), 2.5);
+    EXPECT_EQ(loopEnd({}, 0), 0.0);  // nothing to loop over
+}
+
+TEST(Timeline, ThePlayHeadGoesBackToZeroPastTheEnd) {
+    EXPECT_DOUBLE_EQ(playHead(0.5, 0.25, 1.0), 0.75);
+    EXPECT_DOUBLE_EQ(playHead(0.75, 0.25, 1.0), 1.0);  // the end itself is shown
+    EXPECT_EQ(playHead(0.9, 0.25, 1.0), 0.0);
+    EXPECT_EQ(playHead(1.0, 1.0 / 120, 1.0), 0.0);
+    EXPECT_DOUBLE_EQ(playHead(5.0, 0.25, 0.0), 5.25);  // no end: on and on
+}

@@ -62,9 +62,11 @@ public:
     Scene start() const;                    // the scene at t = 0, with the current camera
     bool rewind(const std::string& label);  // back to the start, as an undo step; false at t = 0
     bool keep(const std::string& label);    // the shown poses become the start, as an undo step
-    // To a baked frame of the run (null: t = 0, the start); the start and the run stay, so that
-    // a scrub back can go forward again. An undo step; one drag of the timeline (one mergeKey)
-    // is one. False when nothing has run.
+    // The simulator's door for playing baked frames back: the scene at `frame` (null: t = 0,
+    // the start), outside the history like moving(). The start and the run stay.
+    void show(const BakedFrame* frame);
+    // show() as an undo step, so that a scrub back can go forward again; one drag of the
+    // timeline (one mergeKey) is one. False when nothing has run.
     bool seek(const std::string& label, const BakedFrame* frame, uint64_t mergeKey);
     // The run the shown scene is part of; null when nothing has run from this start.
     const std::shared_ptr<const RunPiece>& run() const { return run_; }

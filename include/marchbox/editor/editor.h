@@ -80,6 +80,7 @@ public:
     // [SECTION] Simulation
     //-------------------------------------------------------------------------
     void togglePlay();
+    void setLoop(bool on);  // see Simulation: playing goes back to t = 0 at the loop's end
     void step();
     void resetSimulation();  // back to t = 0
     bool keepPoses();        // the simulated poses become the start; false at t = 0

@@ -2,6 +2,8 @@
 //
 // While playing, the simulator changes the live scene every frame through the fixed-step
 // accumulator, outside the undo history; pausing records the whole run as one undo step.
+// Frames already baked after the time shown are played back, not simulated again; past the
+// last one the run is simulated on. With Loop on, playing goes back to t = 0 at loopEnd().
 // The document keeps the time and the start (t = 0); Reset goes back to that start.
 #pragma once
 
@@ -21,6 +23,8 @@ public:
     const PhysicsSettings& settings() const { return settings_; }
 
     void play(Document& doc);
+    bool loop() const { return loop_; }
+    void setLoop(bool on) { loop_ = on; }
     void pause(Document& doc);  // records the run since play() as "Simulation run"
     void step(Document& doc);   // one fixed step, as its own undo step; pauses first
     void reset(Document& doc);  // back to t = 0, as an undo step
@@ -41,6 +45,8 @@ public:
 
 private:
     void ensureWorld(const Scene& scene);
+    void show(Document& doc, const BakedFrame* frame);  // a baked frame played back
+    void simulate(Document& doc, int steps);  // on from the scene shown, baking each frame
 
     PhysicsSettings settings_;
     std::unique_ptr<PhysicsWorld> world_;  // null when it no longer mirrors the scene
@@ -48,6 +54,9 @@ private:
     FrameCache cache_;
     Scene runStart_;  // the scene when this run (or its last committed part) began
     bool playing_ = false;
+    bool loop_ = false;
+    double head_ = 0;         // s: the time playing has got to
+    double bakedAtPlay_ = 0;  // s: the baked frames' end when Play was pressed, where a loop ends
 };
 
 }  // namespace mb

@@ -1,5 +1,6 @@
 // marchbox/editor/timeline.h — the timeline strip's geometry: seconds to pixels and back, and
-// the camera key under the mouse. The Simulation window draws it (src/app/panels_sim.cpp).
+// the camera key under the mouse; where a loop ends and wraps. The Simulation window draws it
+// (src/app/panels_sim.cpp).
 #pragma once
 
 #include "marchbox/scene/scene.h"
@@ -24,5 +25,11 @@ TimelineStrip timelineStrip(float left, float width, double cached,
 // The camera key whose marker is within `reach` px of column px, the nearest; -1 for none.
 int keyMarkerAt(const TimelineStrip& strip, const std::vector<Keyframe>& keys, float px,
                 float reach);
+
+// Loop playback. The time a loop goes back to 0 at: the last camera key's where it is past 0
+// (the clip the keys make), else the end of the baked frames; 0 for neither: no end.
+double loopEnd(const std::vector<Keyframe>& keys, double baked);
+// The play head `seconds` after `head`: back to 0 once past `end` (0: no end).
+double playHead(double head, double seconds, double end);
 
 }  // namespace mb
