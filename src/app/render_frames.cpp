@@ -11,8 +11,10 @@
 #include "marchbox/scene/camera_path.h"
 #include "marchbox/scene/scene_io.h"
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <unistd.h>
 
@@ -24,8 +26,11 @@ constexpr const char* kUsage =
     "marchbox render SCENE -o PATTERN|OUT.mp4 --frames A-B [--fps F] [--size WxH] [--quality Q] "
     "[--skip-existing]";
 
+// .mp4 in any case: .MP4 is as common a spelling, and no frame pattern either way.
 bool isVideo(const std::string& path) {
-    return path.size() > 4 && path.compare(path.size() - 4, 4, ".mp4") == 0;
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    return ext == ".mp4";
 }
 
 // Usage errors (exit 2) the options alone show, before any file is read.

@@ -156,6 +156,8 @@ def errors(mb, scene, tmp):
     expect(1, frames(at("file/f_%05d.png")), "Not a directory", tmp=tmp)
     if shutil.which("ffmpeg"):
         expect(1, frames(at("missing/clip.mp4")), f"cannot write '{at('missing/clip.mp4')}'", tmp=tmp)
+        # .MP4 is a video too, not a pattern without a frame-number field.
+        expect(1, frames(at("missing/clip.MP4")), f"cannot write '{at('missing/clip.MP4')}'", tmp=tmp)
     fails_midway(mb, scene, tmp)
 
 
