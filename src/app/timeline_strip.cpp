@@ -80,8 +80,12 @@ void drawTimeline(UiContext& c) {
     scrub(e, strip, id);
     keyTooltip(strip, e.scene().keyframes);
     drawStrip(strip, at.y, e);
-    ImGui::Text("%s   baked to %.2f s   %zu camera keys", timeLabel(e.document().time()).c_str(),
-                e.simulation().cache().end(), e.scene().keyframes.size());
+    const FrameCache& cache = e.simulation().cache();
+    ImGui::Text("%s   baked to %.2f s: %zu frames, %.1f MB", timeLabel(e.document().time()).c_str(),
+                cache.end(), cache.frames(), double(cache.bytes()) / 1e6);
+    itemTooltip("Simulation/baked",
+                "Each frame holds every dynamic body's state. Past 512 MB "
+                "every other frame goes, and frames are kept half as often.");
 }
 
 }  // namespace mb

@@ -15,13 +15,35 @@ const std::shared_ptr<const RunPiece>& pieceAt(const std::shared_ptr<const RunPi
 void FrameCache::record(const std::shared_ptr<const RunPiece>& run, double t, const Scene& scene) {
     // A run going on from an earlier time (after a scrub or an undo) replaces what followed.
     while (!frames_.empty() && frames_.back().t >= t) frames_.pop_back();
-    if (!run || frames_.size() >= kMaxFrames) return;
+    if (!run) return;
     BakedFrame f{t, pieceAt(run, t), {}};
+    // A thinned cache keeps frames a gap apart, the newest standing in until the next is a gap
+    // on; the first after an edit always stays, to show the edit.
+    const size_t n = frames_.size();
+    if (n >= 2 && frames_[n - 1].piece == f.piece && frames_[n - 2].piece == f.piece &&
+        t - frames_[n - 2].t < gap_)
+        frames_.pop_back();
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
         if (o.dynamic()) f.bodies.push_back({int(i), o.pos, o.vel, o.spin, o.orient});
     }
     frames_.push_back(std::move(f));
+    if (bytes() > budget_) thin();
+}
+
+size_t FrameCache::bytes() const {
+    size_t n = frames_.size() * sizeof(BakedFrame);
+    for (const BakedFrame& f : frames_) n += f.bodies.capacity() * sizeof(BodyState);
+    return n;
+}
+
+void FrameCache::thin() {
+    std::vector<BakedFrame> kept;
+    for (size_t i = (frames_.size() - 1) % 2; i < frames_.size(); i += 2)
+        kept.push_back(std::move(frames_[i]));
+    frames_ = std::move(kept);
+    if (frames_.size() > 1)
+        gap_ = (frames_.back().t - frames_.front().t) / double(frames_.size() - 1);
 }
 
 void FrameCache::follow(const std::shared_ptr<const RunPiece>& run) {

@@ -1,6 +1,7 @@
 // test_frame_cache.cpp — a run's pieces, and the frames that follow an edit at a later time.
 #include "marchbox/editor/frame_cache.h"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 
 using namespace mb;
@@ -83,4 +84,43 @@ TEST(FrameCache, AFrameAfterAnEditPutsBackTheEditedObjects) {
     applyFrame(*cache.at(0.6), shown);
     EXPECT_EQ(shown.objects[0].radius, 2.0f);
     EXPECT_EQ(shown.objects[0].pos, glm::vec3(0, 1.5f, 0));  // the body's state at the frame
+}
+
+// 100 frames of one body against a budget of 41 (so that it thins an even count): every other
+// frame goes, the newest stays, and frames are kept half as often after.
+TEST(FrameCache, PastItsBudgetTheCacheKeepsEveryOtherFrame) {
+    Piece root = piece(0, nullptr);
+    FrameCache probe;
+    probe.record(root, 0.01, sphereAt(1));
+    const size_t perFrame = probe.bytes();
+    FrameCache cache(41 * perFrame);
+    for (int k = 1; k <= 100; ++k) {
+        const size_t before = cache.frames();
+        cache.record(root, k / 100.0, sphereAt(float(k)));
+        if (cache.frames() < before) {  // thinned
+            EXPECT_DOUBLE_EQ(cache.end(), k / 100.0);
+        }
+    }
+    EXPECT_LE(cache.bytes(), 41 * perFrame);
+    EXPECT_GE(cache.frames(), 10u);
+    EXPECT_DOUBLE_EQ(cache.end(), 1.0);  // the newest is always there
+    EXPECT_EQ(cache.at(1.0)->bodies[0].pos.y, 100.0f);
+    std::vector<double> kept;  // the frames' times, found through at()
+    for (int ms = 0; ms <= 1000; ++ms)
+        if (const BakedFrame* f = cache.at(ms / 1000.0); f && (kept.empty() || f->t != kept.back()))
+            kept.push_back(f->t);
+    ASSERT_EQ(kept.size(), cache.frames());
+    double least = 1, most = 0;  // thinned evenly: no crowd, no long hole
+    for (size_t i = 1; i + 1 < kept.size(); ++i) {
+        least = std::min(least, kept[i] - kept[i - 1]);
+        most = std::max(most, kept[i] - kept[i - 1]);
+    }
+    EXPECT_LE(most, 2.5 * least);  // 0.04 s and 0.02 s here; 0.08 and 0.01 without the gap
+
+    Piece edit = piece(1.001, root, 4);  // an edit's first frame stays, however near
+    cache.follow(edit);
+    cache.record(edit, 1.001, sphereAt(-1));
+    cache.record(edit, 1.002, sphereAt(-2));
+    EXPECT_EQ(cache.at(1.0015)->bodies[0].pos.y, -1.0f);
+    EXPECT_EQ(cache.at(1.002)->bodies[0].pos.y, -2.0f);
 }

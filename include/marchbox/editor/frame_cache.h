@@ -5,8 +5,8 @@
 // was simulated in. The cache holds one timeline, that of the document's run: after an edit,
 // an undo or a replay from an earlier time, follow() drops the frames that no longer belong to
 // it, which are all those after the time that changed. Only the bodies are kept (about 60
-// bytes each): a minute at 60 frames/s of 4096 bodies is under 1 GB, so the cache stops at
-// kMaxFrames and the timeline ends there.
+// bytes each): a minute at 60 frames/s of 4096 bodies is about 1 GB, so past a budget the
+// cache drops every other frame and keeps frames half as often from then on.
 #pragma once
 
 #include "marchbox/scene/scene.h"
@@ -44,7 +44,9 @@ struct BakedFrame {
 
 class FrameCache {
 public:
-    static constexpr size_t kMaxFrames = 3600;
+    static constexpr size_t kDefaultBudget = size_t(512) << 20;  // bytes: 36 s of 4096 bodies
+
+    explicit FrameCache(size_t budget = kDefaultBudget) : budget_(budget) {}
 
     // The scene's dynamic bodies at time t of `run` (its last piece), after the frames before t.
     void record(const std::shared_ptr<const RunPiece>& run, double t, const Scene& scene);
@@ -55,8 +57,14 @@ public:
     const BakedFrame* at(double t) const;
     double end() const;  // the last frame's t, or 0
     bool empty() const { return frames_.empty(); }
+    size_t frames() const { return frames_.size(); }
+    size_t bytes() const;  // held by the frames, about
 
 private:
+    void thin();  // every other frame goes, the last stays
+
+    size_t budget_;
+    double gap_ = 0;                  // s: the least time between frames kept, 0 at first
     std::vector<BakedFrame> frames_;  // in order of t
 };
 
