@@ -311,8 +311,8 @@ static void plainShortcut(UiContext& c, const KeyPress& k) {
         case GLFW_KEY_J:
             e.kick();
             break;
-        case GLFW_KEY_HOME:
-            frameView(c, true);
+        case GLFW_KEY_HOME:  // as in Blender, for the area under the mouse
+            c.ui.overSimulation ? void(e.seek(0)) : frameView(c, true);
             break;
         case GLFW_KEY_KP_DECIMAL:
             frameView(c, false);

@@ -57,8 +57,10 @@ static void statistics(const Simulation& sim) {
 }
 
 void drawSimulationWindow(UiContext& c) {
+    c.ui.overSimulation = false;
     if (!c.ui.showSimulation) return;
     if (beginPanel(c, Panel::Simulation, "Simulation", &c.ui.showSimulation)) {
+        c.ui.overSimulation = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows);
         controls(c);
         ImGui::Separator();
         worldFields(c);

@@ -54,6 +54,7 @@ struct UiState {
     std::string replacePath;              // Save As warned once that this file exists
     bool refocusPath = false;             // Save As failed on Enter: the field keeps the keys
     bool escape = false;                  // Esc this frame: the open dialog cancels
+    bool overSimulation = false;          // the mouse was over the Simulation window: Home rewinds
 
     Messages messages;                     // refusals and failures, each in its place, in red
     RenderOptions render = viewOptions();  // debug view and uber shader
