@@ -23,7 +23,7 @@ from xscreen import Screen, close_window  # noqa: E402
 WINDOW = (640, 400)  # small: a software renderer draws it a few times a second
 HOLD = 0.4           # s a key or button stays down: longer than a slow frame
 # Cases that need another window or scene than the small default (paths from the source tree).
-SIZES = {'live': (1280, 720), 'panels': (960, 600)}
+SIZES = {'live': (1280, 720), 'panels': (960, 600), 'guide': (960, 540)}
 SCENES = {'live': 'tests/e2e/live_scene.txt', 'slow_input': 'tests/e2e/slow_scene.txt'}
 UNTITLED = {'new_save_as'}  # cases that start the editor with no file named
 SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..')
@@ -1282,6 +1282,134 @@ def case_fog(app, scene):
     app.key('ctrl+q')
     app.wait('ask exit')  # the fog density is an edit
     app.click_widget("Unsaved changes/Don't save")
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def up_axis(orient):
+    """The y components of a body's turned axes, from its orient w,x,y,z: one of them is ±1
+    when it rests on a face."""
+    w, x, y, z = orient
+    return [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)]
+
+
+def handle_point(scene, pos, axis, along):
+    """The window pixel `along` of the way out along the move handle of world `axis` (0, 1, 2)
+    of an object at pos: handles are GizmoSettings.lengthPixels (90) long on screen."""
+    tip = list(pos)
+    tip[axis] += 0.01
+    (x0, y0), (x1, y1) = project(scene, pos), project(scene, tip)
+    norm = math.hypot(x1 - x0, y1 - y0)
+    return x0 + (x1 - x0) / norm * 90 * along, y0 + (y1 - y0) / norm * 90 * along
+
+
+def drag(app, start, end, steps=6, ctrl=False):
+    """Holds the left button from start to end in steps, as a hand moves, Ctrl held if asked."""
+    app.move(int(start[0]), int(start[1]))
+    if ctrl:
+        xdotool('keydown', 'ctrl')
+    xdotool('mousedown', 1)
+    time.sleep(HOLD)
+    for i in range(1, steps + 1):
+        app.move(int(start[0] + (end[0] - start[0]) * i / steps),
+                 int(start[1] + (end[1] - start[1]) * i / steps))
+    time.sleep(HOLD)
+    xdotool('mouseup', 1)
+    if ctrl:
+        xdotool('keyup', 'ctrl')
+
+
+def case_guide(app, scene):
+    """docs/getting-started.md, each step as it tells it, with no typed coordinates: File > New,
+    save, Edit > Add > Box, name it and make it dynamic, lift it and tilt it with the handles,
+    play (it falls, tumbles and lands flat on a face), move it up the list, open it again.
+    With MARCHBOX_GUIDE_IMAGES set (scripts/make-pictures.sh) the steps' screenshots go there
+    as the guide's pictures."""
+    images = os.environ.get('MARCHBOX_GUIDE_IMAGES')
+
+    def picture(name):
+        app.key('F12')
+        shot = app.wait('screenshot ').split(' ', 1)[1]
+        if images:
+            shutil.copy(shot, os.path.join(images, 'guide-%s.png' % name))
+
+    crate = os.path.join(app.workdir, 'crate.txt')
+    app.key('ctrl+n')
+    app.wait('new')
+    app.key('ctrl+s')  # a new scene has no file: Save asks where
+    app.wait('typing Save scene as/path')
+    app.type(crate)
+    app.key('Return')
+    check(app.wait('save ') == 'save ' + crate, 'Save As did not save the new scene')
+
+    app.click_widget('Edit', fresh=False)
+    app.wait('popup menu Edit open')
+    app.move(*app.widget('Edit/Add'))
+    app.click_widget('Add/Box')
+    app.wait('edit Add box')
+    app.settle()
+    picture('1-add')
+    fill(app, 'Objects/name', 'crate', fresh=False)  # Add selected the box: its fields are in Objects
+    app.key('Return')
+    app.wait('edit ')
+    app.save()
+    box = scene_values(crate, 'object', 'pos')[1]
+    check(scene_values(crate, 'object', 'static')[1] == [0.0], 'an added box is not dynamic')
+
+    drag(app, handle_point(crate, box, 0, 0.6), handle_point(crate, box, 0, -0.6))  # red: aside
+    app.wait('edit Move object')
+    app.save()
+    aside = scene_values(crate, 'object', 'pos')[1]
+    drag(app, handle_point(crate, aside, 1, 0.6), handle_point(crate, aside, 1, 1.6))  # green: up
+    app.wait('edit Move object')
+    app.key('r')
+    app.wait('gizmo rotate')
+    app.save()
+    lifted = scene_values(crate, 'object', 'pos')[1]
+    check(abs(aside[0] - box[0]) > 0.5 and aside[1:] == box[1:],
+          'the red arrow did not move the box along x: %s -> %s' % (box, aside))
+    check(lifted[1] > aside[1] + 0.5 and lifted[0] == aside[0] and lifted[2] == aside[2],
+          'the green arrow did not lift the box straight up: %s -> %s' % (aside, lifted))
+    # A point of the ring about z (the view's depth) away from the y ring's: Ctrl turns by 15°.
+    ring = handle_point(crate, lifted, 0, 0.7071)
+    ring = (ring[0], 2 * project(crate, lifted)[1] - handle_point(crate, lifted, 1, 0.7071)[1])
+    drag(app, ring, (ring[0] + 40, ring[1] + 40), ctrl=True)
+    app.wait('edit Rotate object')
+    app.settle()
+    picture('2-handles')
+    app.save()
+    turned = scene_values(crate, 'object', 'orient')[1]
+    angle = 2 * math.degrees(math.acos(min(1.0, abs(turned[0]))))
+    check(abs(turned[1]) < 1e-3 and abs(turned[2]) < 1e-3 and 10 < angle < 80 and
+          abs(angle / 15 - round(angle / 15)) < 1e-3, 'not a snapped turn about z: %s' % turned)
+
+    app.key('space')
+    app.wait('play')
+    time.sleep(4)
+    app.key('space')
+    app.wait('pause')
+    app.settle()
+    picture('3-played')
+    app.menu('Simulation', 'Keep simulated poses')
+    app.save()
+    rest, orient = scene_values(crate, 'object', 'pos')[1], scene_values(crate, 'object', 'orient')[1]
+    check(max(abs(v) for v in up_axis(orient)) > 0.999, 'the crate rests on an edge: %s' % orient)
+    check(rest[1] < lifted[1] - 0.3, 'the crate did not fall: y %s' % rest[1])
+    app.key('ctrl+z')
+    app.wait('undo Keep simulated poses')
+    app.key('shift+Left')  # back to the start: edits there are what Save writes
+    app.wait('seek t = 0')
+
+    drag(app, app.widget('Objects/1 crate: box, union, dynamic', fresh=False),
+         app.widget('Objects/0 sphere, union, dynamic', fresh=False))
+    app.wait('edit Move object up')
+    app.save()
+    first = [l.split() for l in open(crate) if l.startswith('object ')][0]
+    check('name:crate' in first and 'type:box' in first, 'the crate is not first: %s' % first)
+    app.key('ctrl+o')
+    app.wait('typing Open scene/path')
+    app.key('Return')
+    check(app.wait('open ') == 'open ' + crate, 'the saved scene did not open again')
+    app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 
 
