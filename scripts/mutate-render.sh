@@ -39,7 +39,7 @@ shaders/lighting.glsl | 0.25 * pow(c, 64.0)                               | 0.25
 shaders/lighting.glsl | mix(vec3(1.0), uSkyTint, 0.35)                    | mix(vec3(1.0), uSkyTint, 0.0)                     | sky no longer tinted by the brightest light
 shaders/lighting.glsl | mix(horizon, zenith, sqrt(rd.y))                  | mix(horizon, zenith, rd.y)                        | sky gradient linear instead of sqrt
 shaders/raymarch.glsl | return res * res * (3.0 - 2.0 * res);             | return res;                                       | soft-shadow smoothstep dropped: linear penumbra
-shaders/raymarch.glsl | float k = uSoftness;                              | float k = 2.0 * uSoftness;                        | soft shadows twice as hard
+shaders/raymarch.glsl | float k = uSoftness, res = 1.0;                   | float k = 2.0 * uSoftness, res = 1.0;             | soft shadows twice as hard
 shaders/lighting.glsl | shadow(p + n * 4.0 * normalStep(p), l, maxT)      | shadow(p, l, maxT)                                | shadow rays start on the surface: acne
 shaders/lighting.glsl | uLights[i].color.rgb, dist,                       | uLights[i].color.rgb, uMaxDist,                   | objects beyond a point light shadow it
 shaders/sdf.glsl      | h * h * k * 0.25                                  | h * h * k * 0.2                                   | smooth-union constant 0.25 -> 0.2: thinner blends
@@ -63,7 +63,10 @@ shaders/intersect.glsl | vec3 near = (-b - ro) * inv                      | vec3
 shaders/intersect.glsl | vec2(-1.0, 1.0) * sqrt(h)) / a                   | vec2(1.0, -1.0) * sqrt(h)) / a                    | ray-cylinder side roots swapped
 shaders/intersect.glsl | ballSpan(ro, rd, vec3(0.0, -h, 0.0), r)          | ballSpan(ro, rd, vec3(0.0, h, 0.0), r)            | capsule loses its lower cap
 shaders/intersect.glsl | 0.5 * p + m + e, n, best);                       | 0.5 * p + m - e, n, best);                        | torus quartic factored with a wrong sign
-shaders/intersect.glsl | cell += move * stepDir;                          | cell += 2 * move * stepDir;                       | plain-member grid walk misses every other cell
+shaders/intersect.glsl | w.cell += move * w.stepDir;                      | w.cell += 2 * move * w.stepDir;                   | plain-member grid walk misses every other cell
+shaders/penumbra.glsl | / e) - b) / c, 1.0 / far);                        | / e) + b) / c, 1.0 / far);                        | plain balls' penumbrae taken at the wrong angle
+shaders/penumbra.glsl | if (f1 < f2) {                                    | if (f1 > f2) {                                    | grid penumbra search climbs away from the shadow
+shaders/raymarch.glsl | h < 2.0 * ph ? h * h / (2.0 * ph) : 0.0           | h * h / (2.0 * ph)                                | grid soft shadows black past an empty cell
 shaders/outline.glsl  | kOutlinePixels = 2.0;                             | kOutlinePixels = 0.5;                             | editor's selection outline a quarter as wide
 shaders/outline.glsl  | ? kOutlineColor : col;                            | ? col : col;                                      | editor's selection outline gone
 shaders/post.frag     | lB < lMin || lB > lMax ? a : b                    | lB < lMin || lB > lMax ? b : a                    | FXAA keeps the wrong blend

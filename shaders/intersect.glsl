@@ -161,12 +161,38 @@ float hitTorus(vec3 ro, vec3 rd, float R, float r) {
 }
 #endif
 
+// Narrows span to where a·t >= b.
+void clipSpan(inout vec2 span, float a, float b) {
+    if (a > 0.0) span.x = max(span.x, b / a);
+    else if (a < 0.0) span.y = min(span.y, b / a);
+    else if (b > 0.0) span.y = -1.0;
+}
+
+// The part of the ray, up to `far`, inside the box lo..hi grown by grow·t at distance t. Empty
+// (x > y) when it misses.
+vec2 grownBoxSpan(vec3 ro, vec3 rd, float far, float grow, vec3 lo, vec3 hi) {
+    vec2 span = vec2(0.0, far);
+    if (OBJECT_COUNT == 0) return vec2(1.0, 0.0);
+    for (int i = 0; i < 3; ++i) {  // lo - grow·t <= ro + t·rd <= hi + grow·t
+        clipSpan(span, rd[i] + grow, lo[i] - ro[i]);
+        clipSpan(span, grow - rd[i], ro[i] - hi[i]);
+    }
+    return span;
+}
+
 #if PLAIN
 // Whether the ray meets the plain members' box before far.
 bool plainBoxMet(vec3 ro, vec3 rd, float far) {
     vec3 c = 0.5 * (uPlainLo + uPlainHi);
     vec2 s = boxSpan(ro - c, safeInverse(rd), 0.5 * (uPlainHi - uPlainLo));
     return s.x <= s.y && s.y >= 0.0 && s.x <= far;
+}
+
+// Whether it comes within t/k of that box at some t before far: past that, k times any
+// member's clearance is over 1 and changes nothing (penumbra.glsl).
+bool plainBoxNear(vec3 ro, vec3 rd, float far, float k) {
+    vec2 s = grownBoxSpan(ro, rd, far, 1.0 / k, uPlainLo, uPlainHi);
+    return s.x <= s.y;
 }
 #endif
 
@@ -214,35 +240,64 @@ float hitPlainMember(int id, vec3 ro, vec3 rd) {
 #endif
 }
 
-// Nearest plain hit before `far` (x: t, y: object; (far, HIT_NONE) if none), walking the grid's
-// cells in the ray's order (Amanatides & Woo 1987). A hit beyond its cell's exit may yet be beaten
-// in a later cell, so the walk ends only at a cell holding a hit. `anyHit` (shadows) ends it at
-// the first hit at all.
-vec2 hitPlainMembers(vec3 ro, vec3 rd, float far, bool anyHit) {
-    vec2 best = vec2(far, HIT_NONE);
+// A walk through the grid's cells in the ray's order (Amanatides & Woo 1987), up to `end`.
+struct PlainWalk {
+    ivec3 cell, stepDir;
+    vec3 tNext, tDelta;  // where the ray crosses the next boundary on each axis; a cell's width
+    float end;
+};
+
+// The walk over the ray up to far; false when that misses the grid.
+bool startPlainWalk(vec3 ro, vec3 rd, float far, out PlainWalk w) {
     vec3 inv = safeInverse(rd), size = vec3(uPlainDims) * uPlainCell;
     vec2 span = boxSpan(ro - uPlainOrigin - 0.5 * size, inv, 0.5 * size);
     span = vec2(max(span.x, 0.0), min(span.y, far));
-    if (span.x > span.y) return best;
     vec3 enter = ro + rd * span.x - uPlainOrigin;
-    ivec3 cell = clamp(ivec3(floor(enter / uPlainCell)), ivec3(0), uPlainDims - 1);
-    ivec3 stepDir = ivec3(rd.x >= 0.0 ? 1 : -1, rd.y >= 0.0 ? 1 : -1, rd.z >= 0.0 ? 1 : -1);
-    vec3 tDelta = abs(uPlainCell * inv);
-    vec3 tNext = (uPlainOrigin + (vec3(cell) + step(0.0, rd)) * uPlainCell - ro) * inv;
-    for (int i = 0; i < uPlainDims.x + uPlainDims.y + uPlainDims.z; ++i) {
-        int c = (cell.z * uPlainDims.y + cell.y) * uPlainDims.x + cell.x;
-        int first = int(texelFetch(uPlainCells, c).r), last = int(texelFetch(uPlainCells, c + 1).r);
-        for (int k = first; k < last; ++k) {
+    w.cell = clamp(ivec3(floor(enter / uPlainCell)), ivec3(0), uPlainDims - 1);
+    w.stepDir = ivec3(rd.x >= 0.0 ? 1 : -1, rd.y >= 0.0 ? 1 : -1, rd.z >= 0.0 ? 1 : -1);
+    w.tDelta = abs(uPlainCell * inv);
+    w.tNext = (uPlainOrigin + (vec3(w.cell) + step(0.0, rd)) * uPlainCell - ro) * inv;
+    w.end = span.y;
+    return span.x <= span.y;
+}
+
+// The most cells a walk can visit.
+int plainWalkLimit() { return uPlainDims.x + uPlainDims.y + uPlainDims.z; }
+
+// The current cell's members: uPlainItems from x up to y.
+ivec2 plainCellItems(PlainWalk w) {
+    int c = (w.cell.z * uPlainDims.y + w.cell.y) * uPlainDims.x + w.cell.x;
+    return ivec2(texelFetch(uPlainCells, c).r, texelFetch(uPlainCells, c + 1).r);
+}
+
+float plainCellExit(PlainWalk w) { return min(w.tNext.x, min(w.tNext.y, w.tNext.z)); }
+
+// Into the next cell; false past the walk's end or the grid.
+bool stepPlainWalk(inout PlainWalk w) {
+    float exit = plainCellExit(w);
+    if (exit >= w.end) return false;
+    // Every axis whose boundary comes first steps: at a corner, two at once.
+    ivec3 move = ivec3(lessThanEqual(w.tNext, vec3(exit)));
+    w.cell += move * w.stepDir;
+    w.tNext += vec3(move) * w.tDelta;
+    return all(greaterThanEqual(w.cell, ivec3(0))) && all(lessThan(w.cell, uPlainDims));
+}
+
+// Nearest plain hit before `far` (x: t, y: object; (far, HIT_NONE) if none). A hit beyond its
+// cell's exit may yet be beaten in a later cell, so the walk ends only at a cell holding a hit.
+// `anyHit` (shadows) ends it at the first hit at all.
+vec2 hitPlainMembers(vec3 ro, vec3 rd, float far, bool anyHit) {
+    vec2 best = vec2(far, HIT_NONE);
+    PlainWalk w;
+    if (!startPlainWalk(ro, rd, far, w)) return best;
+    for (int i = 0; i < plainWalkLimit(); ++i) {
+        ivec2 items = plainCellItems(w);
+        for (int k = items.x; k < items.y; ++k) {
             int id = int(texelFetch(uPlainItems, k).r);
             best = nearerHit(best, hitPlainMember(id, ro, rd), float(id));
         }
-        float exit = min(tNext.x, min(tNext.y, tNext.z));
-        if (best.x <= exit || exit >= span.y || (anyHit && !missed(best.y))) break;
-        // Every axis whose boundary comes first steps: at a corner, two at once.
-        ivec3 move = ivec3(lessThanEqual(tNext, vec3(exit)));
-        cell += move * stepDir;
-        tNext += vec3(move) * tDelta;
-        if (any(lessThan(cell, ivec3(0))) || any(greaterThanEqual(cell, uPlainDims))) break;
+        bool found = best.x <= plainCellExit(w) || (anyHit && !missed(best.y));
+        if (found || !stepPlainWalk(w)) break;
     }
     return best;
 }

@@ -18,25 +18,6 @@ float groundHit(vec3 ro, vec3 rd) {
     return 1e30;
 }
 
-// Narrows span to where a·t >= b.
-void clipSpan(inout vec2 span, float a, float b) {
-    if (a > 0.0) span.x = max(span.x, b / a);
-    else if (a < 0.0) span.y = min(span.y, b / a);
-    else if (b > 0.0) span.y = -1.0;
-}
-
-// The part of the ray, up to `far`, inside the box lo..hi grown by grow·t at distance t. Empty
-// (x > y) when it misses.
-vec2 grownBoxSpan(vec3 ro, vec3 rd, float far, float grow, vec3 lo, vec3 hi) {
-    vec2 span = vec2(0.0, far);
-    if (OBJECT_COUNT == 0) return vec2(1.0, 0.0);
-    for (int i = 0; i < 3; ++i) {  // lo - grow·t <= ro + t·rd <= hi + grow·t
-        clipSpan(span, rd[i] + grow, lo[i] - ro[i]);
-        clipSpan(span, grow - rd[i], ro[i] - hi[i]);
-    }
-    return span;
-}
-
 // Within the box that holds every object's reach: only there is anything but the ground. A soft
 // shadow grows it by 1/k, past which k·d/t > 1 changes nothing.
 vec2 objectSpan(vec3 ro, vec3 rd, float far, float grow) {
@@ -44,8 +25,8 @@ vec2 objectSpan(vec3 ro, vec3 rd, float far, float grow) {
 }
 
 // Within the box of the marched objects: all but the plain members, which are met exactly.
-vec2 restSpan(vec3 ro, vec3 rd, float far) {
-    return grownBoxSpan(ro, rd, far, 0.0, uRestLo, uRestHi);
+vec2 restSpan(vec3 ro, vec3 rd, float far, float grow) {
+    return grownBoxSpan(ro, rd, far, grow, uRestLo, uRestHi);
 }
 
 // Sphere tracing of the marched objects (mapRestAlong) over the span; x: t, y: object or HIT_NONE, z: steps.
@@ -88,7 +69,7 @@ vec3 castRay(vec3 ro, vec3 rd) {
     hit.xy = hitPlainMembers(ro, rd, hit.x, false);
 #endif
 #if HAS_REST
-    vec3 marched = marchObjects(ro, rd, restSpan(ro, rd, hit.x));
+    vec3 marched = marchObjects(ro, rd, restSpan(ro, rd, hit.x, 0.0));
     if (!missed(marched.y)) return marched;
     hit.z = marched.z;
 #endif
@@ -146,7 +127,7 @@ float hardShadow(vec3 ro, vec3 rd, float maxT) {
     if (!missed(hitPlainMembers(ro, rd, maxT, true).y)) return 0.0;
 #endif
 #if HAS_REST
-    vec2 span = restSpan(ro, rd, maxT);
+    vec2 span = restSpan(ro, rd, maxT, 0.0);
     float t = span.x;
     for (int i = 0; i < SHADOW_STEPS && t <= span.y; ++i) {
         float h = mapRestAlong(ro + rd * t, rd).x;
@@ -159,29 +140,46 @@ float hardShadow(vec3 ro, vec3 rd, float maxT) {
 #endif
 
 #if SHADOWS == 2
-// Penumbra from the nearest miss, with the improved estimate that uses the previous step to
-// place the closest approach between samples (Quilez 2018); the sqrt argument is clamped.
+// The marched objects' penumbra from the nearest miss, with the improved estimate that uses the
+// previous step to place the closest approach between samples (Quilez 2018); the sqrt argument
+// is clamped. The plain members' own, where taken apart (penumbra.glsl), joins by the least.
 float softShadow(vec3 ro, vec3 rd, float maxT) {
     if (groundHit(ro, rd) < maxT) return 0.0;  // a light under the floor
-    float k = uSoftness;
-    vec2 span = objectSpan(ro, rd, maxT, 1.0 / k);
-    float res = 1.0, t = span.x, ph = 1e10;
+    float k = uSoftness, res = 1.0;
 #if HAS_GROUND
     // The floor's own penumbra under grazing light: its distance over t, (height + t·rd.y) / t,
     // falls all along the ray, so its least value is at the end.
     if (GROUND_ON) res = min(res, k * (ro.y - uFloor + maxT * rd.y) / maxT);
 #endif
+#if PLAIN
+    res = min(res, k * plainClearance(ro, rd, maxT, k));
+    if (res < 0.001) return 0.0;
+#endif
+#if PLAIN == 2
+    vec2 span = restSpan(ro, rd, maxT, 1.0 / k);
+#else
+    vec2 span = objectSpan(ro, rd, maxT, 1.0 / k);
+#endif
+#if PLAIN != 2 || HAS_REST  // a grid of plain members alone: nothing to march
+    float t = span.x, ph = 1e10;
     for (int i = 0; i < SHADOW_STEPS && t <= span.y; ++i) {
-        vec3 m = mapObjectsAlong(ro + rd * t, rd);
+#if PLAIN == 1
+        vec3 m = chainAlong(mapSoftRest(ro + rd * t));  // all but the plain balls
+#else
+        vec3 m = mapRestAlong(ro + rd * t, rd);  // the grid's: only inside the rest's box
+#endif
         if (m.x < uEpsilon) return 0.0;
         float h = m.z;
-        float y = h * h / (2.0 * ph);
+        // A true distance's unbounding spheres overlap (h <= 2·ph); a grid cell's own distance
+        // past an empty cell (1e10) need not, and there the plain estimate (y = 0) stands.
+        float y = h < 2.0 * ph ? h * h / (2.0 * ph) : 0.0;
         float d = sqrt(max(h * h - y * y, 0.0));
         res = min(res, k * d / max(1e-6, t - y));
         if (res < 0.001) return 0.0;  // fully dark already: the rest of the ray cannot matter
         ph = h;
         t += m.x;
     }
+#endif
     res = clamp(res, 0.0, 1.0);
     return res * res * (3.0 - 2.0 * res);
 }

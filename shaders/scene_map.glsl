@@ -6,6 +6,7 @@
 bool missed(float id) { return id < HIT_NONE + 0.5; }
 
 #include "intersect.glsl"
+#include "penumbra.glsl"
 
 // Replaced by src/gl/scene_compiler.cpp: a compiled scene's loadObjects() and mapObjects(),
 // with mapRest() and hitPlainMembers() where it has plain members (intersect.glsl), then the per-type SDF switch (the loop's, and the outline's), a case for each type present.
@@ -123,13 +124,15 @@ vec3 mapObjectsAlong(vec3 p, vec3 rd) {
 #endif
 }
 
+// A compiled chain's sample for stepping: its distance is the step and the penumbra's too.
+vec3 chainAlong(vec2 res) { return vec3(res, res.x); }
+
 // The marched part of the scene, for stepping along rd as mapObjectsAlong. A compiled scene
 // marches its objects but the plain members; the grid and uber march them all, but only inside
 // the box of the rest (uRestLo, uRestHi), and a plain member's exact hit ends the march anyway.
 vec3 mapRestAlong(vec3 p, vec3 rd) {
 #if PLAIN == 1
-    vec2 res = mapRest(p);
-    return vec3(res, res.x);
+    return chainAlong(mapRest(p));
 #else
     return mapObjectsAlong(p, rd);
 #endif

@@ -239,8 +239,8 @@ bool fragmentSource(const ShaderFeatures& f, std::string* out, std::string* erro
         *error = "march.frag: no '#pragma marchbox scene' line for the compiled scene";
         return false;
     }
-    std::string scene =
-        (f.compiled ? compileSceneMap(f.layout) + "\n" : "") + compileShapeSwitch(f.shapes);
+    std::string scene = (f.compiled ? compileSceneMap(f.layout, f.shadows == 2) + "\n" : "") +
+                        compileShapeSwitch(f.shapes);
     resolved.replace(at, marker.size(), scene);
     auto markerLine = map.begin() + std::count(resolved.begin(), resolved.begin() + long(at), '\n');
     LineMap sceneLines = linesOf("<scene code>", scene);

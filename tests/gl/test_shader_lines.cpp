@@ -36,8 +36,9 @@ void expectEveryLineFound(const ShaderFeatures& f) {
     ASSERT_EQ(map.size(), lines.size());
     std::map<std::string, std::vector<std::string>> origins = {
         {"<defines>", splitLines(shaderPrefix(f))},
-        {"<scene code>", splitLines((f.compiled ? compileSceneMap(f.layout) + "\n" : "") +
-                                    compileShapeSwitch(f.shapes))}};
+        {"<scene code>",
+         splitLines((f.compiled ? compileSceneMap(f.layout, f.shadows == 2) + "\n" : "") +
+                    compileShapeSwitch(f.shapes))}};
     for (size_t i = 0; i < lines.size(); ++i) {
         const LineOrigin& o = map[i];
         if (!origins.count(o.file)) origins[o.file] = fileLines(o.file);

@@ -31,8 +31,10 @@ std::vector<ObjectLayout> objectLayout(const Scene& scene);
 
 // loadObjects() and mapObjects(p) for a compiled scene; with plain members also mapRest(p), the
 // chain of the others, and hitPlainMembers(ro, rd, far, anyHit), a line of exact intersection
-// each (shaders/intersect.glsl).
-std::string compileSceneMap(const std::vector<ObjectLayout>& layout);
+// each (shaders/intersect.glsl); with soft shadows too plainClearance(ro, rd, far, k), a line of
+// closed-form penumbra per plain ball (shaders/penumbra.glsl), and mapSoftRest(p), the chain of
+// all the other objects, which soft shadows march.
+std::string compileSceneMap(const std::vector<ObjectLayout>& layout, bool softShadows);
 
 // sdShape(o, q) and sdObjectLocal(i, q) for the loop, the outline and a plain member's normal: one
 // case per type whose bit is set in
