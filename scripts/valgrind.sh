@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs an off-screen render and a simulate under valgrind --leak-check=full and fails on any
 # memory error or definite leak not allocated by the OpenGL driver (tests/valgrind/mesa.supp).
-# Slow (a render takes about 1.5 minutes under valgrind): CI runs it last (.ci/run).
+# Slow (a render takes about 1.5 minutes under valgrind): CI runs it last (.ci/run). The two
+# runs go side by side, one a core: valgrind runs a program on one thread at a time.
 # Usage: scripts/valgrind.sh [BUILD_DIR]   (default build; builds marchbox there if needed)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,10 +12,10 @@ cmake --build "$build" -j"$(nproc)" --target marchbox >/dev/null
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-status=0
-# check NAME ARGS...: one marchbox run under memcheck; its log goes to BUILD/valgrind-NAME.log.
+# check NAME ARGS...: one marchbox run under memcheck; its log goes to BUILD/valgrind-NAME.log,
+# its summary to standard output in one piece (the runs go side by side); fails on a report.
 check() {
-  local name=$1 log=$build/valgrind-$1.log
+  local name=$1 log=$build/valgrind-$1.log status=0 said
   shift
   local start=$SECONDS
   # Mesa's disk shader cache serialises shaders with padding it never writes, and checks and
@@ -23,14 +24,21 @@ check() {
   if MESA_SHADER_CACHE_DISABLE=true valgrind --leak-check=full --show-leak-kinds=definite,indirect \
        --errors-for-leak-kinds=definite,indirect --suppressions=tests/valgrind/mesa.supp \
        --num-callers=40 --error-exitcode=99 --log-file="$log" "$build/marchbox" "$@" >/dev/null; then
-    echo "valgrind $name: clean ($((SECONDS - start)) s)"
+    said="valgrind $name: clean ($((SECONDS - start)) s)"
   else
-    echo "valgrind $name: FAILED, see $log" >&2
+    said="valgrind $name: FAILED, see $log"
     status=1
   fi
-  grep -E "definitely lost|indirectly lost|possibly lost|suppressed:|no leaks are possible|ERROR SUMMARY" "$log" |
-    sed 's/^==[0-9]*== */  /'
+  said+=$'\n'$(grep -E "definitely lost|indirectly lost|possibly lost|suppressed:|no leaks are possible|ERROR SUMMARY" "$log" |
+    sed 's/^==[0-9]*== */  /')
+  echo "$said"
+  return "$status"
 }
-check render render scenes/primitives.txt -o "$tmp/x.png" --size 64x36
-check simulate simulate scenes/pile.txt --seconds 2 -o "$tmp/after.txt"
+check render render scenes/primitives.txt -o "$tmp/x.png" --size 64x36 &
+render=$!
+check simulate simulate scenes/pile.txt --seconds 2 -o "$tmp/after.txt" &
+simulate=$!
+status=0
+wait "$render" || status=1
+wait "$simulate" || status=1
 exit "$status"
