@@ -3,7 +3,9 @@
 #include "ui.h"
 #include "widgets.h"
 
+#include "marchbox/editor/camera_control.h"
 #include "marchbox/editor/controls.h"
+#include "marchbox/scene/sdf.h"
 
 #include <algorithm>
 #include <imgui.h>
@@ -143,6 +145,17 @@ static void helpWindow(UiContext& c) {
     ImGui::End();
 }
 
+// Inside a solid the picture is black, or the inside of a shell: say so, and the way out.
+static void eyeNote(UiContext& c) {
+    const int around = solidAroundEye(c.editor.scene(), c.editor.shownCamera().pos);
+    if (around == kHitNone) return;
+    const std::string where =
+        around == kHitGround ? "below the ground" : "inside object " + std::to_string(around);
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "the camera is %s: wheel out, or Home",
+                       where.c_str());
+    markItem("Statistics/camera inside");
+}
+
 static void statsOverlay(UiContext& c) {
     c.ui.statsBottom = 0.0f;  // the right column may go up to the menu bar
     ImGuiIO& io = ImGui::GetIO();
@@ -179,6 +192,7 @@ static void statsOverlay(UiContext& c) {
         ImGui::Text("%zu objects   simulated %.2f s%s", c.editor.scene().objects.size(), simulated,
                     c.editor.simulation().playing() ? ", playing" : "");
         markItem("Statistics/simulated");
+        eyeNote(c);
         // The scene's own program on its way: meanwhile the uber stand-in or the last program
         // draws. The row is always there: a row that came and went would grow the auto-sized
         // overlay a frame late, and a compile shorter than a frame would never show.

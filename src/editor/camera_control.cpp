@@ -2,6 +2,7 @@
 #include "marchbox/editor/camera_control.h"
 
 #include "marchbox/scene/camera.h"
+#include "marchbox/scene/sdf.h"
 
 #include <algorithm>
 #include <cmath>
@@ -71,6 +72,11 @@ void previewOrbit(Camera& c, float seconds, const CameraControls& k) {
     if (s.r <= 0.0f) return;
     s.yaw += k.previewRadiansPerSecond * seconds;
     c.pos = c.target + fromSpherical(s);
+}
+
+int solidAroundEye(const Scene& scene, glm::vec3 eye) {
+    const SceneSample m = mapScene(makeSceneSdf(scene), eye);
+    return m.d < 0.0f ? m.object : kHitNone;
 }
 
 // Half the view's angle across (x) and up (y): tan of the vertical half angle is tan(fov/2),

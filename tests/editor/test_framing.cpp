@@ -74,3 +74,15 @@ TEST(Framing, TheDefaultSceneShowsEveryObject) {
     for (size_t i = 0; i < s.objects.size(); ++i)
         EXPECT_TRUE(ballInView(s.camera, ballOf(s.objects[i]), kWide)) << "object " << i;
 }
+
+// A view from inside a solid is black or a shell's inside: the overlay says what holds the eye.
+TEST(Framing, TheEyeInsideASolidIsNamed) {
+    Scene s;
+    std::vector<std::string> errors;
+    ASSERT_TRUE(loadScene(std::string(MARCHBOX_SOURCE_DIR) + "/scenes/inside.txt", &s, &errors));
+    EXPECT_EQ(solidAroundEye(s, s.camera.pos), 0);
+    ASSERT_TRUE(loadScene(std::string(MARCHBOX_SOURCE_DIR) + "/scenes/default.txt", &s, &errors));
+    EXPECT_EQ(solidAroundEye(s, s.camera.pos), kHitNone);
+    EXPECT_EQ(solidAroundEye(s, {0, -1, -8}), kHitGround);
+    EXPECT_EQ(solidAroundEye(s, s.objects[3].pos), 3);  // the mirror ball's centre
+}

@@ -38,6 +38,10 @@ void flyCamera(Camera& c, glm::vec3 move, float seconds, const CameraControls& k
 // Key 1's preview: a slow turn about the vertical through the target.
 void previewOrbit(Camera& c, float seconds, const CameraControls& k = {});
 
+// What holds the eye, so the view can say why it shows nothing but black: the index of the
+// object the eye is inside, kHitGround below the floor, kHitNone in the open (sdf.h's codes).
+int solidAroundEye(const Scene& scene, glm::vec3 eye);
+
 // A ball to frame: an object's bounding sphere, or a light's position with a small radius.
 struct Ball {
     glm::vec3 centre{0.0f};
