@@ -224,8 +224,10 @@ void App::screenshot(int width, int height) {
 
 std::string App::title() const {
     const Document& d = editor_.document();
+    std::string notes = d.time() > 0 ? timeLabel(d.time()) : "";
+    if (d.runEdits()) notes += (notes.empty() ? "" : ", ") + std::string("edits not in the start");
     return "Marchbox - " + d.name() + (d.dirty() ? " *" : "") +
-           (d.time() > 0 ? " (" + timeLabel(d.time()) + ")" : "");
+           (notes.empty() ? "" : " (" + notes + ")");
 }
 
 }  // namespace

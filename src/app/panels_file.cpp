@@ -212,21 +212,45 @@ static void saveAsDialog(UiContext& c) {
     ImGui::EndPopup();
 }
 
+// What leaving would lose. Edits of the run made at t > 0 are not in the start Save writes:
+// Keep makes the scene shown the start (only a scene at t > 0 can be kept), then saves.
+static void unsavedQuestion(const Document& d) {
+    const std::string& path = d.path();
+    const std::string file = path.empty() ? "the new scene" : path;
+    if (!d.runEdits()) {
+        ImGui::Text("Save the changes to %s first?", file.c_str());
+        return;
+    }
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s",
+                       "The run holds edits made at t > 0, which Save does not write.");
+    if (d.time() > 0)
+        ImGui::Text("Keep the scene shown at %s as the start, and save it to %s?",
+                    timeLabel(d.time()).c_str(), file.c_str());
+    else
+        ImGui::TextUnformatted(
+            "To keep them: Cancel, scrub to them, Simulation > Keep simulated poses.");
+    if (d.dirty()) ImGui::Text("Leaving them also leaves the changes to %s unsaved.", file.c_str());
+}
+
 static void unsavedPrompt(UiContext& c) {
     if (!beginModal(kUnsavedPopup)) return;
-    const std::string& path = c.editor.document().path();
-    ImGui::Text("Save the changes to %s first?", path.empty() ? "the new scene" : path.c_str());
-    bool save = button(kUnsavedPopup, "Save");
-    ImGui::SameLine();
-    bool discard = button(kUnsavedPopup, "Don't save");
+    const Document& d = c.editor.document();
+    unsavedQuestion(d);
+    const bool run = d.runEdits();
+    bool save = false;
+    if (!run || d.time() > 0) {
+        save = button(kUnsavedPopup, run ? "Keep and save" : "Save");
+        ImGui::SameLine();
+    }
+    bool discard = button(kUnsavedPopup, run ? "Leave them" : "Don't save");
     ImGui::SameLine();
     bool cancel = button(kUnsavedPopup, "Cancel") || escaped(c);
     if (save || discard || cancel) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
     if (cancel) c.editor.cancelLeave();
     if (discard) c.editor.confirmLeave();
-    if (save && !c.editor.document().path().empty() &&
-        c.editor.save(c.ui.messages.at(Place::SaveAs)))
+    if (save && run) c.editor.keepPoses();
+    if (save && !d.path().empty() && c.editor.save(c.ui.messages.at(Place::SaveAs)))
         c.editor.confirmLeave();
     else if (save) {  // no file yet, or it could not be written: ask where
         c.ui.saveThenLeave = true;

@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <imgui.h>
 #include <imgui_internal.h>  // the popup stack: Esc closes the topmost popup
+#include <utility>
+#include <vector>
 
 namespace mb {
 
@@ -225,19 +227,22 @@ static void noteRecentFile(UiContext& c) {
 }
 
 // The file's name at the bar's right end and, while saving would change the file, "unsaved
-// changes" beside it: the title's `*` is out of sight in a full-screen window. At t > 0 the
-// time leads it: what shows is not what Save writes.
+// changes" beside it: the title's `*` is out of sight in a full-screen window. Edits of the
+// run that the start lacks are said too: Save does not write them. At t > 0 the time leads
+// the name: what shows is not what Save writes.
 static void fileStatus(const Document& d) {
     const std::string name = (d.time() > 0 ? timeLabel(d.time()) + "   " : "") + d.name();
-    const char* unsaved = "unsaved changes";
+    std::vector<std::pair<const char*, const char*>> notes;  // text, widget mark
+    if (d.dirty()) notes.push_back({"unsaved changes", "menu/unsaved"});
+    if (d.runEdits()) notes.push_back({"edits at t > 0 not in the start", "menu/run-edits"});
     const ImGuiStyle& style = ImGui::GetStyle();
     float width = ImGui::CalcTextSize(name.c_str()).x + style.FramePadding.x;
-    if (d.dirty()) width += ImGui::CalcTextSize(unsaved).x + style.ItemSpacing.x;
+    for (const auto& n : notes) width += ImGui::CalcTextSize(n.first).x + style.ItemSpacing.x;
     ImGui::SameLine(
         std::max(ImGui::GetCursorPosX(), ImGui::GetWindowWidth() - width - style.WindowPadding.x));
-    if (d.dirty()) {
-        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", unsaved);
-        markItem("menu/unsaved");
+    for (const auto& n : notes) {
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", n.first);
+        markItem(n.second);
         ImGui::SameLine();
     }
     ImGui::TextDisabled("%s", name.c_str());

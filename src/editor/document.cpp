@@ -87,22 +87,33 @@ void Document::apply(const std::string& label, const SceneChange& change, uint64
         start_.reset();
         change(scene_);
     }
-    if (!sameMotion(scene_, before)) edited(time_);
+    if (!sameMotion(scene_, before)) edited(time_, !sameObjects(scene_, before));
     ++version_;
     history_.push(label, before, scene_, mergeKey);
     pushed(was);
 }
 
-void Document::edited(double t) {
+void Document::edited(double t, bool objects) {
     if (t <= 0) {  // an edit of the start: nothing has run from it yet
         run_.reset();
         return;
     }
     const std::shared_ptr<const RunPiece>& at = pieceAt(run_, t);
-    // Edits at one time (each frame of a drag) make one piece: the last replaces the others.
-    std::shared_ptr<const RunPiece> before = at && at->from == t ? at->before : at;
-    auto objects = std::make_shared<const std::vector<Object>>(scene_.objects);
-    run_ = std::make_shared<const RunPiece>(RunPiece{t, std::move(objects), std::move(before)});
+    // Edits at one time (each frame of a drag) make one piece: the last replaces the others,
+    // and holds whatever edit of the objects they made.
+    const bool replaces = at && at->from == t;
+    std::shared_ptr<const RunPiece> before = replaces ? at->before : at;
+    auto now = std::make_shared<const std::vector<Object>>(scene_.objects);
+    objects = objects || (replaces && at->objectsEdited);
+    run_ =
+        std::make_shared<const RunPiece>(RunPiece{t, std::move(now), std::move(before), objects});
+}
+
+// A world edit at t > 0 is made to the start too (apply): only the objects' edits are lost.
+bool Document::runEdits() const {
+    for (const RunPiece* p = run_.get(); p; p = p->before.get())
+        if (p->objectsEdited) return true;
+    return false;
 }
 
 void Document::commit(const std::string& label, const Scene& before) {

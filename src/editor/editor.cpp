@@ -27,7 +27,7 @@ bool Editor::request(Leave what, const std::string& path, std::vector<std::strin
         emitEvent("open-failed " + path);
         return false;
     }
-    if (!doc_.dirty()) {
+    if (!doc_.dirty() && !doc_.runEdits()) {
         leaveNow(what, path);
         return true;
     }

@@ -523,6 +523,68 @@ TEST(Editor, AnEditAtALaterTimeIsMadeAtThatTime) {
     EXPECT_EQ(e.document().start().objects.size(), 2u);
 }
 
+// A move at t > 0 is in the run, not in the start Save writes: leaving lost it unasked, as the
+// start still matched the file. Leaving asks while the run holds it; not once it is undone, or
+// kept as the start and saved.
+TEST(Editor, LeavingAsksWhileTheRunHoldsAnEditTheStartLacks) {
+    std::vector<std::string> errors;
+    Editor e = openEditor(writeFile("run-edit.txt", kScene));
+    run(e, 30);
+    e.moveObject(1, {4, 0.5f, 0}, 0);
+    EXPECT_FALSE(e.document().dirty());
+    EXPECT_TRUE(e.document().runEdits());
+    e.request(Leave::Exit, "", &errors);
+    EXPECT_EQ(e.pendingLeave(), Leave::Exit);
+    EXPECT_FALSE(e.quitRequested());
+    e.cancelLeave();
+    ASSERT_TRUE(e.undo());
+    EXPECT_FALSE(e.document().runEdits());
+    e.request(Leave::Exit, "", &errors);
+    EXPECT_TRUE(e.quitRequested());  // the run as the simulator made it: nothing to lose
+
+    Editor f = openEditor(writeFile("run-edit-kept.txt", kScene));
+    run(f, 30);
+    f.moveObject(1, {4, 0.5f, 0}, 0);
+    ASSERT_TRUE(f.keepPoses());
+    EXPECT_FALSE(f.document().runEdits());
+    std::string error;
+    ASSERT_TRUE(f.save(&error)) << error;
+    f.request(Leave::Exit, "", &errors);
+    EXPECT_TRUE(f.quitRequested());
+}
+
+// Gravity edited at t > 0 is made to the start too, so Save keeps it: nothing to ask.
+TEST(Editor, AWorldEditAtALaterTimeIsNoEditOfTheRunToAskAbout) {
+    Editor e = openEditor(writeFile("run-world.txt", kScene));
+    run(e, 30);
+    e.edit("Gravity", [](Scene& s) { s.world.gravity = 2; });
+    EXPECT_FALSE(e.document().runEdits());
+    std::string error;
+    ASSERT_TRUE(e.save(&error)) << error;
+    std::vector<std::string> errors;
+    e.request(Leave::Exit, "", &errors);
+    EXPECT_TRUE(e.quitRequested());
+
+    // A world edit after a move at the same time replaces the move's run piece, not the move.
+    Editor f = openEditor(writeFile("run-world-move.txt", kScene));
+    run(f, 30);
+    f.moveObject(1, {4, 0.5f, 0}, 0);
+    f.edit("Gravity", [](Scene& s) { s.world.gravity = 2; });
+    EXPECT_TRUE(f.document().runEdits());
+}
+
+// Simulating from before the edit replaces what followed, the edit with it: nothing is left.
+TEST(Editor, SimulatingFromBeforeAnEditOfTheRunDropsIt) {
+    Editor e = openEditor(writeFile("run-replay.txt", kScene));
+    run(e, 30);
+    e.moveObject(1, {4, 0.5f, 0}, 0);
+    ASSERT_TRUE(e.seek(0.25));
+    run(e, 10);                            // plays the baked frames back: the run stays
+    EXPECT_TRUE(e.document().runEdits());  // still there to scrub forward to
+    e.step();
+    EXPECT_FALSE(e.document().runEdits());
+}
+
 // A gizmo drag sends the whole drag so far every frame: one undo step puts the start back.
 TEST(Editor, AGizmoDragOfAnObjectOrALightIsOneUndoStep) {
     Editor e = openEditor(

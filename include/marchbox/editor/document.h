@@ -70,6 +70,9 @@ public:
     bool seek(const std::string& label, const BakedFrame* frame, uint64_t mergeKey);
     // The run the shown scene is part of; null when nothing has run from this start.
     const std::shared_ptr<const RunPiece>& run() const { return run_; }
+    // The run holds an edit of the objects made at t > 0 (not undone, not kept): Save does not
+    // write it and only keep() makes it part of the start, so leaving the scene loses it.
+    bool runEdits() const;
 
     // Both keep the current camera unless the step itself changed the camera: looking around
     // is not an edit, and undoing an edit must not throw the view back.
@@ -84,9 +87,9 @@ public:
 private:
     void restore(const Scene& target, bool stepMovedCamera);
     bool restart(const std::string& label, const Scene& first);  // `first` is now t = 0
-    void edited(double t);         // the objects or the world changed at time t
-    void pushed(uint64_t before);  // after a history push: the new state's time and start
-    void recall();                 // after undo or redo: the time and start of that state
+    void edited(double t, bool objects);  // the objects (or only the world) changed at time t
+    void pushed(uint64_t before);         // after a history push: the new state's time and start
+    void recall();                        // after undo or redo: the time and start of that state
 
     struct Moment {
         double time = 0;

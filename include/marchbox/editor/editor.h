@@ -27,8 +27,9 @@ public:
     //-------------------------------------------------------------------------
     // [SECTION] File
     //-------------------------------------------------------------------------
-    // New, Open and Exit leave the current scene. With unsaved changes they wait (pendingLeave)
-    // until confirmLeave() (after the user saved or chose to discard) or cancelLeave().
+    // New, Open and Exit leave the current scene. With unsaved changes, or edits of the run
+    // that the start lacks (Document::runEdits), they wait (pendingLeave) until confirmLeave()
+    // (after the user saved, kept or chose to discard) or cancelLeave().
     // An Open reads its file first: one that does not load asks nothing. Returns false only
     // when that read failed; *errors then has FILE:LINE lines and the open scene is untouched.
     bool request(Leave what, const std::string& path, std::vector<std::string>* errors);
