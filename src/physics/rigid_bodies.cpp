@@ -316,6 +316,7 @@ ContactSide RigidBodies::sideOf(RigidBody& b, const dvec3& point, const dvec3& c
 
 void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     contacts_.clear();
+    massRatio_ = 1.0;
     if (bodies_.empty()) return;  // a scene of spheres alone: nothing here to do
     const int n = count(), m = int(spheres.size()) - 1;  // spheres end with the static body
     centres_.resize(size_t(n + m));
@@ -359,7 +360,11 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     }
     for (Manifold& m : manifolds_) prepareFriction(m);
     rows_.clear();
-    for (const RigidContact& c : contacts_) rows_.push_back(rowOf(c, 0.1 * settings_.linearSlop));
+    for (const RigidContact& c : contacts_) {
+        const NormalRow& r = rows_.emplace_back(rowOf(c, 0.1 * settings_.linearSlop));
+        if (r.invMassA > 0.0 && r.invMassB > 0.0)  // a static or sleeping side is not pressed in
+            massRatio_ = std::max({massRatio_, r.invMassA / r.invMassB, r.invMassB / r.invMassA});
+    }
 }
 
 // Manifolds bottom-up, each one's points together. The contacts are large: their order is

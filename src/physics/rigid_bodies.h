@@ -113,6 +113,8 @@ public:
     int count() const { return int(bodies_.size()); }
     const RigidBody& body(int i) const { return bodies_[size_t(i)]; }
     int contactCount() const { return int(contacts_.size()); }
+    // The largest ratio of two moving bodies' masses across one of this step's contacts; 1 if none.
+    double massRatio() const { return massRatio_; }
 
     // This step's contacts against the statics, each other and the spheres (waking those hit).
     void collide(std::vector<PhysicsBody>& spheres, double gravity);
@@ -160,6 +162,7 @@ private:
     Broadphase broadphase_;
     std::vector<RigidContact> contacts_;  // each manifold's points together, bottom-up
     std::vector<NormalRow> rows_;         // contacts_'s normal rows, in the same order
+    double massRatio_ = 1.0;              // see massRatio()
     struct Manifold {
         int begin, end;         // in contacts_
         RigidContact friction;  // the points' friction and rolling, at their centre

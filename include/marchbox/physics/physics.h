@@ -12,7 +12,8 @@
 // SDF (marchbox/scene/sdf.h). The state is double precision so that a sphere 1e5 m from the
 // origin still resolves millimetres; the scene keeps floats.
 //
-// One step of dt is split into `substeps` soft steps (Box2D v3's "soft step"):
+// One step of dt is split into `substeps` soft steps (Box2D v3's "soft step"), more where a
+// rigid contact joins masses over 100 times apart (a soft row is as stiff as its lighter body):
 //   collide once (speculative contacts, warm started from the last step); resolve the step's
 //   impacts at their times of impact, one after another (impacts.h); then per substep
 //   integrate velocities → warm start → solve (soft, with bias) → integrate positions → relax
@@ -41,7 +42,7 @@ enum class Integrator : int {
 
 struct PhysicsSettings {
     double dt = 1.0 / 120;   // fixed step, s
-    int substeps = 4;        // soft steps per step
+    int substeps = 4;        // soft steps per step; more across a mass ratio over 100
     int iterations = 1;      // solve and relax passes per substep
     double maxFrame = 0.25;  // a longer frame is clamped to this (StepAccumulator)
     Integrator integrator = Integrator::ExactGravity;
@@ -100,6 +101,7 @@ struct PhysicsStats {
     int awake = 0;                // awake dynamic bodies
     int halves = 0;               // contacts in the two halves that two threads may solve at once
     int levels = 0;               // levels of contacts that share no body (contact_graph.h)
+    int substeps = 0;             // soft steps the last step took (more across a mass ratio)
     double maxPenetration = 0.0;  // m, deepest overlap at the end of the last step
 };
 
