@@ -22,7 +22,6 @@ namespace {
 
 constexpr int kProbeStride = 64;          // StaticCollider ids per body: its probes, then its rims'
 constexpr int kSweeps = 4;                // at most, of a manifold's rows in the relax pass
-constexpr int kSolveSweeps = 2;           // at most, in the solve pass
 constexpr double kSweepTolerance = 1e-3;  // m/s: a sweep that changed no row more has converged
 constexpr int kBounceSweeps = 16;         // of a manifold's rows in restitute: a face bounces whole
 
@@ -678,21 +677,15 @@ double RigidBodies::solveNormal(NormalRow& r, const Softness& soft, double h, bo
     return r.mass > 0.0 ? std::abs(applied) / r.mass : 0.0;
 }
 
-// Both passes sweep a manifold's rows until no row changes its speed by kSweepTolerance: the
-// points of a face share one body, and one sweep in a fixed order leaves the first point
-// pushing hardest, which turns the body. In the relax pass that turns a box dropped flat; in
-// the solve pass it tilts every box of a stack a little each substep, and a column of 25 unit
-// boxes leaned 0.4 m in 10 s and fell at 21 s (sleep off). Each sweep brings the velocities
-// closer to the one answer that treats every point alike (the impulses may differ; the motion
-// they give does not). A soft row swept again is Gauss-Seidel on the regularised rows
-// v + b + γ·λ = 0 (γ = impulseScale / (massScale · mass), Catto's soft constraint): its
-// impulseScale term acts on the whole accumulated λ, so the sweeps tend to the one spring the
-// row stands for, not to a softer one. Sixteen sweeps every time cost two thirds of the step in
-// a pile of 1000 bodies; resting manifolds, warm-started, converge in one or two. The solve pass
-// stops at two, where the column stands as at four, so that the manifolds of a falling pile,
-// which do not converge, cost it at most one sweep more.
+// The relax pass sweeps a manifold's rows until no row changes its speed by kSweepTolerance,
+// at most kSweeps times: the points of a face share one body, and one sweep in a fixed order
+// leaves the first point pushing hardest, which turns a box dropped flat. Each sweep brings the
+// velocities closer to the one answer that stops every point alike (the impulses may differ;
+// the motion they give does not). Sixteen sweeps every time cost two thirds of the step in a
+// pile of 1000 bodies; resting manifolds, warm-started, converge in one or two. The solve pass
+// sweeps once: its soft rows are made for one sweep, and more would soften them again each time.
 void RigidBodies::solve(const Softness& soft, double h, bool useBias) {
-    const int sweeps = useBias ? kSolveSweeps : kSweeps;
+    const int sweeps = useBias ? 1 : kSweeps;
     for (size_t i = 0; i < rows_.size(); ++i) rows_[i].separation = separationNow(contacts_[i]);
     for (Manifold& m : manifolds_)
         for (int sweep = 0; sweep < sweeps; ++sweep) {
