@@ -47,6 +47,7 @@ constexpr long kMaxImagePixels = 4096L * 4096L;
 constexpr const char* kImageSizeRule = "WxH, each side 1 to 16384, at most 4096x4096 pixels in all";
 bool validImageSize(long width, long height);
 constexpr double kMaxSeconds = 3600;
+constexpr const char* kFramesNotRange = "render --frames takes a range A-B, such as 0-299";
 constexpr int kMaxFrame = 10000000;  // --frames A-B: 3600 s at 2778 fps
 constexpr double kMaxFps = 1000;
 

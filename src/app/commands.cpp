@@ -130,7 +130,7 @@ PhysicsSettings physicsSettings(const Args& a) {
 
 // --frames N is bench's; render's frames are a range, and --fps and --skip-existing go with it.
 static bool frameOptionsFit(const Args& a) {
-    if (a.frameCount) std::cerr << "render --frames takes a range A-B, such as 0-299\n";
+    if (a.frameCount) std::cerr << kFramesNotRange << '\n';
     else if (a.fps || a.skipExisting)
         std::cerr << "--fps and --skip-existing go with --frames A-B\n";
     return !a.frameCount && !a.fps && !a.skipExisting;

@@ -7,6 +7,7 @@
 #include "marchbox/editor/events.h"
 #include "marchbox/editor/files.h"
 #include "marchbox/gl/gl.h"
+#include "animation_dialog.h"
 #include "render_dialog.h"
 #include "scene_view.h"
 #include "ui.h"
@@ -64,6 +65,7 @@ private:
     Editor editor_;
     UiState ui_;
     RenderDialog renderDialog_;
+    AnimationDialog animationDialog_;
     FrameStats stats_;
     InputState input_;  // this frame's, taken from the window's queue
     ViewportInput viewport_;
@@ -133,8 +135,8 @@ void App::run() {
 }
 
 bool App::idle() const {
-    return view_.done() && !renderDialog_.running() && !editor_.simulation().playing() &&
-           !ui_.previewOrbit && !viewport_.dragging();
+    return view_.done() && !renderDialog_.running() && !animationDialog_.running() &&
+           !editor_.simulation().playing() && !ui_.previewOrbit && !viewport_.dragging();
 }
 
 void App::frame(double seconds, int width, int height) {
@@ -165,6 +167,7 @@ void App::buildUi(UiContext& c, int width, int height, double seconds) {
     drawViewWindows(c);
     drawDialogs(c);
     renderDialog_.draw(c);
+    animationDialog_.draw(c);
     // A released widget or drag ends its undo step; the next change starts a new one.
     if (!ImGui::IsAnyItemActive() && !viewport_.dragging()) editor_.endEdit();
     ui_.messages.endFrame(editor_.selection(), ImGui::GetTime());
@@ -197,6 +200,7 @@ void App::present(int width, int height) {
     view_.pollShaders(editor_.scene(), now);
     syncView(now);
     renderDialog_.work(0.03);  // a few tiles a frame keep the window responsive
+    animationDialog_.work(0.03);
     // A changed scene draws its preview first, so this frame shows the change; bands of
     // refinement wait until after the swap, so the UI never waits for them.
     const int selected = editor_.selection().object();

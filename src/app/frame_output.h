@@ -4,6 +4,7 @@
 // temporary file that is renamed when ffmpeg has finished it, and removed otherwise.
 #pragma once
 
+#include "args.h"
 #include "frame_pattern.h"
 
 #include "marchbox/gl/image.h"
@@ -31,5 +32,16 @@ std::unique_ptr<FrameOutput> pngFrames(const FramePattern& pattern, int firstFra
 // *error where ffmpeg is not on PATH, or `path` cannot be written, or ffmpeg does not start.
 std::unique_ptr<FrameOutput> videoFrames(const std::string& path, int width, int height, double fps,
                                          std::string* error);
+
+// The frame output render --frames and File > Render Animation... share (frame_output.cpp).
+bool isVideo(const std::string& path);  // .mp4 in any case; anything else is a PATTERN
+// What the options alone show wrong with render --frames, in one line (a bad PATTERN, an odd
+// size for H.264, a frame past 3600 s); "" when nothing, with *pattern parsed where -o is not
+// a video.
+std::string framesError(const Args& a, FramePattern* pattern);
+// The video or the PATTERN's files for frames from `first` on; null with *error.
+std::unique_ptr<FrameOutput> openFrames(const std::string& path, const FramePattern& pattern,
+                                        int first, int width, int height, double fps,
+                                        bool skipExisting, std::string* error);
 
 }  // namespace mb

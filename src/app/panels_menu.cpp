@@ -73,7 +73,11 @@ static void fileMenu(UiContext& c) {
     }
     if (menuItem("File", "Save", "Ctrl+S")) saveFile(c);
     if (menuItem("File", "Save As...")) c.ui.wantSaveAs = true;
-    if (menuItem("File", "Render...", nullptr, c.ui.showRender)) c.ui.showRender = !c.ui.showRender;
+    // The two render windows share one place, so one is open at a time.
+    if (menuItem("File", "Render...", nullptr, c.ui.showRender))
+        c.ui.showRender = !c.ui.showRender, c.ui.showAnimation = false;
+    if (menuItem("File", "Render Animation...", nullptr, c.ui.showAnimation))
+        c.ui.showAnimation = !c.ui.showAnimation, c.ui.showRender = false;
     ImGui::Separator();
     if (menuItem("File", "Exit", "Ctrl+Q")) request(c, Leave::Exit);
 }
@@ -362,9 +366,10 @@ static void escape(UiContext& c) {
     } else if (!g.OpenPopupStack.empty()) {
         ImGui::ClosePopupToLevel(g.OpenPopupStack.Size - 1, true);
         emitEvent("escape closes a popup");
-    } else if (bool* open = c.ui.showRender  ? &c.ui.showRender
-                            : c.ui.showAbout ? &c.ui.showAbout
-                                             : nullptr) {
+    } else if (bool* open = c.ui.showRender      ? &c.ui.showRender
+                            : c.ui.showAnimation ? &c.ui.showAnimation
+                            : c.ui.showAbout     ? &c.ui.showAbout
+                                                 : nullptr) {
         *open = false;
         emitEvent("escape closes a window");
     }

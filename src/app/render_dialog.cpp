@@ -16,33 +16,68 @@ namespace mb {
 
 static const char* const kSupersampling[] = {"1x1", "2x2", "3x3", "4x4"};  // the scene's aa 1..4
 
-// A radio button marked "render/LABEL"; true when clicked.
-static bool choice(const char* label, bool active) {
+// A radio button marked "PREFIX/LABEL"; true when clicked.
+static bool choice(const char* prefix, const char* label, bool active) {
     ImGui::SameLine();
     bool clicked = ImGui::RadioButton(label, active);
-    markItem(std::string("render/") + label);
+    markItem(std::string(prefix) + "/" + label);
     return clicked;
 }
 
-// The preset and supersampling the render takes: chosen here, or else View > Quality's preset
-// and the supersampling it makes of the scene's own `aa`.
-void RenderDialog::settings(UiContext& c, QualityPreset* preset, int* aa) {
-    *preset = preset_.value_or(c.ui.quality);
+// Chosen here, or else View > Quality's preset and the supersampling it makes of the scene's
+// own `aa`.
+void RenderChoice::resolve(const UiContext& c, QualityPreset* p, int* samples) const {
+    *p = preset.value_or(c.ui.quality);
     RenderSettings render = c.editor.scene().render;
     RenderOptions unused;
-    applyQualityPreset(*preset, &render, &unused);
-    *aa = aa_.value_or(render.aa);
+    applyQualityPreset(*p, &render, &unused);
+    *samples = aa.value_or(render.aa);
+}
+
+bool RenderChoice::draw(UiContext& c, const char* prefix) {
+    const std::string at = std::string(prefix) + "/";
+    ImGui::InputInt("width", &width);
+    markItem(at + "width");
+    ImGui::InputInt("height", &height);
+    markItem(at + "height");
+    QualityPreset shown;
+    int samples;
+    resolve(c, &shown, &samples);
     ImGui::TextUnformatted("quality");
     for (int p = 0; p < kQualityPresetCount; ++p)
-        if (choice(qualityPresetName(QualityPreset(p)), int(*preset) == p))
-            preset_ = QualityPreset(p);
-    itemTooltip("render/quality", "As marchbox render --quality; at first View > Quality's.");
+        if (choice(prefix, qualityPresetName(QualityPreset(p)), int(shown) == p))
+            preset = QualityPreset(p);
+    itemTooltip(at + "quality", "As marchbox render --quality; at first View > Quality's.");
     ImGui::TextUnformatted("supersampling");
     for (int n = 1; n <= 4; ++n)
-        if (choice(kSupersampling[n - 1], *aa == n)) aa_ = n;
-    itemTooltip("render/supersampling",
+        if (choice(prefix, kSupersampling[n - 1], samples == n)) aa = n;
+    itemTooltip(at + "supersampling",
                 "Samples per pixel along each side, as the scene's aa; at first what the\n"
                 "quality preset makes of it.");
+    ImGui::TextDisabled("Debug view, fog and FXAA follow the View settings.");
+    const bool start = ImGui::Button("Render");
+    markItem(at + "start");
+    return start;
+}
+
+bool RenderChoice::sizeValid(std::string* status) const {
+    if (validImageSize(width, height)) return true;
+    *status = "bad size " + std::to_string(width) + "x" + std::to_string(height) + ": expected " +
+              kImageSizeRule;
+    emitEvent("refuse " + *status);
+    return false;
+}
+
+Scene RenderChoice::scene(const UiContext& c, RenderOptions* options) const {
+    QualityPreset p;
+    int samples;
+    resolve(c, &p, &samples);
+    Scene scene = c.editor.scene();
+    *options = c.ui.render;
+    options->outline = false;  // a rendered picture shows no selection
+    applyQualityPreset(p, &scene.render, options);
+    scene.render.aa = samples;
+    return scene;
 }
 
 // The size within the command line's limit, the file writable (a missing or read-only folder
@@ -50,12 +85,7 @@ void RenderDialog::settings(UiContext& c, QualityPreset* preset, int* aa) {
 // disk), and a file already there replaced only by a second Render.
 bool RenderDialog::ready() {
     std::string error;
-    if (!validImageSize(width_, height_)) {
-        status_ = "bad size " + std::to_string(width_) + "x" + std::to_string(height_) +
-                  ": expected " + kImageSizeRule;
-        emitEvent("refuse " + status_);
-        return false;
-    }
+    if (!choice_.sizeValid(&status_)) return false;
     if (!checkSavePng(path_, &error)) {
         status_ = error;
         emitEvent(status_);
@@ -71,16 +101,11 @@ bool RenderDialog::ready() {
     return true;
 }
 
-// The scene as `marchbox render` reads it from the file: the preset over its settings, then
-// the supersampling chosen.
-void RenderDialog::start(UiContext& c, QualityPreset preset, int aa) {
+void RenderDialog::start(UiContext& c) {
     if (!ready()) return;
     replacePath_.clear();
-    Scene scene = c.editor.scene();
-    RenderOptions options = c.ui.render;
-    options.outline = false;  // a still shows no selection
-    applyQualityPreset(preset, &scene.render, &options);
-    scene.render.aa = aa;
+    RenderOptions options;
+    const Scene scene = choice_.scene(c, &options);
     std::string error;
     renderer_ = std::make_unique<Renderer>();
     if (!renderer_->init(&error) || !renderer_->setScene(scene, options, &error)) {
@@ -88,14 +113,15 @@ void RenderDialog::start(UiContext& c, QualityPreset preset, int aa) {
         renderer_.reset();
         return;
     }
-    tiles_ = std::make_unique<TiledRender>(*renderer_, width_, height_);
+    tiles_ = std::make_unique<TiledRender>(*renderer_, choice_.width, choice_.height);
     if (!tiles_->start(&error)) {
         status_ = "cannot render: " + error;
         tiles_.reset();
         return;
     }
     status_.clear();
-    emitEvent("render started " + std::to_string(width_) + "x" + std::to_string(height_));
+    emitEvent("render started " + std::to_string(choice_.width) + "x" +
+              std::to_string(choice_.height));
 }
 
 void RenderDialog::finish() {
@@ -128,18 +154,9 @@ void RenderDialog::draw(UiContext& c) {
     if (!c.ui.showRender) return;
     if (beginPanel(c, Panel::Render, "Render", &c.ui.showRender)) {
         ImGui::BeginDisabled(running());
-        ImGui::InputInt("width", &width_);
-        markItem("render/width");
-        ImGui::InputInt("height", &height_);
-        markItem("render/height");
         ImGui::InputText("PNG file", &path_);
         markItem("render/file");
-        QualityPreset preset;
-        int aa;
-        settings(c, &preset, &aa);
-        ImGui::TextDisabled("Debug view, fog and FXAA follow the View settings.");
-        if (ImGui::Button("Render")) start(c, preset, aa);
-        markItem("render/start");
+        if (choice_.draw(c, "render")) start(c);
         ImGui::EndDisabled();
         if (running()) {
             ImGui::ProgressBar(tiles_->progress());

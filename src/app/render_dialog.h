@@ -15,6 +15,24 @@
 
 namespace mb {
 
+// What File > Render... and File > Render Animation... both ask: the size, the quality preset
+// and the supersampling, each item marked "PREFIX/..." for the e2e tests.
+struct RenderChoice {
+    int width = 1920, height = 1080;
+    // Chosen here; until then View > Quality's preset and the supersampling it gives the scene.
+    std::optional<QualityPreset> preset;
+    std::optional<int> aa;
+
+    bool draw(UiContext& c, const char* prefix);  // the fields, then Render: true when clicked
+    bool sizeValid(std::string* status) const;    // else *status says why, and an event
+    // The scene and options as `marchbox render --quality Q` reads them from the file, with the
+    // supersampling chosen, and the View's debug view, fog and FXAA.
+    Scene scene(const UiContext& c, RenderOptions* options) const;
+
+private:
+    void resolve(const UiContext& c, QualityPreset* p, int* samples) const;
+};
+
 class RenderDialog {
 public:
     void draw(UiContext& c);          // the window, while c.ui.showRender
@@ -22,16 +40,12 @@ public:
     bool running() const { return tiles_ != nullptr; }
 
 private:
-    void settings(UiContext& c, QualityPreset* preset, int* aa);
     bool ready();  // the size and the file allow a render now, else status_ says why
-    void start(UiContext& c, QualityPreset preset, int aa);
+    void start(UiContext& c);
     void finish();
 
-    int width_ = 1920, height_ = 1080;
+    RenderChoice choice_;
     std::string path_ = "render.png";
-    // Chosen here; until then View > Quality's preset and the supersampling it gives the scene.
-    std::optional<QualityPreset> preset_;
-    std::optional<int> aa_;
     std::string replacePath_;  // warned once that this file exists: the next Render replaces it
     std::unique_ptr<Renderer> renderer_;  // its own: the window's keeps drawing meanwhile
     std::unique_ptr<TiledRender> tiles_;

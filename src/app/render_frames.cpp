@@ -1,20 +1,14 @@
-// render_frames.cpp — render --frames A-B: the scene played once from t = 0 at the fixed
-// physics step, frame k rendered when the simulation reaches t = k / fps.
-//
-// Frame k is the picture `render --seconds k/fps` makes: the same number of steps (stepsFor),
-// the same camera (cameraAt), the same renderFrame. So a range gives the same bytes in one
-// process or split over many, each simulating from t = 0 to its first frame.
+// render_frames.cpp — render --frames A-B: the scene played once from t = 0 (frame_sequence.h),
+// each frame rendered with renderFrame as it is reached and handed to its output.
 #include "commands.h"
 #include "frame_output.h"
+#include "frame_sequence.h"
 #include "interrupt.h"
 
-#include "marchbox/scene/camera_path.h"
 #include "marchbox/scene/scene_io.h"
 
-#include <cctype>
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <unistd.h>
 
@@ -26,25 +20,9 @@ constexpr const char* kUsage =
     "marchbox render SCENE -o PATTERN|OUT.mp4 --frames A-B [--fps F] [--size WxH] [--quality Q] "
     "[--skip-existing]";
 
-// .mp4 in any case: .MP4 is as common a spelling, and no frame pattern either way.
-bool isVideo(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-    return ext == ".mp4";
-}
-
 // Usage errors (exit 2) the options alone show, before any file is read.
 bool framesUsable(const Args& a, FramePattern* pattern) {
-    const double fps = a.fps.value_or(30);
-    std::string error;
-    if (a.seconds) error = "--seconds does not go with --frames: frame k shows t = k / fps";
-    else if (a.frameRange->last / fps > kMaxSeconds)
-        error = "frame " + std::to_string(a.frameRange->last) + " is past 3600 s at this --fps";
-    else if (isVideo(a.output) && a.skipExisting)
-        error = "--skip-existing takes a PATTERN of files, not a video";
-    else if (isVideo(a.output) && (a.width % 2 || a.height % 2))
-        error = "an H.264 video needs an even width and height (--size)";
-    else if (!isVideo(a.output)) parseFramePattern(a.output, pattern, &error);
+    const std::string error = framesError(a, pattern);
     if (!error.empty()) std::cerr << error << '\n';
     return error.empty();
 }
@@ -82,21 +60,14 @@ int playFrames(const Scene& scene, const RenderOptions& options, const Args& a, 
     if (!context.create(1, 1, &error, run.backend) || !renderer.init(&error))
         return glFailure("render", error);
     run.progress = [](float, void*) { return !interrupted(); };  // a large frame stops midway
-    const PhysicsSettings settings = physicsSettings(a);
-    PhysicsWorld world(scene, settings);
+    FrameSequence sequence(scene, physicsSettings(a), a.fps.value_or(30));
     const FrameRange range = *a.frameRange;
-    const double fps = a.fps.value_or(30);
     FrameProgress progress(range.first, range.last);
     for (int k = range.first; k <= range.last && !interrupted(); ++k) {
-        const double t = k / fps;
-        for (const int steps = stepsFor(t, settings); world.stepCount() < steps && !interrupted();)
-            world.step();
-        if (!interrupted() && out.wanted(k)) {
-            Scene frame = scene;
-            world.writeBack(frame);
-            frame.camera = cameraAt(frame.keyframes, frame.camera, t);
+        if (sequence.reach(k, interrupted) && out.wanted(k)) {
             Image img;
-            bool ok = renderFrame(renderer, frame, options, a.width, a.height, &img, &error, run);
+            bool ok = renderFrame(renderer, sequence.scene(k), options, a.width, a.height, &img,
+                                  &error, run);
             if (interrupted()) break;
             if (!ok) return out.abandon(), glFailure("render", error);
             // A terminal's Ctrl-C reaches ffmpeg too, which then takes no more frames.
@@ -126,8 +97,8 @@ int runRenderFrames(const Args& a) {
     catchInterrupts();
     std::string error;
     std::unique_ptr<FrameOutput> out =
-        isVideo(a.output) ? videoFrames(a.output, a.width, a.height, a.fps.value_or(30), &error)
-                          : pngFrames(pattern, a.frameRange->first, a.skipExisting, &error);
+        openFrames(a.output, pattern, a.frameRange->first, a.width, a.height, a.fps.value_or(30),
+                   a.skipExisting, &error);
     if (!out) {
         std::cerr << error << '\n';
         return kExitBadInput;

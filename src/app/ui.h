@@ -42,7 +42,7 @@ struct UiState {
     // Windows, toggled from the menus.
     bool showObjects = true, showMaterials = false, showLights = false;
     bool showSimulation = false, showView = false, showHelp = false, showStats = true;
-    bool showRender = false, showAbout = false;
+    bool showRender = false, showAnimation = false, showAbout = false;  // one Render slot
 
     // Requests raised by menus and shortcuts, carried out by drawDialogs() this frame.
     bool wantOpen = false, wantSaveAs = false, wantObjectPopup = false, wantScreenshot = false;

@@ -262,8 +262,9 @@ void markPanel() {
 }
 
 unsigned UiState::openPanels() const {
-    const bool shown[kPanelCount] = {showObjects,    showMaterials, showLights, showView,
-                                     showSimulation, showRender,    showHelp};
+    const bool shown[kPanelCount] = {showObjects, showMaterials,  showLights,
+                                     showView,    showSimulation, showRender || showAnimation,
+                                     showHelp};
     unsigned open = 0;
     for (int p = 0; p < kPanelCount; ++p) open |= shown[p] ? panelBit(Panel(p)) : 0u;
     return open;
