@@ -12,17 +12,24 @@ namespace mb {
 static constexpr float kStripHeight = 24.0f;  // px
 static constexpr float kKeyReach = 6.0f;  // px either side of a key's marker that take its click
 
-// A click on a key's marker goes to the key; any other click, and a drag, to the time under
-// the mouse. One press is one undo step ("Scrub").
-static void scrub(Editor& e, const TimelineStrip& strip, ImGuiID id) {
+// A click on a key's marker goes to the key, and dragging it on moves the key; any other
+// click, and a drag, go to the time under the mouse. One press is one undo step ("Scrub",
+// "Move camera key"). *held is the key the press landed on, -1 for none.
+static void scrub(Editor& e, const TimelineStrip& strip, ImGuiID id, int* held) {
     const std::vector<Keyframe>& keys = e.scene().keyframes;
     const ImGuiIO& io = ImGui::GetIO();
     const bool pressed = ImGui::IsItemActivated();
-    const int key = pressed ? keyMarkerAt(strip, keys, io.MousePos.x, kKeyReach) : -1;
-    if (key >= 0) e.seekKey(key, id);
-    else if (pressed || (ImGui::IsItemActive() && io.MouseDelta.x != 0.0f))
+    const bool dragged = ImGui::IsItemActive() && io.MouseDelta.x != 0.0f;
+    if (pressed) *held = keyMarkerAt(strip, keys, io.MousePos.x, kKeyReach);
+    if (pressed && *held >= 0) {
+        e.seekKey(*held, id);
+    } else if (dragged && *held >= 0) {
+        const int to = e.moveCameraKey(*held, float(strip.time(io.MousePos.x)), id + 1);
+        if (to >= 0) *held = to;  // refused where another key is: it stays where it was
+    } else if (pressed || dragged) {
         e.seek(strip.time(io.MousePos.x), id);
-    if (ImGui::IsItemDeactivated()) e.endEdit();
+    }
+    if (ImGui::IsItemDeactivated()) e.endEdit(), *held = -1;
 }
 
 // Ticks at 1, 2 or 5 times a power of ten seconds, about 40 px apart or more.
@@ -63,7 +70,7 @@ static void keyTooltip(const TimelineStrip& strip, const std::vector<Keyframe>& 
     const int key = keyMarkerAt(strip, keys, ImGui::GetIO().MousePos.x, kKeyReach);
     if (key < 0) return;
     char text[64];
-    std::snprintf(text, sizeof text, "camera key at %.2f s: click to go there",
+    std::snprintf(text, sizeof text, "camera key at %.2f s: click to go there, drag to move it",
                   double(keys[size_t(key)].t));
     itemTooltip("Simulation/timeline key", text);
 }
@@ -77,7 +84,7 @@ void drawTimeline(UiContext& c) {
     const ImGuiID id = ImGui::GetID("timeline");
     ImGui::InvisibleButton("timeline", ImVec2(strip.width, kStripHeight));
     markItem("Simulation/timeline");
-    scrub(e, strip, id);
+    scrub(e, strip, id, &c.ui.heldKey);
     keyTooltip(strip, e.scene().keyframes);
     drawStrip(strip, at.y, e);
     const FrameCache& cache = e.simulation().cache();

@@ -54,7 +54,8 @@ struct UiState {
     std::string replacePath;              // Save As warned once that this file exists
     bool refocusPath = false;             // Save As failed on Enter: the field keeps the keys
     bool escape = false;                  // Esc this frame: the open dialog cancels
-    bool overSimulation = false;          // the mouse was over the Simulation window: Home rewinds
+    int heldKey = -1;  // the camera key a press on the timeline landed on, dragged while held
+    bool overSimulation = false;  // the mouse was over the Simulation window: Home rewinds
 
     Messages messages;                     // refusals and failures, each in its place, in red
     RenderOptions render = viewOptions();  // debug view and uber shader

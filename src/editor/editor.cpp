@@ -324,6 +324,15 @@ Camera Editor::shownCamera() const {
                          : scene().camera;
 }
 
+int Editor::moveCameraKey(int index, float t, uint64_t mergeKey) {
+    Scene probe = scene();
+    if (mb::moveCameraKey(probe, index, t) < 0) return -1;
+    int to = -1;
+    edit(
+        "Move camera key", [&](Scene& s) { to = mb::moveCameraKey(s, index, t); }, mergeKey);
+    return to;
+}
+
 void Editor::addCameraKey() {
     const float t = float(doc_.time());
     edit("Add camera key", [&](Scene& s) { setCameraKey(s, t, s.camera); });

@@ -1,4 +1,5 @@
 // test_editor.cpp — the editor's rules: open failures, unsaved work, edits while simulating.
+#include "marchbox/editor/camera_keys.h"
 #include "marchbox/editor/editor.h"
 #include "marchbox/scene/camera_path.h"
 #include "marchbox/scene/scene_io.h"
@@ -640,6 +641,29 @@ TEST(Editor, CameraKeysAddAtTheSimulatedTimeAndDeleteTheNearest) {
     EXPECT_EQ(e.scene().keyframes[0].t, 0.0f);
     e.undo();
     EXPECT_EQ(e.scene().keyframes.size(), 2u);
+}
+
+// A key dragged along the timeline: its view goes with it, the keys stay in order, another
+// key's time refuses it, and the whole drag is one undo step.
+TEST(Editor, DraggingACameraKeyMovesItInOneUndoStep) {
+    Editor e = openEditor(writeFile("move-keys.txt", kScene));
+    Scene s = e.scene();
+    for (float t : {0.0f, 1.0f, 2.0f}) setCameraKey(s, t, Camera{{t, 2, -8}, {0, 1, 0}, 50});
+    e.start(s, "");
+    EXPECT_EQ(e.moveCameraKey(0, 1.5f, 7), 1);  // past the key at 1 s: now second
+    EXPECT_EQ(e.moveCameraKey(1, 2.5f, 7), 2);  // on past the one at 2 s, the same drag
+    const std::vector<Keyframe>& keys = e.scene().keyframes;
+    ASSERT_EQ(keys.size(), 3u);
+    EXPECT_EQ(keys[2].t, 2.5f);
+    EXPECT_EQ(keys[2].pos, glm::vec3(0, 2, -8));  // the view it held
+    EXPECT_EQ(keys[0].t, 1.0f);
+    EXPECT_EQ(e.moveCameraKey(2, 2.0f, 7), -1);  // another key's time: refused, nothing moved
+    EXPECT_EQ(e.scene().keyframes[2].t, 2.5f);
+    e.endEdit();
+    ASSERT_TRUE(e.undo());
+    EXPECT_EQ(e.scene().keyframes[0].t, 0.0f);
+    EXPECT_EQ(e.scene().keyframes[0].pos, glm::vec3(0, 2, -8));
+    EXPECT_FALSE(e.document().history().canUndo());
 }
 
 TEST(Editor, ThePlayingViewFollowsTheKeyframesAndTheRecordOtherwise) {

@@ -106,6 +106,9 @@ public:
     bool followsPath() const;
     void addCameraKey();     // a key at the simulated time from the camera record
     bool deleteCameraKey();  // the key nearest the simulated time; false without keys
+    // A key dragged along the timeline: one undo step a drag (one mergeKey). Returns the key's
+    // new index, or -1 where moveCameraKey() refuses (the key stays).
+    int moveCameraKey(int index, float t, uint64_t mergeKey);
 
     const Document& document() const { return doc_; }
     const Scene& scene() const { return doc_.scene(); }
