@@ -232,6 +232,7 @@ TEST_F(SaveFaults, DyingBeforeTheRenameLeavesTheOldFileWhole) {
 // the process still dies of it, but after the new file is in place, with no temporary beside it.
 TEST_F(SaveFaults, CtrlCMidSaveEndsTheProcessAfterTheSave) {
     int code = inChild([&] {
+        std::signal(SIGINT, SIG_DFL);  // a shell's background job starts with it ignored
         FileOps ops = posixOps();
         ops.rename = [](const char* from, const char* to) {
             kill(getpid(), SIGINT);
@@ -250,6 +251,7 @@ TEST_F(SaveFaults, CtrlCMidSaveEndsTheProcessAfterTheSave) {
 // an action the program chose (here, ignoring hangups) was never touched.
 TEST_F(SaveFaults, SignalActionsAreAsBeforeAfterASave) {
     int code = inChild([&] {
+        std::signal(SIGINT, SIG_DFL);  // whatever the test was started with
         std::signal(SIGHUP, SIG_IGN);
         std::string error;
         if (!saveScene(target(), scene_, &error)) return 3;
