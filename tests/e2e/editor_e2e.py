@@ -768,9 +768,10 @@ def case_camera(app, scene):
     app.settle()
     smooth = app.screenshot()
     # FXAA blurs across edges: the gradient energy of this view (floor checkers, and the box
-    # and spheres where the orbit left them) fell to 0.40-0.69 of what it was over 35 runs;
-    # FXAA returning its input keeps 1.00. 0.8, the GL tests' bound for FXAA (Features.
-    # SupersamplingAndFxaaSmoothSilhouettes), sits 0.1 above the worst run.
+    # and spheres where the orbit left them) fell to 0.40-0.69 of what it was over 35 runs, and
+    # to 0.78-0.81 in 4 runs once the balls' penumbrae were drawn in closed form (smooth, so
+    # less of the energy is left for FXAA to take); FXAA returning its input keeps 1.00. 0.9
+    # sits 0.09 above the worst run and 0.1 below FXAA doing nothing.
     ratio = gradient_energy(smooth) / gradient_energy(flown)
     # Away from edges FXAA's taps all land on one colour: pixels there changed by at most 1
     # level in every run (a tap a hair off a pixel centre rounds the other way); 2 allows that
@@ -780,7 +781,7 @@ def case_camera(app, scene):
                  for x, y in quiet] or [0])
     print('FXAA: gradient energy x%.3f; %d pixels away from edges, largest change %d'
           % (ratio, len(quiet), worst))
-    check(ratio < 0.8, 'P (FXAA) kept %.2f of the gradient energy (at most 0.8)' % ratio)
+    check(ratio < 0.9, 'P (FXAA) kept %.2f of the gradient energy (at most 0.9)' % ratio)
     check(len(quiet) > 4000, 'only %d pixels lie away from edges' % len(quiet))
     check(worst <= 2, 'P (FXAA) changed a pixel away from every edge by %d levels' % worst)
     app.key('ctrl+q')  # moving the view is not an edit: nothing to ask about
