@@ -151,11 +151,20 @@ bool Editor::redo() {
 }
 
 // Runs a scene_edit command inside an undo step, keeping the scene untouched if it refuses.
+// At t > 0 an edit that leaves the objects alone is made to the start too (Document::apply):
+// there the start keeps its own bodies, not the poses shown.
 template <typename Command>
 static bool tryEdit(Editor& e, const std::string& label, Command command) {
     Scene trial = e.scene();  // made at the time shown, as every edit is
     if (!command(trial)) return false;
-    e.edit(label, [&](Scene& s) { s = trial; });
+    Scene probe = e.scene();  // the scene shown with the trial's objects: unchanged if they are
+    probe.objects = trial.objects;
+    const bool objectsKept = probe == e.scene();
+    e.edit(label, [&](Scene& s) {
+        std::vector<Object> own = std::move(s.objects);
+        s = trial;
+        if (objectsKept) s.objects = std::move(own);
+    });
     return true;
 }
 

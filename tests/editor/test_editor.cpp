@@ -643,6 +643,19 @@ TEST(Editor, CameraKeysAddAtTheSimulatedTimeAndDeleteTheNearest) {
     EXPECT_EQ(e.scene().keyframes.size(), 2u);
 }
 
+// Adding a light at t > 0 is made to the start too, and the start keeps its own bodies there,
+// not the poses the run shows.
+TEST(Editor, AnEditOfTheLightsAtALaterTimeLeavesTheStartsBodies) {
+    Editor e = openEditor(writeFile("light-later.txt", kScene));
+    const glm::vec3 start = e.scene().objects[0].pos;
+    run(e, 30);
+    ASSERT_NE(e.scene().objects[0].pos, start);
+    std::string why;
+    ASSERT_TRUE(e.add(ItemKind::Light, &why)) << why;
+    EXPECT_EQ(e.document().start().objects[0].pos, start);
+    EXPECT_EQ(e.document().start().lights.size(), e.scene().lights.size());
+}
+
 // A key dragged along the timeline: its view goes with it, the keys stay in order, another
 // key's time refuses it, and the whole drag is one undo step.
 TEST(Editor, DraggingACameraKeyMovesItInOneUndoStep) {
