@@ -154,17 +154,20 @@ bool Editor::redo() {
 // At t > 0 an edit that leaves the objects alone is made to the start too (Document::apply):
 // there the start keeps its own bodies, not the poses shown.
 template <typename Command>
-static bool tryEdit(Editor& e, const std::string& label, Command command) {
+static bool tryEdit(Editor& e, const std::string& label, Command command, uint64_t mergeKey = 0) {
     Scene trial = e.scene();  // made at the time shown, as every edit is
     if (!command(trial)) return false;
     Scene probe = e.scene();  // the scene shown with the trial's objects: unchanged if they are
     probe.objects = trial.objects;
     const bool objectsKept = probe == e.scene();
-    e.edit(label, [&](Scene& s) {
-        std::vector<Object> own = std::move(s.objects);
-        s = trial;
-        if (objectsKept) s.objects = std::move(own);
-    });
+    e.edit(
+        label,
+        [&](Scene& s) {
+            std::vector<Object> own = std::move(s.objects);
+            s = trial;
+            if (objectsKept) s.objects = std::move(own);
+        },
+        mergeKey);
     return true;
 }
 
@@ -334,11 +337,10 @@ Camera Editor::shownCamera() const {
 }
 
 int Editor::moveCameraKey(int index, float t, uint64_t mergeKey) {
-    Scene probe = scene();
-    if (mb::moveCameraKey(probe, index, t) < 0) return -1;
     int to = -1;
-    edit(
-        "Move camera key", [&](Scene& s) { to = mb::moveCameraKey(s, index, t); }, mergeKey);
+    tryEdit(
+        *this, "Move camera key",
+        [&](Scene& s) { return (to = mb::moveCameraKey(s, index, t)) >= 0; }, mergeKey);
     return to;
 }
 
