@@ -1297,7 +1297,7 @@ def handle_point(scene, pos, axis, along):
     """The window pixel `along` of the way out along the move handle of world `axis` (0, 1, 2)
     of an object at pos: handles are GizmoSettings.lengthPixels (90) long on screen."""
     tip = list(pos)
-    tip[axis] += 0.01
+    tip[axis] += 0.5  # far enough that whole pixels still give the direction
     (x0, y0), (x1, y1) = project(scene, pos), project(scene, tip)
     norm = math.hypot(x1 - x0, y1 - y0)
     return x0 + (x1 - x0) / norm * 90 * along, y0 + (y1 - y0) / norm * 90 * along
