@@ -14,8 +14,11 @@
 using namespace mb;
 namespace fs = std::filesystem;
 
+// A folder per test: CTest runs the tests as processes side by side, and a file name two tests
+// share (playedFor's) was read by one while the other rewrote it.
 static std::string tempPath(const std::string& name) {
-    fs::path dir = fs::path(MARCHBOX_BINARY_DIR) / "test-output" / "editor";
+    const auto* test = testing::UnitTest::GetInstance()->current_test_info();
+    fs::path dir = fs::path(MARCHBOX_BINARY_DIR) / "test-output" / "editor" / test->name();
     fs::create_directories(dir);
     return (dir / name).string();
 }
