@@ -147,13 +147,13 @@ double rowMass(const RigidContact& c, const dvec3& d) {
 }
 
 // How far the anchor moved since the step's start: the body's displacement and its turn.
-dvec3 anchorMove(const ContactSide& s) {
+dvec3 anchorMove(const AnchorPath& s) {
     if (!s.delta) return dvec3(0.0);
     const dvec3 turned = s.orient ? *s.orient * s.localAnchor + s.offset - s.anchor : dvec3(0.0);
     return *s.delta + turned;
 }
 
-double separationNow(const RigidContact& c) {
+double separationNow(const ContactGap& c) {
     return c.separation + glm::dot(c.normal, anchorMove(c.b) - anchorMove(c.a));
 }
 
@@ -170,34 +170,33 @@ void tangentsOf(RigidContact& c) {
 // |λ_t| ≤ μ·Σλ_n, and the twist about the normal, |λ_w| ≤ μ·r·Σλ_n with r the points' mean
 // distance from the centre. Row by row at each point, the first point's friction would turn a
 // face that lands flat about its normal; at the centre, nothing but a twist can.
-void solveFriction(RigidContact& c, const FrictionRows& r, double normalImpulse) {
-    const bool twoSided = c.a.invMass > 0.0;
-    const double twist = glm::dot(c.normal, *c.b.spin - (c.a.spin ? *c.a.spin : dvec3(0.0)));
-    double w = c.twistImpulse - c.twistMass * twist;
-    const double twistLimit = c.friction * c.twistArm * normalImpulse;
+void solveFriction(FrictionRows& r, double normalImpulse) {
+    const double twist = glm::dot(r.normal, *r.spinB - (r.spinA ? *r.spinA : dvec3(0.0)));
+    double w = r.twistImpulse - r.twistMass * twist;
+    const double twistLimit = r.friction * r.twistArm * normalImpulse;
     w = std::clamp(w, -twistLimit, twistLimit);
-    const double dw = w - c.twistImpulse;
-    c.twistImpulse = w;
+    const double dw = w - r.twistImpulse;
+    r.twistImpulse = w;
     double t[2], dt[2];
     for (int k = 0; k < 2; ++k) {
-        double speed = glm::dot(c.tangent[k], *c.b.vel) + glm::dot(r.armB[k], *c.b.spin);
-        if (c.a.vel) speed -= glm::dot(c.tangent[k], *c.a.vel) + glm::dot(r.armA[k], *c.a.spin);
-        t[k] = c.tangentImpulse[k] - c.tangentMass[k] * speed;
+        double speed = glm::dot(r.tangent[k], *r.velB) + glm::dot(r.armB[k], *r.spinB);
+        if (r.velA) speed -= glm::dot(r.tangent[k], *r.velA) + glm::dot(r.armA[k], *r.spinA);
+        t[k] = r.tangentImpulse[k] - r.tangentMass[k] * speed;
     }
-    const double limit = c.friction * normalImpulse, length = std::hypot(t[0], t[1]);
+    const double limit = r.friction * normalImpulse, length = std::hypot(t[0], t[1]);
     for (int k = 0; k < 2; ++k) {
         if (length > limit) t[k] *= limit / length;
-        dt[k] = t[k] - c.tangentImpulse[k];
-        c.tangentImpulse[k] = t[k];
+        dt[k] = t[k] - r.tangentImpulse[k];
+        r.tangentImpulse[k] = t[k];
     }
-    const dvec3 p = dt[0] * c.tangent[0] + dt[1] * c.tangent[1];
-    if (twoSided) {
-        *c.a.vel -= c.a.invMass * p;
-        *c.a.spin -= dw * r.twistA + dt[0] * r.turnA[0] + dt[1] * r.turnA[1];
+    const dvec3 p = dt[0] * r.tangent[0] + dt[1] * r.tangent[1];
+    if (r.invMassA > 0.0) {
+        *r.velA -= r.invMassA * p;
+        *r.spinA -= dw * r.twistA + dt[0] * r.turnA[0] + dt[1] * r.turnA[1];
     }
-    if (c.b.invMass > 0.0) {
-        *c.b.vel += c.b.invMass * p;
-        *c.b.spin += dw * r.twistB + dt[0] * r.turnB[0] + dt[1] * r.turnB[1];
+    if (r.invMassB > 0.0) {
+        *r.velB += r.invMassB * p;
+        *r.spinB += dw * r.twistB + dt[0] * r.turnB[0] + dt[1] * r.turnB[1];
     }
 }
 
@@ -359,7 +358,9 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     }
     for (Manifold& m : manifolds_) prepareFriction(m);
     rows_.clear();
+    gaps_.clear();
     for (const RigidContact& c : contacts_) {
+        gaps_.push_back({c.normal, c.separation, c.a, c.b});
         const NormalRow& r = rows_.emplace_back(rowOf(c, 0.1 * settings_.linearSlop));
         if (r.invMassA > 0.0 && r.invMassB > 0.0)  // a static or sleeping side is not pressed in
             massRatio_ = std::max({massRatio_, r.invMassA / r.invMassB, r.invMassB / r.invMassA});
@@ -628,7 +629,21 @@ void RigidBodies::prepareFriction(Manifold& m) {
     f.twistMass = k > 0.0 ? 1.0 / k : 0.0;
     prepare(f);
     FrictionRows& r = m.rows;
+    r.velA = f.a.vel;
+    r.spinA = f.a.spin;
+    r.velB = f.b.vel;
+    r.spinB = f.b.spin;
+    r.invMassA = f.a.invMass;
+    r.invMassB = f.b.invMass;
+    r.normal = f.normal;
+    r.friction = f.friction;
+    r.twistMass = f.twistMass;
+    r.twistArm = f.twistArm;
+    r.twistImpulse = f.twistImpulse;
     for (int k = 0; k < 2; ++k) {
+        r.tangent[k] = f.tangent[k];
+        r.tangentMass[k] = f.tangentMass[k];
+        r.tangentImpulse[k] = f.tangentImpulse[k];
         r.armA[k] = glm::cross(f.a.anchor, f.tangent[k]);
         r.armB[k] = glm::cross(f.b.anchor, f.tangent[k]);
         r.turnA[k] = f.a.invInertia * r.armA[k];
@@ -646,8 +661,9 @@ void RigidBodies::warmStart() {
     for (NormalRow& r : rows_) applyNormal(r, r.impulse);
     for (Manifold& m : manifolds_) {
         RigidContact& f = m.friction;
-        applyImpulse(f, f.tangentImpulse[0] * f.tangent[0] + f.tangentImpulse[1] * f.tangent[1]);
-        applyAngular(f, f.twistImpulse * f.normal + f.rollImpulse);
+        const FrictionRows& r = m.rows;
+        applyImpulse(f, r.tangentImpulse[0] * f.tangent[0] + r.tangentImpulse[1] * f.tangent[1]);
+        applyAngular(f, r.twistImpulse * f.normal + f.rollImpulse);
     }
 }
 
@@ -686,7 +702,7 @@ double RigidBodies::solveNormal(NormalRow& r, const Softness& soft, double h, bo
 // sweeps once: its soft rows are made for one sweep, and more would soften them again each time.
 void RigidBodies::solve(const Softness& soft, double h, bool useBias) {
     const int sweeps = useBias ? 1 : kSweeps;
-    for (size_t i = 0; i < rows_.size(); ++i) rows_[i].separation = separationNow(contacts_[i]);
+    for (size_t i = 0; i < rows_.size(); ++i) rows_[i].separation = separationNow(gaps_[i]);
     for (Manifold& m : manifolds_)
         for (int sweep = 0; sweep < sweeps; ++sweep) {
             double change = 0.0;  // the largest speed a row changed by, m/s
@@ -694,8 +710,8 @@ void RigidBodies::solve(const Softness& soft, double h, bool useBias) {
                 change = std::max(change, solveNormal(rows_[size_t(i)], soft, h, useBias));
             double pushed = 0.0;
             for (int i = m.begin; i < m.end; ++i) pushed += rows_[size_t(i)].impulse;
-            if (m.friction.rolling > 0.0) solveRolling(m.friction, pushed);
-            solveFriction(m.friction, m.rows, pushed);
+            if (rolling_ > 0.0) solveRolling(m.friction, pushed);
+            solveFriction(m.rows, pushed);
             if (change < kSweepTolerance) break;
         }
 }
@@ -755,9 +771,10 @@ void RigidBodies::undo(Manifold& m) {
         r.impulse = 0.0;
     }
     RigidContact& f = m.friction;
-    applyImpulse(f, -(f.tangentImpulse[0] * f.tangent[0] + f.tangentImpulse[1] * f.tangent[1]));
-    applyAngular(f, -(f.twistImpulse * f.normal + f.rollImpulse));
-    f.tangentImpulse[0] = f.tangentImpulse[1] = f.twistImpulse = 0.0;
+    FrictionRows& r = m.rows;
+    applyImpulse(f, -(r.tangentImpulse[0] * f.tangent[0] + r.tangentImpulse[1] * f.tangent[1]));
+    applyAngular(f, -(r.twistImpulse * f.normal + f.rollImpulse));
+    r.tangentImpulse[0] = r.tangentImpulse[1] = r.twistImpulse = 0.0;
     f.rollImpulse = dvec3(0.0);
 }
 
@@ -793,13 +810,16 @@ void RigidBodies::integratePositions(double h, double gravity) {
 
 void RigidBodies::finishStep() {
     kept_.clear(contacts_.size() + manifolds_.size());
-    auto keep = [&](const RigidContact& c, double normal) {
-        kept_.put(
-            c.key,
-            {normal, {c.tangentImpulse[0], c.tangentImpulse[1]}, c.twistImpulse, c.rollImpulse});
-    };
-    for (size_t i = 0; i < contacts_.size(); ++i) keep(contacts_[i], rows_[i].impulse);
-    for (const Manifold& m : manifolds_) keep(m.friction, 0.0);
+    for (size_t i = 0; i < contacts_.size(); ++i) {
+        const RigidContact& c = contacts_[i];
+        kept_.put(c.key, {rows_[i].impulse, {c.tangentImpulse[0], c.tangentImpulse[1]},
+                          c.twistImpulse, c.rollImpulse});
+    }
+    for (const Manifold& m : manifolds_) {
+        const FrictionRows& r = m.rows;
+        kept_.put(m.friction.key, {0.0, {r.tangentImpulse[0], r.tangentImpulse[1]},
+                                   r.twistImpulse, m.friction.rollImpulse});
+    }
     for (RigidBody& b : bodies_) b.delta = dvec3(0.0);
     updateSleep();
 }
