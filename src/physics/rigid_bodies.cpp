@@ -591,20 +591,10 @@ void RigidBodies::wake(std::vector<PhysicsBody>& spheres) {
         }
 }
 
+// A point: its approach speed and last step's push. Its friction is its manifold's.
 void RigidBodies::prepare(RigidContact& c) {
-    tangentsOf(c);
-    c.tangentMass[0] = rowMass(c, c.tangent[0]);
-    c.tangentMass[1] = rowMass(c, c.tangent[1]);
-    c.rolling = rolling_;
-    c.rollArm = glm::length(c.b.anchor);
     c.relativeVelocity = glm::dot(c.normal, relativeVelocity(c));
-    const WarmImpulses* warm = kept_.find(c.key);
-    if (!warm) return;
-    c.normalImpulse = warm->normal;
-    c.tangentImpulse[0] = warm->tangent[0];
-    c.tangentImpulse[1] = warm->tangent[1];
-    c.rollImpulse = warm->roll;
-    c.twistImpulse = warm->twist;
+    if (const WarmImpulses* warm = kept_.find(c.key)) c.normalImpulse = warm->normal;
 }
 
 // The manifold's friction contact: its first point's, moved to the points' centre.
@@ -627,7 +617,17 @@ void RigidBodies::prepareFriction(Manifold& m) {
     for (const ContactSide* s : {&f.a, &f.b})
         if (s->invMass > 0.0) k += glm::dot(f.normal, s->invInertia * f.normal);
     f.twistMass = k > 0.0 ? 1.0 / k : 0.0;
-    prepare(f);
+    tangentsOf(f);
+    f.tangentMass[0] = rowMass(f, f.tangent[0]);
+    f.tangentMass[1] = rowMass(f, f.tangent[1]);
+    f.rolling = rolling_;
+    f.rollArm = glm::length(f.b.anchor);
+    if (const WarmImpulses* warm = kept_.find(f.key)) {
+        f.tangentImpulse[0] = warm->tangent[0];
+        f.tangentImpulse[1] = warm->tangent[1];
+        f.rollImpulse = warm->roll;
+        f.twistImpulse = warm->twist;
+    }
     FrictionRows& r = m.rows;
     r.velA = f.a.vel;
     r.spinA = f.a.spin;

@@ -80,7 +80,7 @@ struct RigidContact {
     double separation = 0.0;  // at the step's start; < 0 overlaps
     double height = 0.0;      // of its manifold's lowest point: solved bottom-up
     double friction = 0.0, restitution = 0.0, rolling = 0.0, rollArm = 0.0;
-    double tangentMass[2] = {0.0, 0.0};     // the normal's is its NormalRow's
+    double tangentMass[2] = {0.0, 0.0};     // a manifold's friction only, as the twist
     double normalImpulse = 0.0;             // last step's, to start the row from
     double tangentImpulse[2] = {0.0, 0.0};  // a manifold's friction only, as the twist
     glm::dvec3 rollImpulse{0.0};            // a manifold's friction only, as the twist
