@@ -268,6 +268,11 @@ void row(const char* name, double marchbox, double bullet, const char* unit) {
     std::printf("| %s | %.3g%s | %.3g%s |\n", name, marchbox, unit, bullet, unit);
 }
 
+double median(std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
 // Each engine's pile, run kRuns times in turn (Marchbox, Bullet, Marchbox on 2 threads, again):
 // the median time per step of each, so that a burst of load on a shared machine moves no figure.
 // The overlap is the same every run.
@@ -289,10 +294,6 @@ PileTimes timePile(int count, float radius, double seconds) {
         other.push_back(t.bullet.msPerStep);
         two.push_back(pile<MarchboxEngine>(count, radius, seconds, twoThreads).msPerStep);
     }
-    auto median = [](std::vector<double>& v) {
-        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-        return v[v.size() / 2];
-    };
     t.marchbox.msPerStep = median(one);
     t.bullet.msPerStep = median(other);
     t.twoThreads = median(two);
@@ -334,45 +335,47 @@ void pileRows(float radius, const std::vector<int>& counts) {
 
 // The walled pile of boxes, capsules, cylinders and spheres of about 0.2 m, first 1.5 s at
 // 1/120 s, one thread each and all awake (Marchbox's sleeping off; Bullet never deactivates
-// here): each engine three times in turn, the median ms per step of each.
+// here): each engine once, in turn.
 struct MixedTimes {
     double marchbox, bullet;
 };
 
-MixedTimes timeMixed(int count) {
-    const Scene scene = mb::mixedPileScene(count, 7);
+MixedTimes timeMixed(const Scene& scene) {
     mb::PhysicsSettings awake;
     awake.sleep = false;
-    std::vector<double> ours, theirs;
-    for (int run = 0; run < 3; ++run) {
-        ours.push_back(timeSteps<MarchboxEngine>(scene, 1.5, awake));
-        theirs.push_back(timeSteps<BulletEngine>(scene, 1.5));
-    }
-    std::sort(ours.begin(), ours.end());
-    std::sort(theirs.begin(), theirs.end());
-    return {ours[1], theirs[1]};
+    return {timeSteps<MarchboxEngine>(scene, 1.5, awake), timeSteps<BulletEngine>(scene, 1.5)};
 }
 
 // The mixed pile's rows, and its two ratios with their targets (at most Bullet's time per step,
-// the goal half; at most 5x from 1000 to 4000 bodies), from this run's measurements.
+// the goal half; at most 5x from 1000 to 4000 bodies). The two sizes run in turn, five rounds:
+// each ratio is the median of the rounds' own, measured side by side, as the times are each
+// engine's median.
 void mixedRows() {
-    std::printf(
-        "\n| mixed pile, first 1.5 s, all awake (median of 3) | Marchbox | Bullet |\n"
-        "| --- | ---: | ---: |\n");
-    std::map<int, MixedTimes> times;
-    for (int count : {1000, 4000}) {
-        const MixedTimes& t = times[count] = timeMixed(count);
-        char name[96];
-        std::snprintf(name, sizeof name, "%d mixed bodies: time per step", count);
-        row(name, t.marchbox, t.bullet, " ms");
+    constexpr int kRounds = 5;
+    const Scene small = mb::mixedPileScene(1000, 7), large = mb::mixedPileScene(4000, 7);
+    std::vector<double> ours[2], theirs[2], vsBullet, growth, bulletGrowth;
+    for (int round = 0; round < kRounds; ++round) {
+        const MixedTimes s = timeMixed(small), l = timeMixed(large);
+        ours[0].push_back(s.marchbox);
+        theirs[0].push_back(s.bullet);
+        ours[1].push_back(l.marchbox);
+        theirs[1].push_back(l.bullet);
+        vsBullet.push_back(s.marchbox / s.bullet);
+        growth.push_back(l.marchbox / s.marchbox);
+        bulletGrowth.push_back(l.bullet / s.bullet);
     }
-    const MixedTimes &small = times[1000], &large = times[4000];
+    std::printf(
+        "\n| mixed pile, first 1.5 s, all awake (median of %d) | Marchbox | Bullet |\n"
+        "| --- | ---: | ---: |\n",
+        kRounds);
+    row("1000 mixed bodies: time per step", median(ours[0]), median(theirs[0]), " ms");
+    row("4000 mixed bodies: time per step", median(ours[1]), median(theirs[1]), " ms");
     std::printf(
         "\nMixed pile of 1000, Marchbox against Bullet: **%.2fx** its time per step on one thread "
-        "(target <= 1x, goal 0.5x). From 1000 to 4000 bodies: Marchbox **%.2fx** (target <= 5x), "
-        "Bullet %.2fx.\n",
-        small.marchbox / small.bullet, large.marchbox / small.marchbox,
-        large.bullet / small.bullet);
+        "(target <= 1x, goal 0.5x). From 1000 to 4000 bodies: Marchbox **%.2fx** (target <= 5x; "
+        "rounds %.2f-%.2fx), Bullet %.2fx. Each a median of the %d rounds' ratios.\n",
+        median(vsBullet), median(growth), *std::min_element(growth.begin(), growth.end()),
+        *std::max_element(growth.begin(), growth.end()), median(bulletGrowth), kRounds);
 }
 
 }  // namespace
@@ -380,10 +383,15 @@ void mixedRows() {
 int main(int argc, char** argv) {
     // `bullet_bench pile COUNT [RADIUS]`: the pile alone, Marchbox then Bullet, one run each, for
     // timing them side by side (run it a few times and take the medians).
-    // `mixed COUNT`: the walled mixed pile alone (timeMixed), for timing it side by side.
+    // `mixed COUNT`: the walled mixed pile alone (timeMixed), each engine once, the same way;
+    // `mixed`: the report's mixed-pile table alone.
+    if (argc == 2 && std::string(argv[1]) == "mixed") {
+        mixedRows();
+        return 0;
+    }
     if (argc > 2 && std::string(argv[1]) == "mixed") {
         const int count = std::atoi(argv[2]);
-        const MixedTimes t = timeMixed(count);
+        const MixedTimes t = timeMixed(mb::mixedPileScene(count, 7));
         std::printf("mixed pile of %d: Marchbox %.3f ms/step, Bullet %.3f ms/step, ratio %.2f\n",
                     count, t.marchbox, t.bullet, t.marchbox / t.bullet);
         return 0;
