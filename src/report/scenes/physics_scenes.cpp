@@ -243,8 +243,10 @@ Scene pileScene(int count, std::uint32_t seed, float r) {
     return s;
 }
 
-// The same bin as pileScene, filled in turn with boxes, capsules, cylinders and spheres of about
-// r, each turned at random: the mixed pile the rigid bodies are timed on against Bullet.
+// The same bin as pileScene, filled with boxes, capsules, cylinders and spheres of about r, each
+// turned at random: the mixed pile the rigid bodies are timed on against Bullet. The type
+// follows col + row + layer, so that each body's neighbours along every axis are of other
+// types whatever the bin's width (by index, a width divisible by 4 stacked columns of one type).
 Scene mixedPileScene(int count, std::uint32_t seed, float r) {
     Scene s = physicsWorld(9.81f, 0.3f, 0.5f, true);
     Lcg rng{seed};
@@ -260,7 +262,7 @@ Scene mixedPileScene(int count, std::uint32_t seed, float r) {
             {spacing * (float(col) - 0.5f * float(side - 1)), r + 0.5f * r + spacing * float(layer),
              spacing * (float(row) - 0.5f * float(side - 1))},
             r * rng.range(0.8f, 1.0f), 1.0f);
-        o.type = types[i % 4];
+        o.type = types[(col + row + layer) % 4];
         o.size = glm::vec3(0.7f * o.radius);
         o.height = o.radius;
         if (o.type == ShapeType::Capsule) o.radius *= 0.5f;
