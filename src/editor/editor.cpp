@@ -346,7 +346,9 @@ int Editor::moveCameraKey(int index, float t, uint64_t mergeKey) {
 
 void Editor::addCameraKey() {
     const float t = float(doc_.time());
-    edit("Add camera key", [&](Scene& s) { setCameraKey(s, t, s.camera); });
+    // The view as shown: at t > 0 the edit is made to the start too, whose camera is older.
+    const Camera view = scene().camera;
+    edit("Add camera key", [&](Scene& s) { setCameraKey(s, t, view); });
 }
 
 bool Editor::deleteCameraKey() {

@@ -637,7 +637,8 @@ TEST(Editor, CameraKeysAddAtTheSimulatedTimeAndDeleteTheNearest) {
     EXPECT_EQ(e.scene().keyframes[1].pos, glm::vec3(6, 2, -8));
     EXPECT_EQ(e.scene().keyframes[1].fov, 30.0f);
     EXPECT_NEAR(e.document().time(), 1.0, 1e-9);           // keys are no edit of the bodies
-    EXPECT_EQ(e.document().start().keyframes.size(), 2u);  // and Save writes them
+    EXPECT_EQ(e.document().start().keyframes.size(), 2u);  // and Save writes them,
+    EXPECT_EQ(e.document().start().keyframes[1].pos, glm::vec3(6, 2, -8));  // from the view
 
     ASSERT_TRUE(e.deleteCameraKey());  // the one at 1 s
     ASSERT_EQ(e.scene().keyframes.size(), 1u);
