@@ -3,11 +3,9 @@
 
 #include "marchbox/editor/timeline.h"
 
-namespace mb {
+#include <cmath>
 
-void Simulation::ensureWorld(const Scene& scene) {
-    if (!world_) world_ = std::make_unique<PhysicsWorld>(scene, settings_);
-}
+namespace mb {
 
 void Simulation::play(Document& doc) {
     if (playing_) return;
@@ -31,11 +29,11 @@ void Simulation::commitRun(Document& doc) {
 }
 
 void Simulation::sceneChanged(Document& doc) {
-    world_.reset();
     cache_.follow(doc.run());
     // An edit at t (or an undo to a time the cache lost) shows a frame of the run: the first
     // of what follows.
     if (doc.time() > cache_.end()) cache_.record(doc.run(), doc.time(), doc.scene());
+    dropWorldUnlessAtBakeEnd();
     if (playing_) runStart_ = doc.scene();
     head_ = doc.time();
 }
@@ -56,28 +54,45 @@ int Simulation::advance(Document& doc, double frameSeconds) {
     if (!playing_) return 0;
     const int steps = accumulator_.advance(frameSeconds, settings_);
     if (steps == 0) return 0;
-    const double end = loop_ ? loopEnd(doc.scene().keyframes, bakedAtPlay_) : 0.0;
-    head_ = playHead(head_, steps * settings_.dt, end);
+    const double loopAt = loop_ ? loopEnd(doc.scene().keyframes, bakedAtPlay_) : 0.0;
+    head_ = playHead(head_, steps * settings_.dt, loopAt);
     // Frame times are sums of steps: one a rounding error past the head is still at it.
-    if (head_ <= cache_.end() + 1e-9) {
+    const double baked = cache_.end();
+    if (head_ <= baked + 1e-9) {
         show(doc, cache_.at(head_ + 1e-9));
         return steps;
     }
-    simulate(doc, steps);  // past the baked frames (from before the last: the same again)
+    if (worldAtBakeEnd() && doc.time() < baked) {  // on from the last baked frame's world
+        show(doc, cache_.at(baked + 1e-9));
+        simulate(doc, int(std::llround((head_ - baked) / settings_.dt)));
+    } else {
+        simulate(doc, steps);  // from the frame shown: a world built from its floats
+    }
     head_ = doc.time();
     return steps;
 }
 
-void Simulation::show(Document& doc, const BakedFrame* frame) {
-    doc.show(frame);
-    world_.reset();  // built again from the frame where the run is simulated on
-}
+void Simulation::show(Document& doc, const BakedFrame* frame) { doc.show(frame); }
 
 void Simulation::simulate(Document& doc, int steps) {
-    ensureWorld(doc.scene());
+    // The world goes on where it is the scene shown: at the last baked frame it made.
+    if (!worldAtBakeEnd() || std::abs(doc.time() - worldTime_) > 1e-9) world_.reset();
+    if (!world_) world_ = std::make_unique<PhysicsWorld>(doc.scene(), settings_);
     for (int i = 0; i < steps; ++i) world_->step();
     world_->writeBack(doc.moving(steps * settings_.dt));
     cache_.record(doc.run(), doc.time(), doc.scene());
+    const BakedFrame* last = cache_.at(cache_.end() + 1e-9);
+    worldTime_ = last ? last->t : 0;
+    worldPiece_ = last ? last->piece : nullptr;
+}
+
+bool Simulation::worldAtBakeEnd() const {
+    const BakedFrame* last = cache_.at(cache_.end() + 1e-9);
+    return world_ && last && last->t == worldTime_ && last->piece == worldPiece_;
+}
+
+void Simulation::dropWorldUnlessAtBakeEnd() {
+    if (!worldAtBakeEnd()) world_.reset();
 }
 
 }  // namespace mb

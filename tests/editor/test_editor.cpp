@@ -805,6 +805,27 @@ TEST(Editor, PlayingOverBakedFramesPlaysThemBack) {
     e.togglePlay();
 }
 
+// Played on past the baked frames after a scrub back, the run goes on from the physics world as
+// the bake left it, not from a frame's floats: the bytes of a run never interrupted. kScene's
+// sphere bounces, so a restart from rounded floats would show in the last bits by 2.25 s.
+TEST(Editor, PlayingOnPastTheBakeAfterAScrubGoesOnAsOneRun) {
+    Editor e = openEditor(writeFile("play-on.txt", kScene));
+    const Scene whole = playedFor(135);
+    run(e, 60);
+    ASSERT_TRUE(e.seek(0.25));
+    run(e, 120);
+    EXPECT_NEAR(e.document().time(), 2.25, 1e-9);
+    EXPECT_EQ(e.scene().objects[0].pos, whole.objects[0].pos);
+    EXPECT_EQ(e.scene().objects[0].vel, whole.objects[0].vel);
+    ASSERT_TRUE(e.seek(1.0));  // a step from the bake's end, shown again, goes on the same way
+    ASSERT_TRUE(e.seek(2.25));
+    e.step();
+    Editor once = openEditor(writeFile("play-on-once.txt", kScene));
+    run(once, 135);
+    once.step();
+    EXPECT_EQ(e.scene().objects[0].pos, once.scene().objects[0].pos);
+}
+
 // Loop over a baked second: past its end playing starts again at t = 0, from the baked frames.
 TEST(Editor, LoopPlaysTheBakedFramesAgainFromTheStart) {
     Editor e = openEditor(writeFile("loop.txt", kScene));

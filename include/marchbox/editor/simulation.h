@@ -44,12 +44,18 @@ public:
     const FrameCache& cache() const { return cache_; }  // each frame of the runs so far
 
 private:
-    void ensureWorld(const Scene& scene);
     void show(Document& doc, const BakedFrame* frame);  // a baked frame played back
     void simulate(Document& doc, int steps);  // on from the scene shown, baking each frame
+    bool worldAtBakeEnd() const;
+    void dropWorldUnlessAtBakeEnd();
 
     PhysicsSettings settings_;
-    std::unique_ptr<PhysicsWorld> world_;  // null when it no longer mirrors the scene
+    // The world as it simulated the last baked frame, to go on from: a run played on after a
+    // scrub back is the run never interrupted, not one begun again from a frame's floats. Null
+    // until the first step, and once the bake's last frame is no longer the one it made.
+    std::unique_ptr<PhysicsWorld> world_;
+    double worldTime_ = 0;                        // s: the frame it made
+    std::shared_ptr<const RunPiece> worldPiece_;  // and that frame's piece
     StepAccumulator accumulator_;
     FrameCache cache_;
     Scene runStart_;  // the scene when this run (or its last committed part) began
