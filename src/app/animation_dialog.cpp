@@ -121,10 +121,7 @@ void AnimationDialog::draw(UiContext& c) {
             if (ImGui::Button("Cancel")) stop("cancelled at frame " + std::to_string(frame_));
             markItem("animation/cancel");
         }
-        if (!status_.empty()) {
-            ImGui::TextWrapped("%s", status_.c_str());
-            markItem("animation/status");
-        }
+        statusLine(status_, &shownStatus_, "animation/status");
     }
     ImGui::End();
 }

@@ -38,6 +38,7 @@ private:
     std::unique_ptr<Renderer> renderer_;  // its own: the window's keeps drawing meanwhile
     std::unique_ptr<TiledRender> tiles_;  // the frame under way, once the simulation is there
     std::string status_;
+    std::string shownStatus_;  // status_ as last drawn
 };
 
 }  // namespace mb

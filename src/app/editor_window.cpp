@@ -164,6 +164,7 @@ void App::buildUi(UiContext& c, int width, int height, double seconds) {
     drawMenuBar(c);
     drawEditWindows(c);
     drawSimulationWindow(c);
+    drawTimelineBar(c);
     drawViewWindows(c);
     drawDialogs(c);
     renderDialog_.draw(c);

@@ -121,6 +121,8 @@ static void simulationMenu(UiContext& c) {
     if (menuItem("Simulation", "Loop", nullptr, e.simulation().loop()))
         e.setLoop(!e.simulation().loop());
     ImGui::Separator();
+    if (menuItem("Simulation", "Timeline", nullptr, c.ui.showTimeline))
+        c.ui.showTimeline = !c.ui.showTimeline;
     if (menuItem("Simulation", "Settings", nullptr, c.ui.showSimulation))
         c.ui.showSimulation = !c.ui.showSimulation;
 }
@@ -321,7 +323,7 @@ static void plainShortcut(UiContext& c, const KeyPress& k) {
             e.kick();
             break;
         case GLFW_KEY_HOME:  // as in Blender, for the area under the mouse
-            c.ui.overSimulation ? void(e.seek(0)) : frameView(c, true);
+            c.ui.overTimeline ? void(e.seek(0)) : frameView(c, true);
             break;
         case GLFW_KEY_KP_DECIMAL:
             frameView(c, false);

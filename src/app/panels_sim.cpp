@@ -1,4 +1,4 @@
-// panels_sim.cpp — Simulation: Play/Pause, Step, Reset, and the world the spheres fall in.
+// panels_sim.cpp — Simulation: Step, Reset, Keep poses, and the world the bodies fall in.
 #include "ui.h"
 #include "widgets.h"
 
@@ -6,11 +6,9 @@
 
 namespace mb {
 
+// Play, Loop and the timeline are under the view (timeline_strip.cpp).
 static void controls(UiContext& c) {
     Editor& e = c.editor;
-    if (ImGui::Button(e.simulation().playing() ? "Pause" : "Play")) e.togglePlay();
-    markItem("Simulation/PlayPause");
-    ImGui::SameLine();
     if (ImGui::Button("Step")) e.step();
     ImGui::SameLine();
     ImGui::BeginDisabled(e.document().time() <= 0);
@@ -18,14 +16,6 @@ static void controls(UiContext& c) {
     ImGui::SameLine();
     if (ImGui::Button("Keep poses")) e.keepPoses();
     ImGui::EndDisabled();
-    ImGui::SameLine();
-    bool loop = e.simulation().loop();
-    if (ImGui::Checkbox("Loop", &loop)) e.setLoop(loop);
-    markItem("Simulation/Loop");
-    itemTooltip("Simulation/Loop",
-                "Play goes back to t = 0 at the last camera key, or without "
-                "keys at the end of the baked frames.");
-    drawTimeline(c);
 }
 
 static void worldFields(UiContext& c) {
@@ -57,10 +47,8 @@ static void statistics(const Simulation& sim) {
 }
 
 void drawSimulationWindow(UiContext& c) {
-    c.ui.overSimulation = false;
     if (!c.ui.showSimulation) return;
     if (beginPanel(c, Panel::Simulation, "Simulation", &c.ui.showSimulation)) {
-        c.ui.overSimulation = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows);
         controls(c);
         ImGui::Separator();
         worldFields(c);

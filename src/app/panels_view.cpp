@@ -162,7 +162,7 @@ static void statsOverlay(UiContext& c) {
     // As large as it was last drawn; where it would cover a panel, it gives way.
     const ImGuiWindow* last = ImGui::FindWindowByName("##stats");
     const ImVec2 size = last ? last->Size : ImVec2(0, 0);
-    const PanelFrame frame{io.DisplaySize.x, io.DisplaySize.y, ImGui::GetFrameHeight(), 0.0f};
+    const PanelFrame frame = panelFrame(c.ui);  // rightTop 0, just set
     const PanelRect place{io.DisplaySize.x - 10 - size.x, 30, size.x, size.y};
     if (!c.ui.showStats || !statisticsFit(frame, c.ui.openPanels(), place)) {
         markPanelHidden("##stats");

@@ -166,10 +166,7 @@ void RenderDialog::draw(UiContext& c) {
                 status_ = "cancelled";
             }
         }
-        if (!status_.empty()) {
-            ImGui::TextWrapped("%s", status_.c_str());
-            markItem("render/status");
-        }
+        statusLine(status_, &shownStatus_, "render/status");
     }
     ImGui::End();
 }

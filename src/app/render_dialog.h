@@ -50,6 +50,7 @@ private:
     std::unique_ptr<Renderer> renderer_;  // its own: the window's keeps drawing meanwhile
     std::unique_ptr<TiledRender> tiles_;
     std::string status_;
+    std::string shownStatus_;  // status_ as last drawn
     uint64_t scene_ = 0;  // Document::opened() the status is about
 };
 

@@ -1,10 +1,13 @@
-// timeline_strip.cpp — the strip of simulated time in the Simulation window: the baked frames,
-// the time shown and the camera keys, drawn with ImGui's draw list; a click or a drag scrubs.
+// timeline_strip.cpp — the timeline under the view: Play, the strip of simulated time (the baked
+// frames, the time shown and the camera keys, drawn with ImGui's draw list; a click or a drag
+// scrubs), what the bake holds, and Loop.
 #include "marchbox/editor/timeline.h"
 #include "ui.h"
 #include "widgets.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <imgui.h>
 
 namespace mb {
@@ -75,24 +78,86 @@ static void keyTooltip(const TimelineStrip& strip, const std::vector<Keyframe>& 
     itemTooltip("Simulation/timeline key", text);
 }
 
-void drawTimeline(UiContext& c) {
+static void strip(UiContext& c, float width) {
     Editor& e = c.editor;
     const ImVec2 at = ImGui::GetCursorScreenPos();
-    const float width = ImGui::GetContentRegionAvail().x;
     const TimelineStrip strip = timelineStrip(at.x, width, e.simulation().cache().end(),
                                               e.scene().keyframes, e.document().time());
     const ImGuiID id = ImGui::GetID("timeline");
     ImGui::InvisibleButton("timeline", ImVec2(strip.width, kStripHeight));
-    markItem("Simulation/timeline");
+    markItem("Timeline/strip");
     scrub(e, strip, id, &c.ui.heldKey);
     keyTooltip(strip, e.scene().keyframes);
     drawStrip(strip, at.y, e);
-    const FrameCache& cache = e.simulation().cache();
-    ImGui::Text("%s   baked to %.2f s: %zu frames, %.1f MB", timeLabel(e.document().time()).c_str(),
-                cache.end(), cache.frames(), double(cache.bytes()) / 1e6);
-    itemTooltip("Simulation/baked",
-                "Each frame holds every dynamic body's state. Past 512 MB "
-                "every other frame goes, and frames are kept half as often.");
+}
+
+// In a window smaller than this the timeline gives way, as the statistics overlay does: the
+// docked panels need the height, and the strip would be a few pixels wide.
+static constexpr float kTimelineMinWidth = 560.0f, kTimelineMinHeight = 360.0f;  // px
+
+static bool timelineShown(const UiState& ui) {
+    const ImVec2 window = ImGui::GetIO().DisplaySize;
+    return ui.showTimeline && window.x >= kTimelineMinWidth && window.y >= kTimelineMinHeight;
+}
+
+float timelineBarHeight(const UiState& ui) {
+    return timelineShown(ui) ? kStripHeight + 2.0f * ImGui::GetStyle().WindowPadding.y : 0.0f;
+}
+
+void drawTimelineBar(UiContext& c) {
+    c.ui.overTimeline = false;
+    if (!timelineShown(c.ui)) {
+        markPanelHidden("##timeline");
+        return;
+    }
+    Editor& e = c.editor;
+    const ImGuiIO& io = ImGui::GetIO();
+    const ImGuiStyle& style = ImGui::GetStyle();
+    ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y), ImGuiCond_Always, ImVec2(0, 1));
+    ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, timelineBarHeight(c.ui)));
+    ImGui::SetNextWindowBgAlpha(0.75f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
+                                   ImGuiWindowFlags_NoSavedSettings;
+    if (ImGui::Begin("##timeline", nullptr, flags)) {
+        markPanel();
+        c.ui.overTimeline = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows);
+        // Every widget of the row as tall as the strip, its text level with the strip's middle.
+        ImGui::PushStyleVar(
+            ImGuiStyleVar_FramePadding,
+            ImVec2(style.FramePadding.x, 0.5f * (kStripHeight - ImGui::GetFontSize())));
+        if (ImGui::Button(e.simulation().playing() ? "Pause" : "Play", ImVec2(56, 0)))
+            e.togglePlay();
+        markItem("Timeline/PlayPause");
+        ImGui::SameLine();
+        ImGui::AlignTextToFramePadding();
+        ImGui::Text("%s", timeLabel(e.document().time()).c_str());
+        ImGui::SameLine(180.0f);
+        const FrameCache& cache = e.simulation().cache();
+        char baked[64];
+        std::snprintf(baked, sizeof baked, "baked %.2f s, %.1f MB", cache.end(),
+                      double(cache.bytes()) / 1e6);
+        const float after = ImGui::CalcTextSize(baked).x + ImGui::GetFrameHeight() +
+                            ImGui::CalcTextSize("Loop").x + 4.0f * style.ItemSpacing.x;
+        strip(c, std::max(ImGui::GetContentRegionAvail().x - after, 40.0f));
+        ImGui::SameLine();
+        ImGui::TextUnformatted(baked);
+        char frames[160];
+        std::snprintf(frames, sizeof frames,
+                      "%zu frames, each every dynamic body's state. Past 512 MB every other "
+                      "frame goes, and frames are kept half as often.",
+                      cache.frames());
+        itemTooltip("Timeline/baked", frames);
+        ImGui::SameLine();
+        bool loop = e.simulation().loop();
+        if (ImGui::Checkbox("Loop", &loop)) e.setLoop(loop);
+        markItem("Timeline/Loop");
+        itemTooltip("Timeline/Loop",
+                    "Play goes back to t = 0 at the last camera key, or without "
+                    "keys at the end of the baked frames.");
+        ImGui::PopStyleVar();
+    }
+    ImGui::End();
 }
 
 }  // namespace mb

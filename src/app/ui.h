@@ -42,6 +42,7 @@ struct UiState {
     // Windows, toggled from the menus.
     bool showObjects = true, showMaterials = false, showLights = false;
     bool showSimulation = false, showView = false, showHelp = false, showStats = true;
+    bool showTimeline = true;
     bool showRender = false, showAnimation = false, showAbout = false;  // one Render slot
 
     // Requests raised by menus and shortcuts, carried out by drawDialogs() this frame.
@@ -55,7 +56,7 @@ struct UiState {
     bool refocusPath = false;             // Save As failed on Enter: the field keeps the keys
     bool escape = false;                  // Esc this frame: the open dialog cancels
     int heldKey = -1;  // the camera key a press on the timeline landed on, dragged while held
-    bool overSimulation = false;  // the mouse was over the Simulation window: Home rewinds
+    bool overTimeline = false;  // the mouse was over the timeline: Home rewinds
 
     Messages messages;                     // refusals and failures, each in its place, in red
     RenderOptions render = viewOptions();  // debug view and uber shader
@@ -102,7 +103,7 @@ void saveFile(UiContext& c);                           // Save As when the scene
 // [panels_edit.cpp] objects, materials, lights, and the right-click popup.
 void drawEditWindows(UiContext& c);
 
-// [panels_sim.cpp] Play, Pause, Step, Reset and the world's settings.
+// [panels_sim.cpp] Step, Reset, Keep poses, the world's settings and the step's statistics.
 void drawSimulationWindow(UiContext& c);
 
 // [gizmo_view.cpp] over the scene, under the panels: the selection's handles, `hot` lit (held
@@ -110,9 +111,16 @@ void drawSimulationWindow(UiContext& c);
 void drawGizmo(const UiContext& c, GizmoHandle hot, glm::vec2 viewSize);
 void setGizmoMode(UiState& ui, GizmoMode m);  // G, R, T and the View menu
 
-// [timeline_strip.cpp] The strip of simulated time: the baked frames, the time shown and the
-// camera keys as markers; a click or drag scrubs, a click on a key's marker goes to the key.
-void drawTimeline(UiContext& c);
+// [timeline_strip.cpp] The timeline across the window's bottom, under the view: Play, the time,
+// the strip of simulated time (the baked frames, the time shown and the camera keys as markers;
+// a click or drag scrubs, a click on a key's marker goes to the key), the bake's size and Loop.
+// Its height (0 while Simulation > Timeline is off, or in a small window) is kept clear of the
+// docked panels.
+void drawTimelineBar(UiContext& c);
+float timelineBarHeight(const UiState& ui);
+
+// [widgets.cpp] The room the docked panels and the statistics overlay have this frame.
+PanelFrame panelFrame(const UiState& ui);
 
 // [panels_view.cpp] camera, render settings, debug views, help, statistics, shader log.
 void drawViewWindows(UiContext& c);

@@ -270,10 +270,14 @@ unsigned UiState::openPanels() const {
     return open;
 }
 
-bool beginPanel(UiContext& c, Panel p, const char* title, bool* open) {
+PanelFrame panelFrame(const UiState& ui) {
     const ImGuiIO& io = ImGui::GetIO();
-    const PanelFrame frame{io.DisplaySize.x, io.DisplaySize.y, ImGui::GetFrameHeight(),
-                           c.ui.statsBottom};
+    return {io.DisplaySize.x, io.DisplaySize.y - timelineBarHeight(ui), ImGui::GetFrameHeight(),
+            ui.statsBottom};
+}
+
+bool beginPanel(UiContext& c, Panel p, const char* title, bool* open) {
+    const PanelFrame frame = panelFrame(c.ui);
     const PanelRect r = layoutPanels(frame, c.ui.openPanels())[size_t(p)];
     PanelRect& placed = c.ui.placed[size_t(p)];
     const bool moved = !(r == placed);
@@ -288,6 +292,14 @@ bool beginPanel(UiContext& c, Panel p, const char* title, bool* open) {
     bool shown = ImGui::Begin(title, open, ImGuiWindowFlags_AlwaysAutoResize);
     markPanel();
     return shown;
+}
+
+void statusLine(const std::string& status, std::string* shown, const std::string& name) {
+    if (status.empty()) return;
+    ImGui::TextWrapped("%s", status.c_str());
+    markItem(name);
+    if (status != *shown) ImGui::SetScrollHereY(1.0f);
+    *shown = status;
 }
 
 void messageLine(UiContext& c, Place p) {

@@ -40,6 +40,10 @@ void itemTooltip(const std::string& name, const std::string& text);
 // one.
 void fieldErrorLine(const std::string& error);
 
+// A dialog's status under its fields, wrapped, marked as `name`; scrolled into sight when it
+// changes (*shown: the status last drawn), since a panel short of room clips its last lines.
+void statusLine(const std::string& status, std::string* shown, const std::string& name);
+
 // With the event log on, writes "widget NAME X Y" (the last item's centre in window pixels)
 // when the item shows up or moves.
 void markItem(const std::string& name);

@@ -19,7 +19,7 @@ static const Control kControls[] = {
     {"Delete", "delete the selection"},
     {"J", "random velocities for the dynamic bodies"},
     {"Space", "play or pause the simulation"},
-    {"Shift+Left; Home over Simulation", "back to t = 0, keeping the run to scrub forward again"},
+    {"Shift+Left; Home over the timeline", "back to t = 0, keeping the run to scrub forward again"},
     {"Home, numpad .", "frame all objects, frame the selection (over the view)"},
     {"Ctrl+Z, Ctrl+Y", "undo, redo (a simulation run is one step); Ctrl+Shift+Z redoes too"},
     {"Ctrl+N, Ctrl+O, Ctrl+S", "new, open, save"},

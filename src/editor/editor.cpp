@@ -10,6 +10,7 @@
 #include "marchbox/scene/sdf.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace mb {
 
@@ -364,7 +365,11 @@ bool Editor::seek(double t, uint64_t mergeKey) {
     if (!doc_.seek("Scrub", sim_.cache().at(t + 1e-9), mergeKey)) return false;
     sim_.sceneChanged(doc_);
     const double to = doc_.time();
-    if (mergeKey == 0 || mergeKey != loggedKey_) emitEvent("seek " + timeLabel(to));
+    if (mergeKey == 0 || mergeKey != loggedKey_) {
+        char exact[32];  // to name the frame's step: `simulate --seconds` reads it back
+        std::snprintf(exact, sizeof exact, " (%.9g)", to);
+        emitEvent("seek " + timeLabel(to) + exact);
+    }
     loggedKey_ = mergeKey;
     return true;
 }

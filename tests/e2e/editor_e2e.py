@@ -23,7 +23,8 @@ from xscreen import Screen, close_window  # noqa: E402
 WINDOW = (640, 400)  # small: a software renderer draws it a few times a second
 HOLD = 0.4           # s a key or button stays down: longer than a slow frame
 # Cases that need another window or scene than the small default (paths from the source tree).
-SIZES = {'live': (1280, 720), 'panels': (960, 600), 'guide': (960, 540)}
+# render: its dialog's fields and message all in sight above the timeline.
+SIZES = {'live': (1280, 720), 'panels': (960, 600), 'guide': (960, 540), 'render': (640, 440)}
 SCENES = {'live': 'tests/e2e/live_scene.txt', 'slow_input': 'tests/e2e/slow_scene.txt'}
 UNTITLED = {'new_save_as'}  # cases that start the editor with no file named
 SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..')
@@ -69,7 +70,7 @@ class Editor:
         self.wait('ready', timeout=90)
         self.wid = xdotool('search', '--sync', '--name', '^Marchbox').split()[0]
         xdotool('windowfocus', '--sync', self.wid)
-        self.move(size[0] // 2, size[1] - 20)
+        self.move(size[0] // 2, size[1] - 60)  # over the view, above the timeline
 
     # [events] ---------------------------------------------------------------
     def events(self):
@@ -270,7 +271,7 @@ def case_startup(app, scene):
     app.move(rx, ry)
     app.wait('tooltip Objects/radius')
     shown = app.screenshot()
-    app.move(WINDOW[0] - 20, WINDOW[1] - 20)  # onto the floor: the tooltip goes
+    app.move(WINDOW[0] - 20, WINDOW[1] - 60)  # onto the floor: the tooltip goes
     time.sleep(0.5)
     gone = app.screenshot()
     # ImGui puts a tooltip below and right of the mouse.
@@ -1213,7 +1214,7 @@ def refuse_far_too_much(app, field, size=None):
     scroll_into(app, field, panel(app, name))
     app.type_into(field, '1e9', fresh=False)
     app.wait('refuse %s ' % field.split('/')[1])
-    app.move(size[0] - 20, size[1] - 20)  # no tooltip over the panel
+    app.move(size[0] - 20, size[1] - 60)  # no tooltip over the panel
     time.sleep(0.5)
     return app.screenshot(), panel(app, name)
 
@@ -1412,6 +1413,80 @@ def case_guide(app, scene):
     check(app.wait('open ') == 'open ' + crate, 'the saved scene did not open again')
     app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
+
+
+TIMELINE_LEFT = 180  # px: where the timeline's strip starts (timeline_strip.cpp's SameLine)
+
+
+def scrub_to(app, fraction):
+    """Clicks the timeline's strip `fraction` of the way along it; returns the time it went to,
+    exactly, from the editor's "seek t = 1.23 s (1.23333333)"."""
+    x, y = app.widget('Timeline/strip', fresh=False)
+    app.click(int(TIMELINE_LEFT + fraction * 2 * (x - TIMELINE_LEFT)), y)
+    return float(app.wait('seek ').rsplit('(', 1)[1].rstrip(')'))
+
+
+def check_poses_at(app, scene, start, t):
+    """Kept and saved, the poses shown equal `marchbox simulate` of the start to t: the pos and
+    vel records' text, to the float precision of the file."""
+    app.menu('Simulation', 'Keep simulated poses')
+    app.save()
+    cli = os.path.join(app.workdir, 'cli.txt')
+    subprocess.run([MARCHBOX, 'simulate', start, '--seconds', '%.9g' % t, '-o', cli], check=True)
+    for key in ('pos', 'vel'):
+        shown, simulated = scene_values(scene, 'object', key), scene_values(cli, 'object', key)
+        check(shown == simulated, 'at t = %.4f s the %s shown %s, simulated %s' % (
+            t, key, shown, simulated))
+    app.key('ctrl+z')
+    app.wait('undo Keep simulated poses')
+
+
+def case_timeline(app, scene):
+    """The timeline under the view: a click on it goes back in a run; Play from there shows the
+    baked frames and then simulates on; a click then shows the bodies as `simulate` puts them
+    at that time, the run as one never interrupted. Two camera keys added at two times are
+    saved and marked on it. (Keep simulated poses makes a new start: the bake goes with it.)"""
+    app.key('j')
+    app.wait('edit Random velocities')
+    app.save()
+    start = os.path.join(app.workdir, 'start.txt')
+    shutil.copy(scene, start)
+    app.click_widget('Timeline/PlayPause', fresh=False)
+    app.wait('play')
+    time.sleep(3)
+    app.click_widget('Timeline/PlayPause', fresh=False)
+    app.wait('pause')
+    first = scrub_to(app, 0.3)
+    check(first > 0.1, 'the click went to t = %s' % first)
+    app.click_widget('Timeline/PlayPause', fresh=False)  # over the baked frames, then on past them
+    app.wait('play')
+    time.sleep(4)
+    app.click_widget('Timeline/PlayPause', fresh=False)
+    app.wait('pause')
+    later = scrub_to(app, 0.9)
+    check(later > first + 1, 'the run did not go on: t = %s after %s' % (later, first))
+    check_poses_at(app, scene, start, later)
+
+    app.menu('View', 'Add camera key')  # its edit is told before the menu closes
+    scrub_to(app, 0.2)
+    app.move(WINDOW[0] - 100, WINDOW[1] // 2)  # over the view, where the keys fly
+    app.key('a')  # left
+    app.menu('View', 'Add camera key')
+    app.save()
+    keys = scene_values(scene, 'keyframe', 'pos')
+    check(len(keys) == 2 and keys[0] != keys[1], 'the camera keys saved: %s' % keys)
+    img = app.screenshot()
+    x, y = app.widget('Timeline/strip', fresh=False)
+    row = [img.pixel(i, y - 7) for i in range(TIMELINE_LEFT, 2 * x - TIMELINE_LEFT)]
+    marks = sum(1 for a, b in zip(row, row[1:]) if is_key_mark(b) and not is_key_mark(a))
+    check(marks == 2, '%d camera key marks on the timeline, not 2' % marks)
+    app.key('ctrl+q')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def is_key_mark(rgb):  # a camera key's diamond on the timeline, (255, 210, 60)
+    r, g, b = rgb[:3]
+    return r > 230 and 180 < g < 235 and b < 100
 
 
 CASES = {name[5:]: fn for name, fn in globals().items() if name.startswith('case_')}
