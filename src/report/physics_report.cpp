@@ -2,6 +2,7 @@
 #include "marchbox/report/physics_report.h"
 
 #include "physics_report_cases.h"
+#include "processes.h"
 #include "report_plot.h"
 #include "report_template.h"
 
@@ -18,12 +19,6 @@
 namespace mb {
 
 namespace {
-
-std::string fmt(const char* format, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
 
 constexpr double kZeroErrorDrawnAt = 1e-16;  // a log plot has no 0
 
@@ -74,11 +69,8 @@ std::string extremeTable() {
 // src/report/bench/ builds bullet_bench beside this executable when Bullet was found; it prints its
 // own markdown, Marchbox and Bullet side by side.
 std::string bulletSection() {
-    char self[4096];
-    const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-    if (n <= 0) return "Bullet comparison not run: cannot locate the executable.\n";
-    std::string exe(self, size_t(n));
-    exe = exe.substr(0, exe.rfind('/')) + "/bullet_bench";
+    const std::string exe = besideExecutable("bullet_bench");
+    if (exe.empty()) return "Bullet comparison not run: cannot locate the executable.\n";
     if (access(exe.c_str(), X_OK) != 0)
         return "Bullet comparison not built (needs libbullet-dev, found through pkg-config "
                "`bullet`).\n";

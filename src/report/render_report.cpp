@@ -5,6 +5,7 @@
 
 #include "report_plot.h"
 #include "report_template.h"
+#include "sequence_report.h"
 
 #include "marchbox/gl/offscreen_context.h"
 #include "marchbox/gl/quality_preset.h"
@@ -29,12 +30,6 @@ constexpr int kWidth = 480, kHeight = 270;  // the size draft's bar is set at
 constexpr int kFrames = 9;  // a median of 5 still moved a row by a third when the machine stirred
 // Draft's bar on every example scene: this much faster than the scene as written, at this PSNR.
 constexpr double kDraftSpeedUp = 2.0, kDraftDb = 28.0;
-
-std::string fmt(const char* format, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
 
 double drawMs(Renderer& r, int w, int h) {
     auto t0 = std::chrono::steady_clock::now();
@@ -571,6 +566,8 @@ void measureAll(Renderer& r, const std::string& root, const std::string& docs, T
     (*v)["draft_table"] = draftSection(r, root, &passing, &scenes);
     (*v)["draft_passing"] = std::to_string(passing);
     (*v)["draft_scenes"] = std::to_string(scenes);
+    std::cerr << "render report: frame sequences\n";
+    (*v)["sequence_table"] = sequenceSection(root);
 }
 
 }  // namespace

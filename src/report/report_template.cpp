@@ -3,6 +3,7 @@
 
 #include "report_plot.h"
 
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -64,6 +65,12 @@ bool writeReport(const std::string& path, const std::string& text, const Templat
         return false;
     }
     return true;
+}
+
+std::string fmt(const char* format, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
 }
 
 }  // namespace mb

@@ -19,6 +19,9 @@ bool readReportTemplate(const std::string& root, const std::string& file, std::s
 bool fillTemplate(const std::string& text, const TemplateValues& values, std::string* out,
                   std::string* error);
 
+// One number through a printf format, for a table cell or a sentence: fmt("%.2fx", 1.234).
+std::string fmt(const char* format, double v);
+
 // fillTemplate, then the result written to `path`; false with *error ("NAME: why") if either fails.
 bool writeReport(const std::string& path, const std::string& text, const TemplateValues& values,
                  std::string* error);

@@ -273,64 +273,71 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-// Each engine's pile, run kRuns times in turn (Marchbox, Bullet, Marchbox on 2 threads, again):
-// the median time per step of each, so that a burst of load on a shared machine moves no figure.
-// The overlap is the same every run.
-struct PileTimes {
+// Each engine's pile once, in turn: Marchbox, Bullet, Marchbox on 2 threads. The overlap is the
+// same every run.
+struct PileRun {
     PileResult marchbox, bullet;
     double twoThreads;
 };
 
-PileTimes timePile(int count, float radius, double seconds) {
-    constexpr int kRuns = 3;
+PileRun timePile(int count, float radius, double seconds) {
     mb::PhysicsSettings twoThreads;
     twoThreads.threads = 2;
-    std::vector<double> one, two, other;
-    PileTimes t{};
-    for (int run = 0; run < kRuns; ++run) {
-        t.marchbox = pile<MarchboxEngine>(count, radius, seconds);
-        t.bullet = pile<BulletEngine>(count, radius, seconds);
-        one.push_back(t.marchbox.msPerStep);
-        other.push_back(t.bullet.msPerStep);
-        two.push_back(pile<MarchboxEngine>(count, radius, seconds, twoThreads).msPerStep);
-    }
-    t.marchbox.msPerStep = median(one);
-    t.bullet.msPerStep = median(other);
-    t.twoThreads = median(two);
+    PileRun t{};
+    t.marchbox = pile<MarchboxEngine>(count, radius, seconds);
+    t.bullet = pile<BulletEngine>(count, radius, seconds);
+    t.twoThreads = pile<MarchboxEngine>(count, radius, seconds, twoThreads).msPerStep;
     return t;
 }
 
+// The median over rounds of f(round's runs, by count).
+template <class F>
+double overRounds(const std::vector<std::map<int, PileRun>>& rounds, F f) {
+    std::vector<double> v;
+    for (const std::map<int, PileRun>& r : rounds) v.push_back(f(r));
+    return median(v);
+}
+
 // Time per step and deepest overlap on piles of spheres of radius 0.8·r to r, then the two ratios
-// with targets (0.25x Bullet's step, at most 5x from 1000 to 4000), from this run's measurements.
+// with targets (0.25x Bullet's step, at most 5x from 1000 to 4000). Every size runs in each of
+// kRounds rounds, so that a burst of load on a shared machine lands on all alike: each time is
+// a median over the rounds, each ratio the median of the rounds' own, measured side by side.
 void pileRows(float radius, const std::vector<int>& counts) {
+    constexpr int kRounds = 3;
     const double seconds = 1.5;
+    std::vector<std::map<int, PileRun>> rounds(kRounds);
+    for (std::map<int, PileRun>& round : rounds)
+        for (int count : counts) round[count] = timePile(count, radius, seconds);
     std::printf(
-        "\n| pile, r = %.1f, first %.1f s (median of 3) | Marchbox | Bullet |\n| --- | ---: | ---: "
-        "|\n",
-        double(radius), seconds);
-    std::map<int, PileTimes> times;
+        "\n| pile, r = %.1f, first %.1f s (median of %d) | Marchbox | Bullet |\n| --- | ---: | "
+        "---: |\n",
+        double(radius), seconds, kRounds);
     for (int count : counts) {
-        const PileTimes& t = times[count] = timePile(count, radius, seconds);
+        const auto at = [count](const std::map<int, PileRun>& r) { return r.at(count); };
+        const double bullet = overRounds(rounds, [&](auto& r) { return at(r).bullet.msPerStep; });
         char name[96];
         std::snprintf(name, sizeof name, "%d spheres: time per step", count);
-        row(name, t.marchbox.msPerStep, t.bullet.msPerStep, " ms");
+        row(name, overRounds(rounds, [&](auto& r) { return at(r).marchbox.msPerStep; }), bullet,
+            " ms");
         std::snprintf(name, sizeof name, "%d spheres: time per step, Marchbox on 2 threads", count);
-        row(name, t.twoThreads, t.bullet.msPerStep, " ms");
+        row(name, overRounds(rounds, [&](auto& r) { return at(r).twoThreads; }), bullet, " ms");
         std::snprintf(name, sizeof name, "%d spheres: deepest overlap", count);
-        row(name, t.marchbox.deepest, t.bullet.deepest, " m");
+        row(name, rounds[0].at(count).marchbox.deepest, rounds[0].at(count).bullet.deepest, " m");
     }
-    const PileTimes &small = times[1000], &large = times[4000];
     // Bullet's defaults step on one thread; Marchbox is given with its worker thread and without.
+    const auto ratio = [&](auto f) {
+        return overRounds(rounds, [&](auto& r) { return f(r.at(1000), r.at(4000)); });
+    };
     std::printf(
         "\nPile of 1000, r = %.1f, Marchbox against Bullet: **%.2fx** its time per step on 2 "
-        "threads, %.2fx on "
-        "one (target <= 0.25x). From 1000 to 4000 spheres: Marchbox **%.2fx** on 2 threads, %.2fx "
-        "on one "
-        "(target <= 5x), Bullet %.2fx.\n",
-        double(radius), small.twoThreads / small.bullet.msPerStep,
-        small.marchbox.msPerStep / small.bullet.msPerStep, large.twoThreads / small.twoThreads,
-        large.marchbox.msPerStep / small.marchbox.msPerStep,
-        large.bullet.msPerStep / small.bullet.msPerStep);
+        "threads, %.2fx on one (target <= 0.25x). From 1000 to 4000 spheres: Marchbox **%.2fx** "
+        "on 2 threads, %.2fx on one (target <= 5x), Bullet %.2fx. Each a median of the %d "
+        "rounds' ratios.\n",
+        double(radius), ratio([](auto& s, auto&) { return s.twoThreads / s.bullet.msPerStep; }),
+        ratio([](auto& s, auto&) { return s.marchbox.msPerStep / s.bullet.msPerStep; }),
+        ratio([](auto& s, auto& l) { return l.twoThreads / s.twoThreads; }),
+        ratio([](auto& s, auto& l) { return l.marchbox.msPerStep / s.marchbox.msPerStep; }),
+        ratio([](auto& s, auto& l) { return l.bullet.msPerStep / s.bullet.msPerStep; }), kRounds);
 }
 
 // The walled pile of boxes, capsules, cylinders and spheres of about 0.2 m, first 1.5 s at
