@@ -135,8 +135,11 @@ void drawTimelineBar(UiContext& c) {
         ImGui::SameLine(180.0f);
         const FrameCache& cache = e.simulation().cache();
         char baked[64];
-        std::snprintf(baked, sizeof baked, "baked %.2f s, %.1f MB", cache.end(),
-                      double(cache.bytes()) / 1e6);
+        const double megabytes = double(cache.bytes()) / 1e6;  // kB below one: never "0.0 MB"
+        if (megabytes < 1.0)
+            std::snprintf(baked, sizeof baked, "baked %.2f s, %.0f kB", cache.end(),
+                          megabytes * 1e3);
+        else std::snprintf(baked, sizeof baked, "baked %.2f s, %.1f MB", cache.end(), megabytes);
         const float after = ImGui::CalcTextSize(baked).x + ImGui::GetFrameHeight() +
                             ImGui::CalcTextSize("Loop").x + 4.0f * style.ItemSpacing.x;
         strip(c, std::max(ImGui::GetContentRegionAvail().x - after, 40.0f));

@@ -1495,6 +1495,7 @@ CASES = {name[5:]: fn for name, fn in globals().items() if name.startswith('case
 def main():
     global MARCHBOX, WINDOW
     name, MARCHBOX, source, workdir = sys.argv[1:5]
+    workdir = os.path.abspath(workdir)  # the editor runs in it: a relative scene path would miss
     if os.path.dirname(MARCHBOX):
         MARCHBOX = os.path.abspath(MARCHBOX)  # a relative path: the editor runs in workdir
     here = os.path.dirname(os.path.abspath(__file__))
