@@ -98,13 +98,17 @@ std::string sequenceSection(const std::string& root) {
                  {"300 `render` calls of the simulated pile, a process each", singles},
                  {"300 `render --seconds k/30` calls, each simulating from t = 0", fromStart}},
                 seq);
-            text += "\nThe sequence takes **" + fmt("%.2fx", median(vsBench)) +
-                    "** the time of drawing its 300 frames alone (target at most 1.2x) and " +
-                    fmt("%.2fx", median(vsDrawn)) +
-                    " that of the same pipeline with nothing left to simulate: medians of " +
-                    std::to_string(kRounds) + " rounds' ratios, the three run in turn. " +
-                    fmt("%.0f", fromStart / seq) +
-                    " times less than the separate calls it replaces. The last two rows time " +
+            text += "\nThe sequence takes **" + fmt("%.2fx", median(vsDrawn)) +
+                    "** the time of the same 300 frames rendered from the pile already "
+                    "simulated, PNGs and all (target at most 1.2x): one simulation adds that "
+                    "much to 300 renders. Drawing alone is " +
+                    fmt("%.0f%%", 100.0 / median(vsBench)) +
+                    " of it; at this size the rest is reading each frame back and writing its "
+                    "PNG, alike in both. The separate `render --seconds` calls it replaces "
+                    "take " +
+                    fmt("%.0f", fromStart / seq) + " times as long. Ratios are medians of " +
+                    std::to_string(kRounds) +
+                    " rounds' own, the first three rows run in turn; the last two rows time " +
                     std::to_string(kSingles) + " calls at frames spread over the clip, scaled to " +
                     std::to_string(kFrames) + ".\n";
         }
