@@ -440,12 +440,13 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
         for (const StaticHit& surface : near) {
             const std::vector<dvec3> support =
                 rimSupport(c, axis, b.rims[r].radius, surface.normal);
+            const bool flat = rimLiesFlat(axis, surface.normal);
             for (size_t k = 0; k < support.size(); ++k) {
                 statics_.query(id + 1, support[k], 0.0, reach, hits_, b.bound);
                 for (const StaticHit& hit : hits_)
                     if (hit.feature == surface.feature)
                         add(hit, support[k], 0.0, int(b.probes.size() + 4 * r + k),
-                            k == 0 && support.size() == 1 ? c : support[k]);
+                            k == 0 && !flat ? c : support[k]);
             }
         }
     }

@@ -67,12 +67,20 @@ std::vector<dvec3> rimSupport(const dvec3& centre, const dvec3& axis, double rad
                               const dvec3& normal) {
     const dvec3 across = -normal + glm::dot(normal, axis) * axis;  // −normal, in the rim's plane
     const double len = glm::length(across);
-    if (len > kFlat) return {centre + (radius / len) * across};
+    if (len > kFlat) {  // the lowest point first, then the rest of its quarter turns
+        const dvec3 down = across / len, side = glm::cross(axis, down);
+        return {centre + radius * down, centre + radius * side, centre - radius * side,
+                centre - radius * down};
+    }
     // Flat: four points a quarter turn apart, from any direction across the axis.
     const dvec3 u =
         glm::normalize(glm::cross(axis, std::abs(axis.x) < 0.57 ? dvec3(1, 0, 0) : dvec3(0, 1, 0)));
     const dvec3 v = glm::cross(axis, u);
     return {centre + radius * u, centre + radius * v, centre - radius * u, centre - radius * v};
+}
+
+bool rimLiesFlat(const dvec3& axis, const dvec3& normal) {
+    return glm::length(-normal + glm::dot(normal, axis) * axis) <= kFlat;
 }
 
 }  // namespace mb

@@ -31,11 +31,16 @@ struct Rim {
 };
 std::vector<Rim> rimsOf(const Object& o);
 
-// The point of the rim (world centre, world unit axis) furthest along −normal: where the rim
-// first meets a surface facing `normal`. Where the rim lies flat on it (within kFlat of
-// parallel: 0.6°), four points a quarter turn apart, so a standing cylinder rests on a square.
+// Four points of the rim (world centre, world unit axis) a quarter turn apart. The first is the
+// one furthest along −normal, where the rim first meets a surface facing `normal`; the others
+// meet it too when the rim is tilted less than the contact's reach, so that a disc landing
+// nearly flat stands on them rather than rocking from one lowest point to the next (at 1/30 s
+// a pile pressed one 10 cm into the ground that way). Where the rim lies flat on the surface
+// (rimLiesFlat: within kFlat of parallel, 0.6°) the four come from any direction across the
+// axis, so a standing cylinder rests on a square.
 constexpr double kFlat = 0.01;
 std::vector<glm::dvec3> rimSupport(const glm::dvec3& centre, const glm::dvec3& axis, double radius,
                                    const glm::dvec3& normal);
+bool rimLiesFlat(const glm::dvec3& axis, const glm::dvec3& normal);
 
 }  // namespace mb
