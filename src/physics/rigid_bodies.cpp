@@ -105,12 +105,13 @@ void applyNormal(NormalRow& r, double impulse) {
     }
 }
 
+RowBodies bodiesOf(const RigidContact& c) {
+    return {c.a.vel, c.a.spin, c.b.vel, c.b.spin, c.a.invMass, c.b.invMass};
+}
+
 NormalRow rowOf(const RigidContact& c, double slop) {
     NormalRow r;
-    r.velA = c.a.vel;
-    r.spinA = c.a.spin;
-    r.velB = c.b.vel;
-    r.spinB = c.b.spin;
+    static_cast<RowBodies&>(r) = bodiesOf(c);
     r.supportedA = c.a.supported;
     r.supportedB = c.b.supported;
     r.normal = c.normal;
@@ -118,8 +119,6 @@ NormalRow rowOf(const RigidContact& c, double slop) {
     r.armB = glm::cross(c.b.anchor, c.normal);
     r.turnA = c.a.invInertia * r.armA;
     r.turnB = c.b.invInertia * r.armB;
-    r.invMassA = c.a.invMass;
-    r.invMassB = c.b.invMass;
     // 1 / K along the normal, from the arms and turns just made (rowMass's sum, in its order).
     double k = r.invMassA + r.invMassB;
     if (r.invMassA > 0.0) k += glm::dot(r.armA, r.turnA);
@@ -598,7 +597,7 @@ void RigidBodies::prepare(RigidContact& c) {
     if (const WarmImpulses* warm = kept_.find(c.key)) c.normalImpulse = warm->normal;
 }
 
-// The manifold's friction contact: its first point's, moved to the points' centre.
+// The manifold's friction contact: its first point's, moved to the points' centre; and its rows.
 void RigidBodies::prepareFriction(Manifold& m) {
     RigidContact& f = m.friction;
     f = contacts_[size_t(m.begin)];
@@ -611,40 +610,27 @@ void RigidBodies::prepareFriction(Manifold& m) {
     }
     f.a.anchor = a / double(count);
     f.b.anchor = b / double(count);
-    f.twistArm = 0.0;
+    tangentsOf(f);
+    f.rolling = rolling_;
+    f.rollArm = glm::length(f.b.anchor);
+    FrictionRows& r = m.rows;
+    static_cast<RowBodies&>(r) = bodiesOf(f);
+    r.normal = f.normal;
+    r.friction = f.friction;
+    r.twistArm = 0.0;
     for (int i = m.begin; i < m.end; ++i)
-        f.twistArm += glm::length(contacts_[size_t(i)].b.anchor - f.b.anchor) / count;
+        r.twistArm += glm::length(contacts_[size_t(i)].b.anchor - f.b.anchor) / count;
     double k = 0.0;
     for (const ContactSide* s : {&f.a, &f.b})
         if (s->invMass > 0.0) k += glm::dot(f.normal, s->invInertia * f.normal);
-    f.twistMass = k > 0.0 ? 1.0 / k : 0.0;
-    tangentsOf(f);
-    f.tangentMass[0] = rowMass(f, f.tangent[0]);
-    f.tangentMass[1] = rowMass(f, f.tangent[1]);
-    f.rolling = rolling_;
-    f.rollArm = glm::length(f.b.anchor);
-    if (const WarmImpulses* warm = kept_.find(f.key)) {
-        f.tangentImpulse[0] = warm->tangent[0];
-        f.tangentImpulse[1] = warm->tangent[1];
-        f.rollImpulse = warm->roll;
-        f.twistImpulse = warm->twist;
-    }
-    FrictionRows& r = m.rows;
-    r.velA = f.a.vel;
-    r.spinA = f.a.spin;
-    r.velB = f.b.vel;
-    r.spinB = f.b.spin;
-    r.invMassA = f.a.invMass;
-    r.invMassB = f.b.invMass;
-    r.normal = f.normal;
-    r.friction = f.friction;
-    r.twistMass = f.twistMass;
-    r.twistArm = f.twistArm;
-    r.twistImpulse = f.twistImpulse;
+    r.twistMass = k > 0.0 ? 1.0 / k : 0.0;
+    const WarmImpulses* warm = kept_.find(f.key);
+    if (warm) f.rollImpulse = warm->roll;
+    r.twistImpulse = warm ? warm->twist : 0.0;
     for (int k = 0; k < 2; ++k) {
         r.tangent[k] = f.tangent[k];
-        r.tangentMass[k] = f.tangentMass[k];
-        r.tangentImpulse[k] = f.tangentImpulse[k];
+        r.tangentMass[k] = rowMass(f, f.tangent[k]);
+        r.tangentImpulse[k] = warm ? warm->tangent[k] : 0.0;
         r.armA[k] = glm::cross(f.a.anchor, f.tangent[k]);
         r.armB[k] = glm::cross(f.b.anchor, f.tangent[k]);
         r.turnA[k] = f.a.invInertia * r.armA[k];
@@ -811,15 +797,14 @@ void RigidBodies::integratePositions(double h, double gravity) {
 
 void RigidBodies::finishStep() {
     kept_.clear(contacts_.size() + manifolds_.size());
-    for (size_t i = 0; i < contacts_.size(); ++i) {
-        const RigidContact& c = contacts_[i];
-        kept_.put(c.key, {rows_[i].impulse, {c.tangentImpulse[0], c.tangentImpulse[1]},
-                          c.twistImpulse, c.rollImpulse});
-    }
+    for (size_t i = 0; i < contacts_.size(); ++i)  // a point: its push; friction is the manifold's
+        kept_.put(contacts_[i].key, {rows_[i].impulse, {0.0, 0.0}, 0.0, dvec3(0.0)});
     for (const Manifold& m : manifolds_) {
         const FrictionRows& r = m.rows;
-        kept_.put(m.friction.key, {0.0, {r.tangentImpulse[0], r.tangentImpulse[1]},
-                                   r.twistImpulse, m.friction.rollImpulse});
+        kept_.put(m.friction.key, {0.0,
+                                   {r.tangentImpulse[0], r.tangentImpulse[1]},
+                                   r.twistImpulse,
+                                   m.friction.rollImpulse});
     }
     for (RigidBody& b : bodies_) b.delta = dvec3(0.0);
     updateSleep();

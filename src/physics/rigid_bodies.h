@@ -80,24 +80,26 @@ struct RigidContact {
     double separation = 0.0;  // at the step's start; < 0 overlaps
     double height = 0.0;      // of its manifold's lowest point: solved bottom-up
     double friction = 0.0, restitution = 0.0, rolling = 0.0, rollArm = 0.0;
-    double tangentMass[2] = {0.0, 0.0};     // a manifold's friction only, as the twist
-    double normalImpulse = 0.0;             // last step's, to start the row from
-    double tangentImpulse[2] = {0.0, 0.0};  // a manifold's friction only, as the twist
-    glm::dvec3 rollImpulse{0.0};            // a manifold's friction only, as the twist
-    double twistImpulse = 0.0, twistMass = 0.0, twistArm = 0.0;  // a manifold's friction only
+    double normalImpulse = 0.0;     // last step's, to start the row from
+    glm::dvec3 rollImpulse{0.0};    // a manifold's friction only (its FrictionRows: the rest)
     double relativeVelocity = 0.0;  // normal, at the step's start, for restitution
+};
+
+// What a row's impulses move on each side: the velocity and spin, and the inverse mass (0 for
+// a static or sleeping side, whose pointers may be null).
+struct RowBodies {
+    glm::dvec3 *velA = nullptr, *spinA = nullptr, *velB = nullptr, *spinB = nullptr;
+    double invMassA = 0.0, invMassB = 0.0;
 };
 
 // A contact's normal row as the sweeps read and write it: what they touch and nothing else, a
 // third of a RigidContact, so that a pile's rows stay in cache through the substeps.
-struct NormalRow {
-    glm::dvec3 *velA = nullptr, *spinA = nullptr, *velB = nullptr, *spinB = nullptr;
+struct NormalRow : RowBodies {
     bool *supportedA = nullptr, *supportedB = nullptr;
     glm::dvec3 normal{0.0};
     glm::dvec3 armA{0.0}, armB{0.0};    // anchor × normal, each side
     glm::dvec3 turnA{0.0}, turnB{0.0};  // I⁻¹·arm: the spin a unit impulse gives
-    double invMassA = 0.0, invMassB = 0.0;
-    double mass = 0.0;  // 1 / K along the normal
+    double mass = 0.0;                  // 1 / K along the normal
     double impulse = 0.0, maxImpulse = 0.0;
     double separation = 0.0;  // at this substep, for its sweeps
     double slop = 0.0;
@@ -114,16 +116,12 @@ struct ContactGap {
 // A manifold's friction rows at its centre: all that a sweep reads and writes, with the crosses
 // and I⁻¹ products done once a step (each tangent's arm, anchor × tangent, and turn, I⁻¹·arm,
 // per side, and the twist's I⁻¹·n). Half the bytes of the RigidContact it is made from.
-struct FrictionRows {
-    glm::dvec3 *velA = nullptr, *spinA = nullptr, *velB = nullptr, *spinB = nullptr;
-    double invMassA = 0.0, invMassB = 0.0;
+struct FrictionRows : RowBodies {
     glm::dvec3 normal{0.0}, tangent[2];
     glm::dvec3 armA[2], armB[2], turnA[2], turnB[2];
     glm::dvec3 twistA{0.0}, twistB{0.0};
     double friction = 0.0, tangentMass[2] = {0.0, 0.0}, twistMass = 0.0, twistArm = 0.0;
-    // The manifold's impulses from the step's warm start on (its friction contact keeps the
-    // roll's alone).
-    double tangentImpulse[2] = {0.0, 0.0}, twistImpulse = 0.0;
+    double tangentImpulse[2] = {0.0, 0.0}, twistImpulse = 0.0;  // from last step's, on
 };
 
 class RigidBodies {
