@@ -33,7 +33,7 @@ void Simulation::sceneChanged(Document& doc) {
     // An edit at t (or an undo to a time the cache lost) shows a frame of the run: the first
     // of what follows.
     if (doc.time() > cache_.end()) cache_.record(doc.run(), doc.time(), doc.scene());
-    dropWorldUnlessAtBakeEnd();
+    if (!worldAtBakeEnd()) world_.reset();
     if (playing_) runStart_ = doc.scene();
     head_ = doc.time();
 }
@@ -59,11 +59,11 @@ int Simulation::advance(Document& doc, double frameSeconds) {
     // Frame times are sums of steps: one a rounding error past the head is still at it.
     const double baked = cache_.end();
     if (head_ <= baked + 1e-9) {
-        show(doc, cache_.at(head_ + 1e-9));
+        doc.show(cache_.at(head_ + 1e-9));
         return steps;
     }
     if (worldAtBakeEnd() && doc.time() < baked) {  // on from the last baked frame's world
-        show(doc, cache_.at(baked + 1e-9));
+        doc.show(cache_.last());
         simulate(doc, int(std::llround((head_ - baked) / settings_.dt)));
     } else {
         simulate(doc, steps);  // from the frame shown: a world built from its floats
@@ -72,8 +72,6 @@ int Simulation::advance(Document& doc, double frameSeconds) {
     return steps;
 }
 
-void Simulation::show(Document& doc, const BakedFrame* frame) { doc.show(frame); }
-
 void Simulation::simulate(Document& doc, int steps) {
     // The world goes on where it is the scene shown: at the last baked frame it made.
     if (!worldAtBakeEnd() || std::abs(doc.time() - worldTime_) > 1e-9) world_.reset();
@@ -81,18 +79,15 @@ void Simulation::simulate(Document& doc, int steps) {
     for (int i = 0; i < steps; ++i) world_->step();
     world_->writeBack(doc.moving(steps * settings_.dt));
     cache_.record(doc.run(), doc.time(), doc.scene());
-    const BakedFrame* last = cache_.at(cache_.end() + 1e-9);
-    worldTime_ = last ? last->t : 0;
-    worldPiece_ = last ? last->piece : nullptr;
+    if (const BakedFrame* last = cache_.last()) {  // the frame just made
+        worldTime_ = last->t;
+        worldPiece_ = last->piece;
+    }
 }
 
 bool Simulation::worldAtBakeEnd() const {
-    const BakedFrame* last = cache_.at(cache_.end() + 1e-9);
+    const BakedFrame* last = cache_.last();
     return world_ && last && last->t == worldTime_ && last->piece == worldPiece_;
-}
-
-void Simulation::dropWorldUnlessAtBakeEnd() {
-    if (!worldAtBakeEnd()) world_.reset();
 }
 
 }  // namespace mb

@@ -56,6 +56,7 @@ public:
 
     // The last frame at or before t; null where none is (t = 0 is the start itself).
     const BakedFrame* at(double t) const;
+    const BakedFrame* last() const { return frames_.empty() ? nullptr : &frames_.back(); }
     double end() const;  // the last frame's t, or 0
     bool empty() const { return frames_.empty(); }
     size_t frames() const { return frames_.size(); }

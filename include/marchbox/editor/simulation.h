@@ -44,10 +44,8 @@ public:
     const FrameCache& cache() const { return cache_; }  // each frame of the runs so far
 
 private:
-    void show(Document& doc, const BakedFrame* frame);  // a baked frame played back
     void simulate(Document& doc, int steps);  // on from the scene shown, baking each frame
     bool worldAtBakeEnd() const;
-    void dropWorldUnlessAtBakeEnd();
 
     PhysicsSettings settings_;
     // The world as it simulated the last baked frame, to go on from: a run played on after a
