@@ -6,7 +6,8 @@
 #include "processes.h"
 #include "report_template.h"
 
-#include <algorithm>
+#include "marchbox/report/median.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -21,11 +22,6 @@ constexpr int kFrames = 300;             // 10 s at 30 fps
 constexpr int kRounds = 3;               // of the sequence and its two comparisons, in turn
 constexpr int kSingles = 10;             // separate calls timed, spread over the clip, then scaled
 constexpr const char* kSize = "160x90";  // small frames: the simulation's share at its largest
-
-double median(std::vector<double> v) {
-    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
-    return v[v.size() / 2];
-}
 
 struct Row {
     std::string what;

@@ -5,6 +5,7 @@
 // iteration). Overlap is measured the same way for both (mb::deepestOverlap).
 #include "marchbox/physics/physics.h"
 #include "marchbox/physics/overlap.h"
+#include "marchbox/report/median.h"
 #include "marchbox/report/physics_scenes.h"
 #include "marchbox/scene/sdf.h"
 
@@ -23,6 +24,7 @@
 
 namespace {
 
+using mb::median;
 using mb::Scene;
 constexpr double kDt = 1.0 / 120;
 constexpr double kG = double(9.81f);
@@ -266,11 +268,6 @@ double timeSteps(const Scene& scene, double seconds, const Settings&... settings
 
 void row(const char* name, double marchbox, double bullet, const char* unit) {
     std::printf("| %s | %.3g%s | %.3g%s |\n", name, marchbox, unit, bullet, unit);
-}
-
-double median(std::vector<double> v) {
-    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
-    return v[v.size() / 2];
 }
 
 // Each engine's pile once, in turn: Marchbox, Bullet, Marchbox on 2 threads. The overlap is the
