@@ -8,11 +8,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <imgui.h>
 
 namespace mb {
 
 static constexpr float kStripHeight = 24.0f;  // px
+static constexpr float kStripLeft = 180.0f;   // px: Play and the time before it (e2e reads it)
 static constexpr float kKeyReach = 6.0f;  // px either side of a key's marker that take its click
 
 // A click on a key's marker goes to the key, and dragging it on moves the key; any other
@@ -91,6 +93,34 @@ static void strip(UiContext& c, float width) {
     drawStrip(strip, at.y, e);
 }
 
+// How far the bake goes and its size: kB below a megabyte, never "0.0 MB".
+static std::string bakeLabel(const FrameCache& cache) {
+    const double megabytes = double(cache.bytes()) / 1e6;
+    char text[64];
+    if (megabytes < 1.0)
+        std::snprintf(text, sizeof text, "baked %.2f s, %.0f kB", cache.end(), megabytes * 1e3);
+    else std::snprintf(text, sizeof text, "baked %.2f s, %.1f MB", cache.end(), megabytes);
+    return text;
+}
+
+static void bakeTooltip(const FrameCache& cache) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "%zu frames, each every dynamic body's state. Past %zu MB every other frame "
+                  "goes, and frames are kept half as often.",
+                  cache.frames(), FrameCache::kDefaultBudget >> 20);
+    itemTooltip("Timeline/baked", text);
+}
+
+static void loopBox(Editor& e) {
+    bool loop = e.simulation().loop();
+    if (ImGui::Checkbox("Loop", &loop)) e.setLoop(loop);
+    markItem("Timeline/Loop");
+    itemTooltip("Timeline/Loop",
+                "Play goes back to t = 0 at the last camera key, or without "
+                "keys at the end of the baked frames.");
+}
+
 // In a window smaller than this the timeline gives way, as the statistics overlay does: the
 // docked panels need the height, and the strip would be a few pixels wide.
 static constexpr float kTimelineMinWidth = 560.0f, kTimelineMinHeight = 360.0f;  // px
@@ -132,32 +162,16 @@ void drawTimelineBar(UiContext& c) {
         ImGui::SameLine();
         ImGui::AlignTextToFramePadding();
         ImGui::Text("%s", timeLabel(e.document().time()).c_str());
-        ImGui::SameLine(180.0f);
-        const FrameCache& cache = e.simulation().cache();
-        char baked[64];
-        const double megabytes = double(cache.bytes()) / 1e6;  // kB below one: never "0.0 MB"
-        if (megabytes < 1.0)
-            std::snprintf(baked, sizeof baked, "baked %.2f s, %.0f kB", cache.end(),
-                          megabytes * 1e3);
-        else std::snprintf(baked, sizeof baked, "baked %.2f s, %.1f MB", cache.end(), megabytes);
-        const float after = ImGui::CalcTextSize(baked).x + ImGui::GetFrameHeight() +
+        ImGui::SameLine(kStripLeft);
+        const std::string baked = bakeLabel(e.simulation().cache());
+        const float after = ImGui::CalcTextSize(baked.c_str()).x + ImGui::GetFrameHeight() +
                             ImGui::CalcTextSize("Loop").x + 4.0f * style.ItemSpacing.x;
         strip(c, std::max(ImGui::GetContentRegionAvail().x - after, 40.0f));
         ImGui::SameLine();
-        ImGui::TextUnformatted(baked);
-        char frames[160];
-        std::snprintf(frames, sizeof frames,
-                      "%zu frames, each every dynamic body's state. Past 512 MB every other "
-                      "frame goes, and frames are kept half as often.",
-                      cache.frames());
-        itemTooltip("Timeline/baked", frames);
+        ImGui::TextUnformatted(baked.c_str());
+        bakeTooltip(e.simulation().cache());
         ImGui::SameLine();
-        bool loop = e.simulation().loop();
-        if (ImGui::Checkbox("Loop", &loop)) e.setLoop(loop);
-        markItem("Timeline/Loop");
-        itemTooltip("Timeline/Loop",
-                    "Play goes back to t = 0 at the last camera key, or without "
-                    "keys at the end of the baked frames.");
+        loopBox(e);
         ImGui::PopStyleVar();
     }
     ImGui::End();

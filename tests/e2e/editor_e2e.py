@@ -1415,7 +1415,7 @@ def case_guide(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
-TIMELINE_LEFT = 180  # px: where the timeline's strip starts (timeline_strip.cpp's SameLine)
+TIMELINE_LEFT = 180  # px: where the timeline's strip starts (kStripLeft in timeline_strip.cpp)
 
 
 def scrub_to(app, fraction):
