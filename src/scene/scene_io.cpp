@@ -35,6 +35,12 @@ std::string formatValue(const glm::quat& q) {
     return formatFloat(q.w) + ',' + formatFloat(q.x) + ',' + formatFloat(q.y) + ',' +
            formatFloat(q.z);
 }
+std::string formatValue(const glm::ivec3& v) {
+    return std::to_string(v.x) + ',' + std::to_string(v.y) + ',' + std::to_string(v.z);
+}
+std::string formatValue(const glm::bvec3& v) {
+    return std::string(v.x ? "x" : "") + (v.y ? "y" : "") + (v.z ? "z" : "");
+}
 template <class T>
 std::string formatValue(const std::optional<T>& v) {
     return formatValue(*v);
@@ -49,10 +55,14 @@ void writeComment(std::string& out, std::string_view text) {
     }
 }
 
+// `in`: the name of the group that holds the record, if any (not in the key tables: the record
+// holds the group's index).
 template <class R>
-void writeRecord(std::string& out, const R& rec, std::string_view comment = {}) {
+void writeRecord(std::string& out, const R& rec, std::string_view comment = {},
+                 std::string_view in = {}) {
     writeComment(out, comment);
     out += Schema<R>::kind;
+    if (!in.empty()) out += " in:" + std::string(in);
     forEachKey<R>([&](const char* name, auto field, Rule, Need<R> need) {
         if (need.pick && rec.*need.pick != need.when) return;  // the other spelling is written
         if (need.written && !need.written(rec)) return;        // absent: the default applies
@@ -81,6 +91,17 @@ bool sameList(const std::vector<R>& a, const std::vector<R>& b) {
     });
 }
 
+// Which group holds each object and group, and where each group stands.
+bool sameTree(const Scene& a, const Scene& b) {
+    auto objectGroups = [](const Scene& s) {
+        std::vector<int> v;
+        for (const Object& o : s.objects) v.push_back(o.group);
+        for (const Group& g : s.groups) v.insert(v.end(), {g.parent, g.first});
+        return v;
+    };
+    return objectGroups(a) == objectGroups(b);
+}
+
 }  // namespace
 
 std::string formatScene(const Scene& scene) {
@@ -101,9 +122,18 @@ std::string formatScene(const Scene& scene) {
         writeRecord(out, m, m.comment);
     }
     for (const Light& l : scene.lights) writeRecord(out, l, l.comment);
-    for (Object o : scene.objects) {
+    auto parentName = [&](int g) { return g < 0 ? std::string() : scene.groups[size_t(g)].name; };
+    size_t g = 0;  // groups stand before objects[first], in tree order
+    for (size_t i = 0; i <= scene.objects.size(); ++i) {
+        for (; g < scene.groups.size() && scene.groups[g].first <= int(i); ++g) {
+            Group group = scene.groups[g];
+            if (group.dynamic() && !group.orient) group.orient = group.orientation();
+            writeRecord(out, group, group.comment, parentName(group.parent));
+        }
+        if (i == scene.objects.size()) break;
+        Object o = scene.objects[i];
         if (o.dynamic() && !o.orient) o.orient = o.orientation();  // a body's turn, exactly
-        writeRecord(out, o, o.comment);
+        writeRecord(out, o, o.comment, parentName(o.group));
     }
     writeComment(out, c.end);
     return out;
@@ -115,6 +145,7 @@ bool operator==(const Scene& a, const Scene& b) {
     return sameRecord(a.camera, b.camera) && sameRecord(a.world, b.world) &&
            sameRecord(a.render, b.render) && sameList(a.materials, b.materials) &&
            sameList(a.lights, b.lights) && sameList(a.objects, b.objects) &&
+           sameList(a.groups, b.groups) && sameTree(a, b) &&
            sameList(a.keyframes, b.keyframes) && a.comments == b.comments;
 }
 

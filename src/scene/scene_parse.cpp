@@ -142,13 +142,39 @@ Expect readValue(std::string_view s, std::optional<T>& v) {
     return nullptr;
 }
 
+// "a, b, ... or c", from the names of the type table.
+std::string typeChoices() {
+    std::string s;
+    for (int n = 0; n < kShapeTypeCount; ++n) s += std::string(shapeTypeName(ShapeType(n))) + ", ";
+    return s.substr(0, s.size() - 2) + " or 0 to " + std::to_string(kShapeTypeCount - 1);
+}
+
 Expect readValue(std::string_view s, ShapeType& v) {
+    static const std::string choices = typeChoices();
     int n = 0;
     while (n < kShapeTypeCount && s != shapeTypeName(ShapeType(n))) ++n;
     bool named = n < kShapeTypeCount;
-    if (!named && (readValue(s, n) || n < 0 || n >= kShapeTypeCount))
-        return "sphere, box, torus, capsule, cylinder or 0 to 4";
+    if (!named && (readValue(s, n) || n < 0 || n >= kShapeTypeCount)) return choices.c_str();
     v = ShapeType(n);
+    return nullptr;
+}
+
+// Mirror planes: any of x, y, z, each at most once.
+Expect readValue(std::string_view s, glm::bvec3& v) {
+    v = glm::bvec3(false);
+    for (char c : s) {
+        int axis = c == 'x' ? 0 : c == 'y' ? 1 : c == 'z' ? 2 : -1;
+        if (axis < 0 || v[axis]) return "letters x, y, z, each at most once";
+        v[axis] = true;
+    }
+    return s.empty() ? "letters x, y, z, each at most once" : nullptr;
+}
+
+Expect readValue(std::string_view s, glm::ivec3& v) {
+    std::cmatch m;
+    if (!matches(s, syntax().vector, &m)) return "three whole numbers x,y,z";
+    for (int i = 0; i < 3; ++i)
+        if (readValue(view(m[i + 1]), v[i])) return "three whole numbers x,y,z";
     return nullptr;
 }
 
@@ -166,6 +192,7 @@ bool obeys(int v, const Rule& r) { return obeys(double(v), r); }
 bool obeys(const glm::vec3& v, const Rule& r) {
     return obeys(v.x, r) && obeys(v.y, r) && obeys(v.z, r) && !(r.nonZero && v == glm::vec3(0));
 }
+bool obeys(const glm::ivec3& v, const Rule& r) { return obeys(glm::vec3(v), r); }
 template <class T>
 bool obeys(const T&, const Rule&) {
     return true;
@@ -220,6 +247,9 @@ private:
     void record(std::string_view kind, Fields& fields, std::string comment);
     void header(Fields& fields);
     void object(Fields& fields, std::string comment);
+    void group(Fields& fields, std::string comment);
+    int parentOf(Fields& fields, const char* kind);
+    void checkShape(const Object& o);
     void keyframe(Fields& fields, std::string comment);
     template <class R>
     void single(Fields& fields, R& rec);
@@ -232,6 +262,7 @@ private:
     const Field* take(Fields& fields, const char* key);
     void finish();
     void finishKeyframes();
+    void finishTree();
     void error(std::string message) { errorAt(line_, std::move(message)); }
     void errorAt(int line, std::string message);
 
@@ -241,6 +272,9 @@ private:
     std::map<std::string_view, int> counts_;  // records of each kind, for the limits
     std::vector<int> objectLines_;            // where each object is, for its material error
     std::vector<int> keyframeLines_;          // where each keyframe is, for a repeated t
+    std::map<std::string, int> groupNames_;   // each group's index, by name
+    // Objects and groups in file order: (true, group index) or (false, object index).
+    std::vector<std::pair<bool, int>> tree_;
     std::string comment_;                     // comment and blank lines since the last record
     bool stopped_ = false;
 };
@@ -326,6 +360,8 @@ void Parser::record(std::string_view kind, Fields& fields, std::string comment) 
         object(fields, std::move(comment));
     } else if (is<Keyframe>(kind)) {
         keyframe(fields, std::move(comment));
+    } else if (is<Group>(kind)) {
+        group(fields, std::move(comment));
     } else {
         error("unknown record kind " + quote(kind));
     }
@@ -338,14 +374,88 @@ void Parser::header(Fields& fields) {
     version_ = h.version;
 }
 
+bool has(const Fields& fields, std::string_view key) {
+    return std::any_of(fields.begin(), fields.end(), [&](const Field& f) { return f.key == key; });
+}
+
+// The group that `in` names, -1 for none; a member may not hold a motion key.
+int Parser::parentOf(Fields& fields, const char* kind) {
+    if (has(fields, "rot") && has(fields, "orient"))
+        error(std::string("a ") + kind + " holds 'rot' or 'orient', not both");
+    const Field* in = take(fields, "in");
+    if (!in) return -1;
+    if (version_ < 3) return error("'in' needs scene version:3"), -1;
+    auto found = groupNames_.find(std::string(in->value));
+    if (found == groupNames_.end())
+        return error("'in' names no group defined above: " + quote(in->value)), -1;
+    for (const char* key : {"mass", "vel", "spin", "static", "friction", "restitution"})
+        if (has(fields, key))
+            error(quote(key) + " on a member: it moves with its group, whose top level has it");
+    return found->second;
+}
+
 void Parser::object(Fields& fields, std::string comment) {
-    const bool rot =
-        std::any_of(fields.begin(), fields.end(), [](const Field& f) { return f.key == "rot"; });
-    const bool orient =
-        std::any_of(fields.begin(), fields.end(), [](const Field& f) { return f.key == "orient"; });
-    if (rot && orient) error("an object holds 'rot' or 'orient', not both");
-    if (append(fields, scene.objects, kMaxObjects, std::move(comment)))
-        objectLines_.push_back(line_);
+    const int parent = parentOf(fields, "object");
+    if (!append(fields, scene.objects, kMaxObjects, std::move(comment))) return;
+    objectLines_.push_back(line_);
+    Object& o = scene.objects.back();
+    o.group = parent;
+    if (o.type >= ShapeType::Cone && version_ < 3)
+        error(quote(shapeTypeName(o.type)) + " needs scene version:3");
+    checkShape(o);
+    tree_.push_back({false, int(scene.objects.size()) - 1});
+}
+
+// Half the shape's smallest extent: what a rounding or a wall must stay under.
+float halfThinnest(const Object& o) {
+    switch (o.type) {
+        case ShapeType::Sphere:
+        case ShapeType::Capsule:
+            return o.radius;
+        case ShapeType::Box:
+        case ShapeType::Ellipsoid:
+            return std::min(o.size.x, std::min(o.size.y, o.size.z));
+        case ShapeType::Torus:
+            return o.minor;
+        case ShapeType::Cylinder:
+        case ShapeType::Cone:
+            return std::min(o.radius, 0.5f * o.height);
+    }
+    return 0.0f;
+}
+
+void Parser::checkShape(const Object& o) {
+    const bool edged = o.type == ShapeType::Box || o.type == ShapeType::Cylinder ||
+                       o.type == ShapeType::Cone;
+    if (o.round > 0.0f && !edged)
+        error("'round' is for a box, cylinder or cone, not a " +
+              std::string(shapeTypeName(o.type)));
+    else if (o.round > 0.0f && o.round >= halfThinnest(o))
+        error("'round' must be less than " + formatFloat(halfThinnest(o)) +
+              ", half the shape's smallest extent");
+    if (o.shell > 0.0f && o.shell >= halfThinnest(o))
+        error("'shell' must be less than " + formatFloat(halfThinnest(o)) +
+              ", half the shape's smallest extent");
+    if (o.type == ShapeType::Cone && o.top >= o.radius)
+        error("'top' must be less than 'radius' (" + formatFloat(o.radius) + ")");
+}
+
+void Parser::group(Fields& fields, std::string comment) {
+    if (version_ < 3) return error("a 'group' record needs scene version:3");
+    const int parent = parentOf(fields, "group");
+    if (parent >= 0 && groupDepth(scene, parent) >= kMaxGroupDepth)
+        error("groups nested more than " + std::to_string(kMaxGroupDepth) + " deep");
+    if (!append(fields, scene.groups, kMaxGroups, std::move(comment))) return;
+    Group& g = scene.groups.back();
+    g.parent = parent;
+    const int copies = g.repeat.x * g.repeat.y * g.repeat.z;
+    if (copies > kMaxRepeatCopies)
+        error("'repeat' makes " + std::to_string(copies) + " copies, more than " +
+              std::to_string(kMaxRepeatCopies));
+    const int index = int(scene.groups.size()) - 1;
+    if (!g.name.empty() && !groupNames_.emplace(g.name, index).second)
+        error("a second group named " + quote(g.name));
+    tree_.push_back({true, index});
 }
 
 // The keys a keyframe leaves out come from the camera record, which may follow it: until the
@@ -392,7 +502,8 @@ void Parser::readRecord(Fields& fields, R& rec) {
             ++picked;
             rec.*need.pick = need.when;
         }
-        if (f && need.version2 && version_ < 2) error(quote(key) + " needs scene version:2");
+        if (f && version_ < need.since)
+            error(quote(key) + " needs scene version:" + std::to_string(need.since));
         if (f) readKey(key, f->value, std::invoke(field, rec), rule);
         if (!f && need.required) error(std::string("missing required key '") + key + "'");
     });
@@ -424,7 +535,8 @@ void Parser::readKey(const char* key, std::string_view text, T& v, const Rule& r
 
 // A body's turn is its exact orient (a save writes it), and rot then only shows it in degrees:
 // so a file read, saved and read again gives the same scene whichever of the two it held.
-void exactTurn(Object& o) {
+template <class R>
+void exactTurn(R& o) {
     if (o.dynamic() && !o.orient) o.orient = glm::quat_cast(rotationFromEuler(o.rot));
     if (o.orient) o.rot = eulerFromRotation(glm::mat3_cast(*o.orient));
 }
@@ -436,6 +548,7 @@ void Parser::finish() {
         if (version_ < 2 && o.type != ShapeType::Sphere && o.dynamic()) o.isStatic = true;
         exactTurn(o);
     }
+    for (Group& g : scene.groups) exactTurn(g);
     finishKeyframes();
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         int m = scene.objects[i].material;
@@ -444,6 +557,39 @@ void Parser::finish() {
     }
     for (size_t i = 0; i < scene.materials.size(); ++i)
         if (scene.materials[i].name.empty()) scene.materials[i].name = defaultMaterialName(i);
+    finishTree();
+}
+
+// Puts objects and groups in tree order: each group followed at once by its members, in file
+// order, recursively; the top level keeps its file order.
+void Parser::finishTree() {
+    if (scene.groups.empty()) return;
+    std::vector<std::vector<std::pair<bool, int>>> members(scene.groups.size() + 1);
+    for (auto [isGroup, i] : tree_) {
+        const int parent = isGroup ? scene.groups[size_t(i)].parent : scene.objects[size_t(i)].group;
+        members[size_t(parent + 1)].push_back({isGroup, i});
+    }
+    Scene& s = scene;
+    std::vector<Object> objects;
+    std::vector<Group> groups;
+    std::vector<int> newIndex(s.groups.size());
+    std::function<void(int, int)> emit = [&](int parent, int newParent) {
+        for (auto [isGroup, i] : members[size_t(parent + 1)]) {
+            if (!isGroup) {
+                objects.push_back(std::move(s.objects[size_t(i)]));
+                objects.back().group = newParent;
+                continue;
+            }
+            newIndex[size_t(i)] = int(groups.size());
+            groups.push_back(std::move(s.groups[size_t(i)]));
+            groups.back().parent = newParent;
+            groups.back().first = int(objects.size());
+            emit(i, newIndex[size_t(i)]);
+        }
+    };
+    emit(-1, -1);
+    s.objects = std::move(objects);
+    s.groups = std::move(groups);
 }
 
 void Parser::finishKeyframes() {

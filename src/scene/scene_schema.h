@@ -40,24 +40,60 @@ struct Need {
     bool required = false;
     bool R::*pick = nullptr;
     bool when = false;
-    bool version2 = false;                // new in version 2: an error in a version 1 file
+    int since = 1;                        // the version that added it: an error in older files
     bool (*written)(const R&) = nullptr;  // where set, the writer writes the key only if true
 };
 
 // The `scene` record: it has no counterpart in Scene, only a version to check. Files without
-// one are version 1; saves write version 2.
+// one are version 1; saves write version 3.
 struct SceneHeader {
     int version = 1;
 };
-constexpr int kSceneVersion = 2;
+constexpr int kSceneVersion = 3;
 
-// A dynamic object saves its exact turn, `orient`, in place of `rot`; so does any object that
-// has one, so that it reads back the same.
-inline bool writesOrient(const Object& o) { return o.orient.has_value(); }
-inline bool writesRot(const Object& o) { return !o.orient.has_value(); }
+// A dynamic object saves its exact turn, `orient`, in place of `rot`; so does any object or
+// group that has one, so that it reads back the same.
+template <class R>
+bool writesOrient(const R& o) {
+    return o.orient.has_value();
+}
+template <class R>
+bool writesRot(const R& o) {
+    return !o.orient.has_value();
+}
+template <class R>
+bool hasFriction(const R& o) {
+    return o.friction.has_value();
+}
+template <class R>
+bool hasRestitution(const R& o) {
+    return o.restitution.has_value();
+}
 inline bool hasName(const Object& o) { return !o.name.empty(); }
-inline bool hasFriction(const Object& o) { return o.friction.has_value(); }
-inline bool hasRestitution(const Object& o) { return o.restitution.has_value(); }
+// The motion keys belong to top-level objects and groups: a member moves with its group.
+inline bool movesAlone(const Object& o) { return o.group < 0; }
+inline bool movesAlone(const Group& g) { return g.parent < 0; }
+// Each type writes the size keys it uses.
+inline bool usesRadius(const Object& o) {
+    return o.type != ShapeType::Box && o.type != ShapeType::Ellipsoid;
+}
+inline bool usesSize(const Object& o) {
+    return o.type == ShapeType::Box || o.type == ShapeType::Ellipsoid;
+}
+inline bool usesMinor(const Object& o) { return o.type == ShapeType::Torus; }
+inline bool usesHeight(const Object& o) {
+    return o.type == ShapeType::Capsule || o.type == ShapeType::Cylinder ||
+           o.type == ShapeType::Cone;
+}
+inline bool usesTop(const Object& o) { return o.type == ShapeType::Cone && o.top != 0.0f; }
+inline bool isRounded(const Object& o) { return o.round != 0.0f; }
+inline bool isShelled(const Object& o) { return o.shell != 0.0f; }
+inline bool isMirrored(const Group& g) { return glm::any(g.mirror); }
+inline bool isRepeated(const Group& g) { return g.repeat != glm::ivec3(1); }
+inline bool hasSpacing(const Group& g) { return g.spacing != glm::vec3(1.0f); }
+inline bool isBlended(const Group& g) { return g.blend != 0.0f; }
+inline bool isCarving(const Group& g) { return g.op != CsgOp::Union; }
+inline bool isTurned(const Group& g) { return !g.orient && g.rot != glm::vec3(0.0f); }
 
 template <class R>
 struct Schema;
@@ -162,27 +198,60 @@ struct Schema<Object> {
     template <class K>
     static void keys(K& key) {
         const Need<Object> required{true};
-        auto since2 = [](bool (*written)(const Object&)) {
-            return Need<Object>{false, nullptr, false, true, written};
+        auto since = [](int version, bool (*written)(const Object&)) {
+            return Need<Object>{false, nullptr, false, version, written};
         };
         key("type", &Object::type, Rule{}, required);
-        key("name", &Object::name, Rule{}, since2(hasName));
+        key("name", &Object::name, Rule{}, since(2, hasName));
         key("material", &Object::material, atLeast(0));  // existence is checked at end of file
         key("pos", &Object::pos, Rule{}, required);
-        key("radius", &Object::radius, above(0));
-        key("size", &Object::size, above(0));
-        key("minor", &Object::minor, above(0));
-        key("height", &Object::height, above(0));
-        key("rot", &Object::rot, Rule{}, Need<Object>{false, nullptr, false, false, writesRot});
-        key("orient", &Object::orient, Rule{}, since2(writesOrient));
-        key("mass", &Object::mass, atLeast(0));
-        key("vel", &Object::vel);
-        key("spin", &Object::spin);
-        key("static", &Object::isStatic);
+        key("radius", &Object::radius, above(0), since(1, usesRadius));
+        key("size", &Object::size, above(0), since(1, usesSize));
+        key("minor", &Object::minor, above(0), since(1, usesMinor));
+        key("height", &Object::height, above(0), since(1, usesHeight));
+        key("top", &Object::top, atLeast(0), since(3, usesTop));
+        key("rot", &Object::rot, Rule{}, since(1, writesRot<Object>));
+        key("orient", &Object::orient, Rule{}, since(2, writesOrient<Object>));
+        key("mass", &Object::mass, atLeast(0), since(1, movesAlone));
+        key("vel", &Object::vel, Rule{}, since(1, movesAlone));
+        key("spin", &Object::spin, Rule{}, since(1, movesAlone));
+        key("static", &Object::isStatic, Rule{}, since(1, movesAlone));
         key("op", &Object::op);
         key("blend", &Object::blend, atLeast(0));
-        key("friction", &Object::friction, atLeast(0), since2(hasFriction));
-        key("restitution", &Object::restitution, between(0, 1), since2(hasRestitution));
+        key("round", &Object::round, atLeast(0), since(3, isRounded));
+        key("shell", &Object::shell, atLeast(0), since(3, isShelled));
+        key("friction", &Object::friction, atLeast(0), since(2, hasFriction<Object>));
+        key("restitution", &Object::restitution, between(0, 1),
+            since(2, hasRestitution<Object>));
+    }
+};
+
+// Motion keys (mass, vel, spin, static, friction, restitution) are the top level's: the parser
+// refuses them on a member, and the writer leaves them out there. `in` is read and written by
+// the parser and writer themselves: it names a group, which the records hold as an index.
+template <>
+struct Schema<Group> {
+    static constexpr const char* kind = "group";
+    template <class K>
+    static void keys(K& key) {
+        auto since3 = [](bool (*written)(const Group&)) {
+            return Need<Group>{false, nullptr, false, 3, written};
+        };
+        key("name", &Group::name, Rule{}, Need<Group>{true, nullptr, false, 3});
+        key("pos", &Group::pos, Rule{}, since3(nullptr));
+        key("rot", &Group::rot, Rule{}, since3(isTurned));
+        key("orient", &Group::orient, Rule{}, since3(writesOrient<Group>));
+        key("op", &Group::op, Rule{}, since3(isCarving));
+        key("blend", &Group::blend, atLeast(0), since3(isBlended));
+        key("mass", &Group::mass, atLeast(0), since3(movesAlone));
+        key("vel", &Group::vel, Rule{}, since3(movesAlone));
+        key("spin", &Group::spin, Rule{}, since3(movesAlone));
+        key("static", &Group::isStatic, Rule{}, since3(movesAlone));
+        key("friction", &Group::friction, atLeast(0), since3(hasFriction<Group>));
+        key("restitution", &Group::restitution, between(0, 1), since3(hasRestitution<Group>));
+        key("mirror", &Group::mirror, Rule{}, since3(isMirrored));
+        key("repeat", &Group::repeat, between(1, 64), since3(isRepeated));
+        key("spacing", &Group::spacing, above(0), since3(hasSpacing));
     }
 };
 

@@ -37,6 +37,24 @@ float sdCylinder(vec3 p, float height, float r) {
     return std::min(std::max(d.x, d.y), 0.0f) + glm::length(glm::max(d, vec2(0.0f)));
 }
 
+// Quilez's capped cone: the distance to the trapezoid (r1 at -h, r2 at +h) in the (radial, y)
+// half-plane, signed by the side of both caps and the slant.
+float sdCone(vec3 p, float height, float r1, float r2) {
+    const float h = 0.5f * height;
+    const vec2 q(glm::length(vec2(p.x, p.z)), p.y);
+    const vec2 k1(r2, h), k2(r2 - r1, 2.0f * h);
+    const vec2 ca(q.x - std::min(q.x, q.y < 0.0f ? r1 : r2), std::abs(q.y) - h);
+    const vec2 cb = q - k1 + k2 * std::clamp(glm::dot(k1 - q, k2) / glm::dot(k2, k2), 0.0f, 1.0f);
+    const float s = cb.x < 0.0f && ca.y < 0.0f ? -1.0f : 1.0f;
+    return s * std::sqrt(std::min(glm::dot(ca, ca), glm::dot(cb, cb)));
+}
+
+// Quilez's ellipsoid bound k0·(k0 − 1)/k1: exact on the surface, a bound off it.
+float sdEllipsoid(vec3 p, vec3 r) {
+    const float k0 = glm::length(p / r), k1 = glm::length(p / (r * r));
+    return k1 > 0.0f ? k0 * (k0 - 1.0f) / k1 : -std::min(r.x, std::min(r.y, r.z));
+}
+
 // Polynomial smooth minimum (Quilez): it differs from min only where |a-b| < k, which is what
 // lets the scene map skip objects whose bounding sphere is farther than k. y = weight of b.
 glm::vec2 opUnion(float a, float b, float k) {
@@ -76,6 +94,10 @@ glm::vec3 eulerFromRotation(const glm::mat3& r) {
 
 float boundingRadius(const Object& o) {
     switch (o.type) {
+        case ShapeType::Cone:
+            return std::hypot(0.5f * o.height, o.radius);
+        case ShapeType::Ellipsoid:
+            return std::max(o.size.x, std::max(o.size.y, o.size.z));
         case ShapeType::Sphere:
             return o.radius;
         case ShapeType::Box:
@@ -105,13 +127,18 @@ float depthBelowCentre(const Object& o) {
         case ShapeType::Capsule:
             return 0.5f * o.height * up + o.radius;
         case ShapeType::Cylinder:
+        case ShapeType::Cone:  // the base rim, or the top's where the cone stands on its tip
             return 0.5f * o.height * up + o.radius * across;
+        case ShapeType::Ellipsoid: {  // support along −y: |diag(size)·Rᵀ·y|
+            const glm::vec3 row(r[0].y, r[1].y, r[2].y);
+            return glm::length(row * o.size);
+        }
     }
     return 0.0f;
 }
 
 SdfObject makeSdfObject(const Object& o) {
-    SdfObject s;
+    SdfObject s{};
     s.type = o.type;
     s.op = o.op;
     s.pos = o.pos;
@@ -122,12 +149,29 @@ SdfObject makeSdfObject(const Object& o) {
     s.minor = o.minor;
     s.height = o.height;
     s.blend = o.blend;
+    s.top = o.top;
+    s.round = o.round;
+    s.shell = o.shell;
     s.bound = boundingRadius(o);
     s.material = o.material;
     return s;
 }
 
-float sdObjectLocal(const SdfObject& o, vec3 q) {
+SdfObject makeSdfObject(const Object& o, const Placement& parent) {
+    SdfObject s = makeSdfObject(o);
+    if (o.group < 0) return s;  // the turn's matrix to the bit, as a top-level object has it
+    const glm::mat3 turn = glm::mat3_cast(parent.turn) * glm::transpose(s.toLocal);
+    s.pos = parent.pos + parent.turn * o.pos;
+    s.toLocal = glm::transpose(turn);
+    return s;
+}
+
+bool exactShape(const SdfObject& o) { return o.type != ShapeType::Ellipsoid && o.shell <= 0.0f; }
+
+namespace {
+
+// The shape's own distance, before rounding and hollowing.
+float sdSolid(const SdfObject& o, vec3 q) {
     switch (o.type) {
         case ShapeType::Sphere:
             return sdSphere(q, o.radius);
@@ -139,16 +183,76 @@ float sdObjectLocal(const SdfObject& o, vec3 q) {
             return sdCapsule(q, o.height, o.radius);
         case ShapeType::Cylinder:
             return sdCylinder(q, o.height, o.radius);
+        case ShapeType::Cone:
+            return sdCone(q, o.height, o.radius, o.top);
+        case ShapeType::Ellipsoid:
+            return sdEllipsoid(q, o.size);
     }
     return 1e10f;
 }
 
+// The same shape with every face moved in by r (for rounding: the points within r of it), and
+// how far its centre rises. A cone's slant moves in by r across it, r·√(1 + slope²) along its
+// radius; where that passes a pointed top, the inset cone ends at its apex, lower down.
+SdfObject inset(SdfObject o, float r, float* lift) {
+    *lift = 0.0f;
+    o.size -= vec3(r);
+    o.height -= 2.0f * r;
+    if (o.type == ShapeType::Cylinder) o.radius -= r;
+    if (o.type == ShapeType::Cone) {
+        const float slope = (o.radius - o.top) / (o.height + 2.0f * r);
+        const float side = r * std::sqrt(1.0f + slope * slope);
+        const float r1 = o.radius - slope * r - side, r2 = o.top + slope * r - side;
+        o.radius = r1;
+        o.top = std::max(r2, 0.0f);
+        if (r2 < 0.0f) {
+            const float height = o.height * r1 / (r1 - r2);
+            *lift = 0.5f * (height - o.height);
+            o.height = height;
+        }
+    }
+    return o;
+}
+
+}  // namespace
+
+float sdObjectLocal(const SdfObject& o, vec3 q) {
+    float lift = 0.0f;
+    float d = o.round > 0.0f ? sdSolid(inset(o, o.round, &lift), q - vec3(0, lift, 0)) - o.round
+                             : sdSolid(o, q);
+    // A shell keeps what lies within t inside the surface: max(d, −(d + t)).
+    return o.shell > 0.0f ? std::abs(d + 0.5f * o.shell) - 0.5f * o.shell : d;
+}
+
 float sdObject(const SdfObject& o, vec3 p) { return sdObjectLocal(o, o.toLocal * (p - o.pos)); }
+
+SdfGroup makeSdfGroup(const Scene& scene, int g) {
+    const Group& group = scene.groups[size_t(g)];
+    const Placement pose = groupPose(scene, g);
+    SdfGroup s;
+    s.parent = group.parent;
+    s.op = group.op;
+    s.blend = group.blend;
+    s.pos = pose.pos;
+    s.toLocal = glm::transpose(glm::mat3_cast(pose.turn));
+    s.mirror = group.mirror;
+    s.repeat = group.repeat;
+    s.spacing = group.spacing;
+    s.first = group.first;
+    s.last = groupEnd(scene, g);
+    return s;
+}
 
 SceneSdf makeSceneSdf(const Scene& scene) {
     SceneSdf sdf;
+    for (size_t g = 0; g < scene.groups.size(); ++g)
+        sdf.groups.push_back(makeSdfGroup(scene, int(g)));
     sdf.objects.reserve(scene.objects.size());
-    for (const Object& o : scene.objects) sdf.objects.push_back(makeSdfObject(o));
+    for (const Object& o : scene.objects) {
+        sdf.objects.push_back(makeSdfObject(o, groupPose(scene, o.group)));
+        sdf.objects.back().group = o.group;
+    }
+    boundGroups(sdf);
     sdf.ground = scene.world.ground;
     sdf.floor = scene.world.floor;
     return sdf;
@@ -156,35 +260,122 @@ SceneSdf makeSceneSdf(const Scene& scene) {
 
 float objectReach(const SdfObject& o) { return o.bound + o.blend; }
 
+int copyCount(const SdfGroup& g) { return g.repeat.x * g.repeat.y * g.repeat.z; }
+
+// Only union members add to a group's shape (subtract and intersect remove, a smooth union adds
+// under its radius); a mirror reflects about planes through the group's origin, which keeps
+// every distance from it; the copies spread the shape by the farthest copy's offset.
+void boundGroups(SceneSdf& sdf) {
+    for (SdfGroup& g : sdf.groups) g.copyBound = 0.0f;
+    for (const SdfObject& o : sdf.objects)
+        if (o.group >= 0 && o.op == CsgOp::Union) {
+            SdfGroup& g = sdf.groups[size_t(o.group)];
+            g.copyBound = std::max(g.copyBound, glm::length(o.pos - g.pos) + objectReach(o));
+        }
+    for (size_t i = sdf.groups.size(); i-- > 0;) {  // children come after their parents
+        SdfGroup& g = sdf.groups[i];
+        const vec3 spread = 0.5f * (vec3(g.repeat) - 1.0f) * g.spacing;
+        g.bound = g.copyBound + glm::length(spread);
+        if (g.parent >= 0 && g.op == CsgOp::Union && g.last > g.first) {
+            SdfGroup& parent = sdf.groups[size_t(g.parent)];
+            parent.copyBound =
+                std::max(parent.copyBound, glm::length(g.pos - parent.pos) + g.bound + g.blend);
+        }
+    }
+}
+
+// Copy (i, j, k) sits at ((i − (n−1)/2)·s, ...) in the group's frame; the mirror folds the point
+// onto the positive side of each mirrored plane before the copy's members see it.
+bool groupImage(const SdfGroup& g, vec3 p, int copy, float cull, vec3* image) {
+    vec3 q = g.toLocal * (p - g.pos);
+    const glm::ivec3 index(copy % g.repeat.x, copy / g.repeat.x % g.repeat.y,
+                           copy / (g.repeat.x * g.repeat.y));
+    q -= (vec3(index) - 0.5f * (vec3(g.repeat) - 1.0f)) * g.spacing;
+    if (glm::length(q) - g.copyBound >= cull) return false;
+    for (int a = 0; a < 3; ++a)
+        if (g.mirror[a]) q[a] = std::abs(q[a]);
+    *image = g.pos + glm::transpose(g.toLocal) * q;
+    return true;
+}
+
+void shiftSceneSdf(SceneSdf& sdf, vec3 origin) {
+    for (SdfObject& o : sdf.objects) o.pos -= origin;
+    for (SdfGroup& g : sdf.groups) g.pos -= origin;
+}
+
 Box objectBounds(const SceneSdf& sdf) {
     Box b;
-    for (const SdfObject& o : sdf.objects) {
-        b.lo = glm::min(b.lo, o.pos - objectReach(o));
-        b.hi = glm::max(b.hi, o.pos + objectReach(o));
-    }
+    auto add = [&](vec3 centre, float reach) {
+        b.lo = glm::min(b.lo, centre - reach);
+        b.hi = glm::max(b.hi, centre + reach);
+    };
+    for (const SdfObject& o : sdf.objects)
+        if (o.group < 0) add(o.pos, objectReach(o));
+    for (const SdfGroup& g : sdf.groups)
+        if (g.parent < 0 && g.last > g.first) add(g.pos, g.bound + g.blend);
     return b;
 }
 
 // "Nothing yet": far enough to lose every min, small enough that smooth blends stay finite.
 constexpr float kFar = 1e10f;
 
-SceneSample mapObjects(const SceneSdf& sdf, vec3 p) {
+namespace {
+
+// Whether a member whose distance is at least `lower` leaves the chain's distance d as it is:
+// union and subtract do when it is k beyond what they keep; intersect always needs its value.
+bool leavesAlone(CsgOp op, float lower, float k, float d) {
+    return (op == CsgOp::Union && lower >= d + k) || (op == CsgOp::Subtract && lower >= k - d);
+}
+
+void join(SceneSample& s, SceneSample member, CsgOp op, float k) {
+    vec2 r = op == CsgOp::Union      ? opUnion(s.d, member.d, k)
+             : op == CsgOp::Subtract ? opSubtract(s.d, member.d, k)
+                                     : opIntersect(s.d, member.d, k);
+    s.d = r.x;
+    if (r.y > 0.5f) s.object = member.object;
+}
+
+// The chain of `parent`'s members among objects [first, last), a group's as one member.
+SceneSample mapChain(const SceneSdf& sdf, int parent, int first, int last, vec3 p) {
     SceneSample s{kFar, kHitNone};
-    for (size_t i = 0; i < sdf.objects.size(); ++i) {
-        const SdfObject& o = sdf.objects[i];
-        // The bounding sphere gives dObj >= bound. Union and subtract are unchanged when the
-        // object is k beyond what they would keep; intersect always needs the exact value.
-        float bound = glm::length(p - o.pos) - o.bound;
-        if (o.op == CsgOp::Union && bound >= s.d + o.blend) continue;
-        if (o.op == CsgOp::Subtract && bound >= o.blend - s.d) continue;
-        float d = sdObject(o, p);
-        vec2 r = o.op == CsgOp::Union      ? opUnion(s.d, d, o.blend)
-                 : o.op == CsgOp::Subtract ? opSubtract(s.d, d, o.blend)
-                                           : opIntersect(s.d, d, o.blend);
-        s.d = r.x;
-        if (r.y > 0.5f) s.object = int(i);
+    for (int i = first; i < last;) {
+        const SdfObject& o = sdf.objects[size_t(i)];
+        if (o.group == parent) {
+            if (!leavesAlone(o.op, glm::length(p - o.pos) - o.bound, o.blend, s.d))
+                join(s, {sdObject(o, p), i}, o.op, o.blend);
+            ++i;
+            continue;
+        }
+        int g = o.group;  // the member group that holds object i
+        while (sdf.groups[size_t(g)].parent != parent) g = sdf.groups[size_t(g)].parent;
+        const SdfGroup& group = sdf.groups[size_t(g)];
+        if (!leavesAlone(group.op, glm::length(p - group.pos) - group.bound, group.blend, s.d))
+            join(s, mapGroup(sdf, g, p), group.op, group.blend);
+        i = group.last;
     }
     return s;
+}
+
+}  // namespace
+
+// The union of the copies, sharp whether or not they overlap; a copy whose bound is beyond the
+// nearest so far cannot lower it.
+SceneSample mapGroup(const SceneSdf& sdf, int g, vec3 p) {
+    const SdfGroup& group = sdf.groups[size_t(g)];
+    if (copyCount(group) == 1 && !glm::any(group.mirror))
+        return mapChain(sdf, g, group.first, group.last, p);
+    SceneSample best{kFar, kHitNone};
+    for (int copy = 0; copy < copyCount(group); ++copy) {
+        vec3 image;
+        if (!groupImage(group, p, copy, best.d, &image)) continue;
+        SceneSample s = mapChain(sdf, g, group.first, group.last, image);
+        if (s.d < best.d) best = s;
+    }
+    return best;
+}
+
+SceneSample mapObjects(const SceneSdf& sdf, vec3 p) {
+    return mapChain(sdf, -1, 0, int(sdf.objects.size()), p);
 }
 
 SceneSample mapScene(const SceneSdf& sdf, vec3 p) {

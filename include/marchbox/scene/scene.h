@@ -1,7 +1,7 @@
 // marchbox/scene/scene.h — the scene model: plain data, defaults from docs/scene-format.md.
 //
 // [SECTION] Limits
-// [SECTION] Records (Camera, Keyframe, World, RenderSettings, Material, Light, Object)
+// [SECTION] Records (Camera, Keyframe, World, RenderSettings, Material, Light, Object, Group)
 // [SECTION] Scene (and the file's comments)
 //
 // Units are metres, seconds, kilograms; +y is up. Angles in `rot` are degrees, as in the file.
@@ -9,6 +9,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vector_relational.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,9 @@ namespace mb {
 // [SECTION] Limits
 //-----------------------------------------------------------------------------
 constexpr int kMaxObjects = 4096;  // more objects in a file is a load error
+constexpr int kMaxGroups = 1024;
+constexpr int kMaxGroupDepth = 8;     // a group inside 8 others is an error
+constexpr int kMaxRepeatCopies = 4096;  // a group's repeat counts multiplied
 constexpr int kMaxMaterials = 256;
 constexpr int kMaxLights = 16;
 constexpr int kMaxLineBytes = 4096;  // longer lines are an error, checked before any regex runs
@@ -26,8 +30,16 @@ constexpr int kMaxLineBytes = 4096;  // longer lines are an error, checked befor
 //-----------------------------------------------------------------------------
 // [SECTION] Records
 //-----------------------------------------------------------------------------
-enum class ShapeType : int { Sphere = 0, Box = 1, Torus = 2, Capsule = 3, Cylinder = 4 };
-constexpr int kShapeTypeCount = 5;
+enum class ShapeType : int {
+    Sphere = 0,
+    Box = 1,
+    Torus = 2,
+    Capsule = 3,
+    Cylinder = 4,
+    Cone = 5,       // version 3: a frustum along local y, base `radius` below, `top` above
+    Ellipsoid = 6,  // version 3: semi-axes `size`
+};
+constexpr int kShapeTypeCount = 7;
 enum class CsgOp : int { Union = 0, Subtract = 1, Intersect = 2 };
 constexpr int kCsgOpCount = 3;
 
@@ -101,12 +113,47 @@ struct Object {
     float blend = 0.0f;                              // smooth-blend radius, 0 = sharp
     std::string name{};                              // [A-Za-z0-9_.-]+, or empty: none
     std::optional<float> friction{}, restitution{};  // the object's own; absent: the world's
+    float top = 0.0f;    // a cone's top radius, 0 <= top < radius
+    float round = 0.0f;  // edge radius of a box, cylinder or cone; faces keep their place
+    float shell = 0.0f;  // wall thickness: 0 solid, else hollow inside the surface
+    int group = -1;      // index in Scene::groups of the group it belongs to; -1: top level
     std::string comment{};  // `{}`: aggregates built without it stay warning-free
 
-    // A dynamic object is moved by the simulator, whatever its type; everything else is a
-    // static collider. (A version 1 file's other shapes load static: only spheres moved.)
-    bool dynamic() const { return !isStatic && mass > 0.0f; }
+    // A dynamic object is moved by the simulator, whatever its type; every other top-level
+    // object is a static collider, and a member is part of its group's solid. (A version 1
+    // file's other shapes load static: only spheres moved.)
+    bool dynamic() const { return group < 0 && !isStatic && mass > 0.0f; }
     // Body to world: orient where set, else rot.
+    glm::quat orientation() const;
+};
+
+// A group gathers the objects and groups whose `group`/`parent` name it into one shape: its
+// members combine with one another only (a member's subtract carves its group), in its own frame
+// (a member's pos and turn are relative to the group's), and the result joins its own parent's
+// chain by `op` and `blend` at the group's place, as one object would. A top-level group with
+// a mass is one rigid body. Groups are stored in tree order (see Scene).
+struct Group {
+    std::string name;  // required, unique among groups
+    int parent = -1;   // index in Scene::groups; -1: the top level
+    // Its place among its siblings: it stands just before objects[first] in the tree order
+    // (objects.size() at the end). Its members are objects[first, end) of groupEnd().
+    int first = 0;
+    glm::vec3 pos{0.0f};
+    glm::vec3 rot{0.0f};
+    std::optional<glm::quat> orient;
+    CsgOp op = CsgOp::Union;
+    float blend = 0.0f;
+    float mass = 1.0f;  // the motion keys: top level only
+    glm::vec3 vel{0.0f};   // the centre of mass's velocity, m/s
+    glm::vec3 spin{0.0f};  // rad/s
+    bool isStatic = false;
+    std::optional<float> friction{}, restitution{};
+    glm::bvec3 mirror{false};  // keep the positive half about each local plane, reflected
+    glm::ivec3 repeat{1};      // copies along x, y, z: each 1..64, product <= 4096
+    glm::vec3 spacing{1.0f};   // between copies, each > 0
+    std::string comment{};
+
+    bool dynamic() const { return parent < 0 && !isStatic && mass > 0.0f; }
     glm::quat orientation() const;
 };
 
@@ -130,12 +177,28 @@ struct Scene {
     RenderSettings render;
     std::vector<Material> materials;
     std::vector<Light> lights;
-    std::vector<Object> objects;      // in file order: the CSG chain is evaluated in this order
+    // Tree order: a group's members (objects and groups, recursively) follow it at once, so a
+    // group's objects are one run of `objects`; top-level records keep their file order. The
+    // CSG chain is evaluated in this order.
+    std::vector<Object> objects;
+    std::vector<Group> groups;
     std::vector<Keyframe> keyframes;  // in order of t
     SceneComments comments;
 };
 
 const char* shapeTypeName(ShapeType t);  // "sphere", "box", ...
 const char* csgOpName(CsgOp op);         // "union", "subtract", "intersect"
+
+// Group trees (Scene::groups in tree order).
+int groupEnd(const Scene& scene, int g);    // one past g's last object in the tree order
+int groupDepth(const Scene& scene, int g);  // 1 for a top-level group
+int topGroupOf(const Scene& scene, const Object& o);  // its top-level group, or -1
+// Where a member stands in the world: its group chain's turns and moves applied to its own.
+struct Placement {
+    glm::vec3 pos{0.0f};
+    glm::quat turn{1.0f, 0.0f, 0.0f, 0.0f};
+};
+Placement groupPose(const Scene& scene, int g);          // the group's frame in the world
+Placement worldPose(const Scene& scene, const Object& o);  // the object's frame in the world
 
 }  // namespace mb

@@ -33,6 +33,9 @@ float sdBox(glm::vec3 p, glm::vec3 halfExtents);       // exact
 float sdTorus(glm::vec3 p, float major, float minor);  // exact; ring in the x-z plane
 float sdCapsule(glm::vec3 p, float height, float r);   // exact; segment [-h/2, h/2] on y
 float sdCylinder(glm::vec3 p, float height, float r);  // exact; capped, axis y, length h
+// exact; axis y, length h, base radius r1 at y = -h/2, top radius r2 at y = +h/2
+float sdCone(glm::vec3 p, float height, float r1, float r2);
+float sdEllipsoid(glm::vec3 p, glm::vec3 semiAxes);  // bound; exact on the surface
 
 //-----------------------------------------------------------------------------
 // [SECTION] Operators
@@ -60,15 +63,37 @@ float depthBelowCentre(const Object& o);
 struct SdfObject {
     ShapeType type;
     CsgOp op;
-    glm::vec3 pos;
-    glm::mat3 toLocal;  // transpose of the object's rotation
+    glm::vec3 pos;      // in the world (a member's composed with its groups')
+    glm::mat3 toLocal;  // transpose of the object's rotation in the world
     glm::vec3 size;
     float radius, minor, height, blend;
+    float top = 0.0f, round = 0.0f, shell = 0.0f;
     float bound;  // radius of a sphere about pos that holds the shape
     int material;
+    int group = -1;  // index in SceneSdf::groups; -1: the top level
 };
 
-SdfObject makeSdfObject(const Object& o);
+// Whether the shape's distance is exact (else a bound: an ellipsoid, a shell).
+bool exactShape(const SdfObject& o);
+
+// A group, resolved for evaluation: its frame in the world and the run of objects it holds.
+struct SdfGroup {
+    int parent = -1;
+    CsgOp op = CsgOp::Union;
+    float blend = 0.0f;
+    glm::vec3 pos{0.0f};
+    glm::mat3 toLocal{1.0f};
+    glm::bvec3 mirror{false};
+    glm::ivec3 repeat{1};
+    glm::vec3 spacing{1.0f};
+    int first = 0, last = 0;  // objects [first, last) of SceneSdf::objects
+    float copyBound = 0.0f;   // radius of a sphere about pos that holds one copy's shape
+    float bound = 0.0f;       // ... that holds the group's shape, every copy
+};
+
+// Object o on its own, in its group's frame `parent` (groupPose of its group) in the world.
+SdfObject makeSdfObject(const Object& o, const Placement& parent);
+SdfObject makeSdfObject(const Object& o);  // a top-level object: its own pos and turn
 float sdObjectLocal(const SdfObject& o, glm::vec3 local);  // the shape at the origin
 float sdObject(const SdfObject& o, glm::vec3 p);           // the shape in world space
 
@@ -80,14 +105,25 @@ struct SceneSample {
     int object;  // index of the surface's object, kHitGround or kHitNone
 };
 
-// The scene's objects and ground, ready to evaluate many times.
+// The scene's objects, groups and ground, ready to evaluate many times.
 struct SceneSdf {
     std::vector<SdfObject> objects;
+    std::vector<SdfGroup> groups;  // as Scene::groups; objects' `group` index it
     bool ground = true;
     float floor = 0.0f;
 };
 
 SceneSdf makeSceneSdf(const Scene& scene);
+// Sets every group's bounds from its members', the deepest groups first.
+void boundGroups(SceneSdf& sdf);
+// The point p of the world as group g's members see it in copy `copy` (0..repeat product - 1),
+// after its mirror; false where that copy's bound is at least `cull` from p.
+bool groupImage(const SdfGroup& g, glm::vec3 p, int copy, float cull, glm::vec3* image);
+int copyCount(const SdfGroup& g);
+// Moves every object and group by -origin (the static collider's local frames).
+void shiftSceneSdf(SceneSdf& sdf, glm::vec3 origin);
+// Group g's own shape at p, members only (not joined to anything outside it).
+SceneSample mapGroup(const SceneSdf& sdf, int g, glm::vec3 p);
 
 // The sphere about pos within which the object can change the chain: its bound grown by its
 // blend, since a smooth blend reaches k beyond the sharp surface.
@@ -99,6 +135,7 @@ struct Box {
 };
 
 // Every object's reach: outside it the scene is the ground alone, so rays need no marching.
+// A mirrored or repeated group's members reach as far as its bound.
 Box objectBounds(const SceneSdf& sdf);
 SceneSample mapScene(const SceneSdf& sdf, glm::vec3 p);
 SceneSample mapObjects(const SceneSdf& sdf, glm::vec3 p);  // without the ground plane
