@@ -381,7 +381,8 @@ bool has(const Fields& fields, std::string_view key) {
 // The group that `in` names, -1 for none; a member may not hold a motion key.
 int Parser::parentOf(Fields& fields, const char* kind) {
     if (has(fields, "rot") && has(fields, "orient"))
-        error(std::string("a ") + kind + " holds 'rot' or 'orient', not both");
+        error(std::string(kind == std::string_view("object") ? "an " : "a ") + kind +
+              " holds 'rot' or 'orient', not both");
     const Field* in = take(fields, "in");
     if (!in) return -1;
     if (version_ < 3) return error("'in' needs scene version:3"), -1;
