@@ -8,8 +8,8 @@ cd "$(dirname "$0")/.."
 # The tests also need ffmpeg (render to .mp4, ffprobe) and GNU parallel (ranges split across
 # processes): without them those tests skip.
 PACKAGES=(g++ cmake pkg-config libglfw3-dev libglew-dev libglm-dev libimgui-dev
-          libosmesa6-dev libegl-dev libgtest-dev libstb-dev xvfb xauth xdotool x11-utils python3
-          ffmpeg parallel)
+          libosmesa6-dev libegl-dev libgtest-dev libstb-dev libpng-dev xvfb xauth xdotool
+          x11-utils python3 ffmpeg parallel)
 
 # install_missing PACKAGE...: apt-get install those not installed; without root, print the
 # command to run and fail.

