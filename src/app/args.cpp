@@ -58,6 +58,16 @@ static bool parseFps(const std::string& s, std::optional<double>* out) {
     return true;
 }
 
+// --voxel: export's voxel edge in metres, a finite number more than 0.
+static bool parseVoxel(const std::string& s, std::optional<double>* out) {
+    double v = 0;
+    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v) || !(v > 0))
+        return false;
+    *out = v;
+    return true;
+}
+
 // --frames takes bench's count N or render's range A-B; the command refuses the other form.
 // *why is set where the value is a range in the wrong order.
 static bool parseFrames(const std::string& s, Args* a, std::string* why) {
@@ -84,6 +94,7 @@ static bool applyValue(const std::string& opt, const std::string& v, Args* a, st
     else if (opt == "--seconds") ok = parseSeconds(v, &a->seconds);
     else if (opt == "--frames") ok = parseFrames(v, a, &why);
     else if (opt == "--fps") ok = parseFps(v, &a->fps);
+    else if (opt == "--voxel") ok = parseVoxel(v, &a->voxel);
     else if (opt == "--threads") ok = parseInt(v, 1, 2, &a->threads);
     else if (opt == "--mode") a->mode = v;
     else if (opt == "--post") a->post = v;
@@ -96,7 +107,8 @@ static bool applyValue(const std::string& opt, const std::string& v, Args* a, st
             {"--seconds", "a number of seconds from 0 to 3600"},
             {"--frames", "N, a whole number from 1 to 100000, or A-B, frames 0 to 10000000"},
             {"--fps", "a number of frames per second, more than 0 and at most 1000"},
-            {"--threads", "1 or 2"}};
+            {"--threads", "1 or 2"},
+            {"--voxel", "a voxel size in metres, more than 0"}};
         for (auto& e : expected)
             if (opt == e[0])
                 *error = "bad value " + quoteArg(v) + " for " + opt + ": " +
@@ -113,8 +125,8 @@ bool parseArgs(int argc, char** argv, int first, Args* out, std::string* error) 
         } else if (arg == "--skip-existing") {
             out->skipExisting = true;
         } else if (arg == "-o" || arg == "--size" || arg == "--seconds" || arg == "--frames" ||
-                   arg == "--fps" || arg == "--threads" || arg == "--mode" || arg == "--post" ||
-                   arg == "--backend" || arg == "--quality") {
+                   arg == "--fps" || arg == "--voxel" || arg == "--threads" || arg == "--mode" ||
+                   arg == "--post" || arg == "--backend" || arg == "--quality") {
             if (i + 1 >= argc) {
                 *error = "missing value after " + arg;
                 return false;

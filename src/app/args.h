@@ -22,6 +22,7 @@ struct Args {
     std::optional<int> frameCount;         // --frames N: bench's frames (20 when absent)
     std::optional<FrameRange> frameRange;  // --frames A-B: render's frames
     std::optional<double> fps;             // --fps, with --frames A-B (30 when absent)
+    std::optional<double> voxel;           // --voxel S: export's voxel, m (default: from the scene)
     bool skipExisting = false;             // --skip-existing, with --frames A-B
     int threads = 1;                       // --threads 1|2: the simulator's (same bytes either way)
     bool uber = false;                     // --uber

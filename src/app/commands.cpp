@@ -1,6 +1,8 @@
 // commands.cpp — render, simulate, check, shader and bench: load, act, report in one line.
 #include "commands.h"
+#include "interrupt.h"
 
+#include "marchbox/export/export.h"
 #include "marchbox/gl/offscreen_context.h"
 #include "marchbox/gl/quality_preset.h"
 #include "marchbox/gl/renderer.h"
@@ -181,6 +183,56 @@ int runSimulate(const Args& a) {
         return flushStdout();
     }
     return reported(saveScene(a.output, scene, &error), error) ? kExitOk : kExitBadInput;
+}
+
+// The options alone, before the scene is read: a usage error (exit 2) in one line, or "".
+static std::string exportUsageError(const Args& a) {
+    MeshFormat format;
+    if (!meshFormatOf(a.output, &format))
+        return "cannot tell the format of " + quoteArg(a.output) +
+               ": -o takes a .stl, .obj, .ply or .glb file";
+    if (a.frameCount) return "export --frames takes a range A-B, such as 0-299";
+    if (a.frameRange && format != MeshFormat::Glb)
+        return "export --frames writes an animated .glb, not " + quoteArg(a.output);
+    if (a.frameRange && a.seconds)
+        return "--seconds does not go with --frames: frame k shows t = k / fps";
+    if (a.fps && !a.frameRange) return "--fps goes with --frames A-B";
+    if (a.frameRange && a.frameRange->last / a.fps.value_or(30) > kMaxSeconds)
+        return "frame " + std::to_string(a.frameRange->last) + " is past 3600 s at this --fps";
+    return "";
+}
+
+// Ctrl-C stops the run between steps and blocks, before anything is written; the process then
+// ends by the signal.
+int runExport(const Args& a) {
+    if (!needOne(a,
+                 "marchbox export SCENE -o OUT.stl|.obj|.ply|.glb [--voxel S] [--seconds T] "
+                 "[--frames A-B [--fps F]]") ||
+        !needOutput(a, "export", "OUT.stl, OUT.obj, OUT.ply or OUT.glb"))
+        return kExitUsage;
+    if (const std::string error = exportUsageError(a); !error.empty()) {
+        std::cerr << error << '\n';
+        return kExitUsage;
+    }
+    Scene scene;
+    if (!loadOrReport(a.positional[0], &scene)) return kExitBadInput;
+    catchInterrupts();
+    ExportSettings settings;
+    settings.voxel = a.voxel.value_or(0.0);
+    settings.seconds = a.seconds.value_or(0.0);
+    settings.physics = physicsSettings(a);
+    settings.stop = interrupted;
+    if (isatty(STDERR_FILENO)) settings.progress = showProgress;
+    const ExportResult r =
+        a.frameRange ? exportAnimation(
+                           scene, a.output,
+                           {a.frameRange->first, a.frameRange->last, a.fps.value_or(30)}, settings)
+                     : exportScene(scene, a.output, settings);
+    if (r.status == ExportResult::Stopped) endInterrupted();
+    if (r.status == ExportResult::Failed) std::cerr << r.error << '\n';
+    else if (settings.progress)
+        std::fprintf(stderr, "%zu triangles at a voxel of %g m\n", r.triangles, r.voxel);
+    return r.status == ExportResult::Written ? kExitOk : kExitBadInput;
 }
 
 int runCheck(const Args& a) {

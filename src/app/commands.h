@@ -17,6 +17,7 @@ int runCheck(const Args& a);
 int runShader(const Args& a);
 int runBench(const Args& a);
 int runReport(const Args& a);
+int runExport(const Args& a);  // export SCENE -o OUT: a mesh file (marchbox/export/export.h)
 int runEditor(const Args& a);
 
 // What the commands share. Each reports its own error, one line on standard error.

@@ -17,6 +17,8 @@ static const char* kUsage =
     "[--quality Q]\n"
     "                [--skip-existing]   (PATTERN: one frame-number field, out/frame_%05d.png)\n"
     "       marchbox simulate SCENE --seconds T [-o OUT.txt] [--threads N]\n"
+    "       marchbox export SCENE -o OUT.stl|.obj|.ply|.glb [--voxel S] [--seconds T]\n"
+    "       marchbox export SCENE -o OUT.glb --frames A-B [--fps F] [--voxel S]   (animated)\n"
     "       marchbox check SCENE...\n"
     "       marchbox shader SCENE [--uber]\n"
     "       marchbox bench SCENE [--uber] [--size WxH] [--frames N] [--quality Q]\n"
@@ -52,7 +54,8 @@ int main(int argc, char** argv) {
     };
     static const Command commands[] = {{"render", runRender}, {"simulate", runSimulate},
                                        {"check", runCheck},   {"shader", runShader},
-                                       {"bench", runBench},   {"report", runReport}};
+                                       {"bench", runBench},   {"report", runReport},
+                                       {"export", runExport}};
     const Command* command = nullptr;
     for (const Command& c : commands)
         if (argc > 1 && !std::strcmp(argv[1], c.name)) command = &c;
