@@ -1,6 +1,6 @@
 // intersect.glsl — exact ray intersection with the scene's plain members: convex shapes joined
 // by a sharp union that no other object's subtract, intersect or blend reaches, so the scene's
-// surface there is the shape's own (src/gl/scene_compiler.cpp decides which they are).
+// surface there is the shape's own (src/gl/plain_members.cpp decides which they are).
 //
 // Each shape's span is the part of the ray inside the solid, (entry, exit), in the shape's frame
 // with rd of unit length; kNoSpan when the ray misses. A hit is the entry, or 0 from inside: a
@@ -211,6 +211,8 @@ vec3 turnedByQuat(vec4 q, vec3 v) {
 
 bool plainMember(int id) { return id >= 0 && texelFetch(uPlainShapes, 3 * id + 1).w >= 0.0; }
 
+// Only the types with a hit here can be plain members (exactlyMet in src/gl/plain_members.cpp):
+// cones and ellipsoids are marched, so they count for none of the sums below.
 float hitPlainMember(int id, vec3 ro, vec3 rd) {
     vec4 a = texelFetch(uPlainShapes, 3 * id);
     vec3 o = ro - a.xyz;

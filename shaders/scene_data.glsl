@@ -5,8 +5,18 @@ struct Object {
     vec4 sizeMinor;  // box half-extents xyz, torus tube radius
     vec4 shape;      // radius, height, blend, unused
     ivec4 info;      // type, op, material, unused
+    vec4 detail;     // cone's top radius, edge radius (round), wall thickness (shell), unused
     mat3 toLocal;    // world -> local rotation
 };
+#if NUM_GROUPS > 0
+// A group of the compiled tree (src/gl/scene_compiler.cpp): its frame and bounds in the world.
+struct Group {
+    vec4 posBound;   // origin xyz, radius of a sphere about it that holds its shape, every copy
+    vec4 spacing;    // between copies xyz; w: radius of a sphere that holds one copy's shape
+    vec4 blend;      // x: smooth-blend radius of its join; yzw unused
+    mat3 toLocal;    // world -> group frame rotation
+};
+#endif
 struct Material {
     vec4 color;      // rgb, Kr
     vec4 coeffs;     // Ka, Kd, Ks, C
@@ -20,6 +30,11 @@ struct Light {
 layout(std430) readonly buffer ObjectStore { Object uObjects[]; };
 #else
 layout(std140) uniform Objects { Object uObjects[NUM_OBJECTS > 0 ? NUM_OBJECTS : 1]; };
+#endif
+#if NUM_GROUPS > 0 && OBJECTS_IN_STORAGE
+layout(std430) readonly buffer GroupStore { Group uGroups[]; };
+#elif NUM_GROUPS > 0
+layout(std140) uniform Groups { Group uGroups[NUM_GROUPS]; };
 #endif
 layout(std140) uniform Materials { Material uMaterials[NUM_MATERIALS > 0 ? NUM_MATERIALS : 1]; };
 layout(std140) uniform Lights { Light uLights[NUM_POINT_LIGHTS + NUM_DIR_LIGHTS > 0 ? NUM_POINT_LIGHTS + NUM_DIR_LIGHTS : 1]; };

@@ -7,6 +7,7 @@ bool missed(float id) { return id < HIT_NONE + 0.5; }
 
 #include "intersect.glsl"
 #include "penumbra.glsl"
+#include "groups.glsl"
 
 // Replaced by src/gl/scene_compiler.cpp: a compiled scene's loadObjects() and mapObjects(),
 // with mapRest() and hitPlainMembers() where it has plain members (intersect.glsl), then the per-type SDF switch (the loop's, and the outline's), a case for each type present.

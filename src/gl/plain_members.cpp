@@ -1,19 +1,55 @@
 // plain_members.cpp — which objects rays meet exactly, and the grid the shader walks over them.
 #include "marchbox/gl/plain_members.h"
 
+#include "marchbox/gl/scene_tree.h"
+
 #include <algorithm>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <iterator>
 
 namespace mb {
 
 namespace {
 
-bool sharpUnion(const Object& o) { return o.op == CsgOp::Union && o.blend <= 0.0f; }
+// The types intersect.glsl meets in closed form (scene_compiler.cpp's kHitCall).
+constexpr bool kMetExactly[] = {true, true, true, true, true, false, false};
+static_assert(std::size(kMetExactly) == kShapeTypeCount, "say for every ShapeType");
 
-bool reaches(const Object& later, const SdfObject& l, const Object& earlier, const SdfObject& e) {
-    if (later.op == CsgOp::Intersect || later.dynamic() || earlier.dynamic()) return true;
-    return glm::length(l.pos - e.pos) < objectReach(l) + e.bound;
+bool sharpUnion(CsgOp op, float blend) { return op == CsgOp::Union && blend <= 0.0f; }
+
+// One item of the top-level chain: an object, or a group that does not flatten, whole.
+struct ChainItem {
+    int object = -1;  // its index; -1 for a group, which is never plain
+    CsgOp op = CsgOp::Union;
+    float blend = 0.0f;
+    glm::vec3 pos{0.0f};
+    float bound = 0.0f;
+    bool moves = false;
+};
+
+bool reaches(const ChainItem& later, const ChainItem& earlier) {
+    if (later.op == CsgOp::Intersect || later.moves || earlier.moves) return true;
+    return glm::length(later.pos - earlier.pos) < later.bound + later.blend + earlier.bound;
+}
+
+std::vector<ChainItem> chainItems(const Scene& scene, const SceneSdf& sdf) {
+    std::vector<ChainItem> items;
+    for (size_t i = 0; i < scene.objects.size();) {
+        const Object& o = scene.objects[i];
+        const int top = topGroupOf(scene, o);
+        if (top >= 0 && !flatGroup(scene, top)) {
+            const Group& g = scene.groups[size_t(top)];
+            const SdfGroup& s = sdf.groups[size_t(top)];
+            items.push_back({-1, g.op, g.blend, s.pos, s.bound, g.dynamic()});
+            i = size_t(s.last);
+            continue;
+        }
+        const SdfObject& s = sdf.objects[i];
+        items.push_back({int(i), o.op, o.blend, s.pos, s.bound, moves(scene, o)});
+        ++i;
+    }
+    return items;
 }
 
 // intersect.glsl's three texels: (centre, radius or major radius), (half-extents, or height and
@@ -29,28 +65,43 @@ void packShape(const SdfObject& o, float* texels) {
 
 }  // namespace
 
+bool exactlyMet(const Object& o) {
+    return kMetExactly[int(o.type)] && o.round <= 0.0f && o.shell <= 0.0f;
+}
+
 std::vector<bool> plainMembers(const Scene& scene) {
-    size_t n = scene.objects.size();
-    std::vector<bool> plain(n);
-    std::vector<SdfObject> sdf;
-    sdf.reserve(n);
-    for (size_t i = 0; i < n; ++i) {
-        plain[i] = sharpUnion(scene.objects[i]);
-        sdf.push_back(makeSdfObject(scene.objects[i]));
-    }
-    for (size_t j = 0; j < n; ++j) {
-        if (sharpUnion(scene.objects[j])) continue;
+    std::vector<bool> plain(scene.objects.size());
+    const std::vector<ChainItem> items = chainItems(scene, makeSceneSdf(scene));
+    for (const ChainItem& item : items)
+        if (item.object >= 0)
+            plain[size_t(item.object)] =
+                sharpUnion(item.op, item.blend) && exactlyMet(scene.objects[size_t(item.object)]);
+    for (size_t j = 0; j < items.size(); ++j) {
+        if (sharpUnion(items[j].op, items[j].blend)) continue;
         for (size_t i = 0; i < j; ++i)
-            if (plain[i] && reaches(scene.objects[j], sdf[j], scene.objects[i], sdf[i]))
-                plain[i] = false;
+            if (items[i].object >= 0 && plain[size_t(items[i].object)] &&
+                reaches(items[j], items[i]))
+                plain[size_t(items[i].object)] = false;
     }
     return plain;
 }
 
 Box membersBounds(const SceneSdf& sdf, const std::vector<bool>& plain, bool plainOnes) {
     SceneSdf part;
-    for (size_t i = 0; i < sdf.objects.size(); ++i)
-        if (plain[i] == plainOnes) part.objects.push_back(sdf.objects[i]);
+    std::vector<bool> groupAdded(sdf.groups.size(), false);
+    for (size_t i = 0; i < sdf.objects.size(); ++i) {
+        if (plain[i] != plainOnes) continue;
+        SdfObject o = sdf.objects[i];
+        if (o.group >= 0) {  // its top-level group's reach, as one object
+            int top = o.group;
+            while (sdf.groups[size_t(top)].parent >= 0) top = sdf.groups[size_t(top)].parent;
+            if (groupAdded[size_t(top)]) continue;
+            groupAdded[size_t(top)] = true;
+            const SdfGroup& g = sdf.groups[size_t(top)];
+            o.pos = g.pos, o.bound = g.bound, o.blend = g.blend, o.group = -1;
+        }
+        part.objects.push_back(o);
+    }
     return objectBounds(part);
 }
 
@@ -63,6 +114,7 @@ PlainGrid buildPlainGrid(const SceneSdf& sdf, const std::vector<bool>& plain) {
         g.shapes[12 * i + 7] = -1.0f;  // not a member, until packed
         if (!plain[i]) continue;
         members.objects.push_back(sdf.objects[i]);
+        members.objects.back().group = -1;  // a plain member is a world object of a flat chain
         index.push_back(uint32_t(i));
         packShape(sdf.objects[i], &g.shapes[12 * i]);
     }

@@ -15,7 +15,12 @@
 
 namespace mb {
 
-enum BindingPoint : GLuint { kObjectsBinding = 0, kMaterialsBinding = 1, kLightsBinding = 2 };
+enum BindingPoint : GLuint {
+    kObjectsBinding = 0,
+    kMaterialsBinding = 1,
+    kLightsBinding = 2,
+    kGroupsBinding = 3
+};
 // Unit 2 is the passes' (render_passes.cpp, checkerboard.cpp).
 enum TextureUnit : GLuint {
     kGridCellsUnit = 0,
@@ -59,10 +64,15 @@ Program* Renderer::finishBuild(Build* b, std::string* error) {
     p.bindBlock("Objects", kObjectsBinding);
     p.bindBlock("Materials", kMaterialsBinding);
     p.bindBlock("Lights", kLightsBinding);
-    GLuint store = glGetProgramResourceIndex
-                       ? glGetProgramResourceIndex(p.id(), GL_SHADER_STORAGE_BLOCK, "ObjectStore")
-                       : GL_INVALID_INDEX;
-    if (store != GL_INVALID_INDEX) glShaderStorageBlockBinding(p.id(), store, kObjectsBinding);
+    p.bindBlock("Groups", kGroupsBinding);
+    using Store = std::pair<const char*, GLuint>;
+    for (auto [name, point] :
+         {Store{"ObjectStore", kObjectsBinding}, Store{"GroupStore", kGroupsBinding}}) {
+        GLuint store = glGetProgramResourceIndex
+                           ? glGetProgramResourceIndex(p.id(), GL_SHADER_STORAGE_BLOCK, name)
+                           : GL_INVALID_INDEX;
+        if (store != GL_INVALID_INDEX) glShaderStorageBlockBinding(p.id(), store, point);
+    }
     cache_.push_back({b->features, std::move(b->program)});
     return cache_.back().program.get();
 }
@@ -89,8 +99,14 @@ void Renderer::upload(const GpuScene& g, const ShaderFeatures& f) {
         objectStore_.upload(g.objects.data(), g.objects.size() * sizeof(GpuObject),
                             GL_DYNAMIC_DRAW);
         objectStore_.bindBase(kObjectsBinding);
+        if (f.groups > 0) {
+            groupStore_.upload(g.groups.data(), g.groups.size() * sizeof(GpuGroup),
+                               GL_DYNAMIC_DRAW);
+            groupStore_.bindBase(kGroupsBinding);
+        }
     } else {
         uploadPadded(objects_, g.objects, f.objects, kObjectsBinding);
+        if (f.groups > 0) uploadPadded(groups_, g.groups, f.groups, kGroupsBinding);
     }
     uploadPadded(materials_, g.materials, f.materials, kMaterialsBinding);
     uploadPadded(lights_, g.lights, f.pointLights + f.dirLights, kLightsBinding);
@@ -152,7 +168,9 @@ void Renderer::setUniforms(const Scene& scene, const GpuScene& g, const ShaderFe
     tanHalfFov_ = glm::length(basis.up);
     p.set("uEpsilon", scene.render.epsilon);
     p.set("uMaxDist", maxRayDistance(scene));
-    SceneSdf sdf = makeSceneSdf(scene);  // once per update: the bounds and the grid both read it
+    // Once per update: the bounds and the grids read it, members placed in the world. Only a
+    // flat chain reaches the grid (shaderFeatures), whose cells list world objects.
+    SceneSdf sdf = makeSceneSdf(scene);
     Box bounds = objectBounds(sdf);
     p.set("uBoundLo", bounds.lo);
     p.set("uBoundHi", bounds.hi);
@@ -279,7 +297,8 @@ bool Renderer::wouldCompile(const SceneRequest& request) const {
 
 void Renderer::prepareUber(const SceneRequest& request) {
     const ShaderFeatures& u = request.standIn;
-    if (uberBuild_ || !request.fits(u) || cached(u)) return;
+    // A scene the uber shader cannot draw stands in for itself: nothing to build but its own.
+    if (!u.uber || uberBuild_ || !request.fits(u) || cached(u)) return;
     auto build = std::make_unique<Build>();
     std::string ignored;
     if (startBuild(u, build.get(), &ignored)) uberBuild_ = std::move(build);
@@ -292,8 +311,13 @@ const ShaderFeatures* Renderer::features() const {
 }
 
 void Renderer::rebind() const {
-    if (objectsInStorage_) objectStore_.bindBase(kObjectsBinding);
-    else objects_.bindBase(kObjectsBinding);
+    if (objectsInStorage_) {
+        objectStore_.bindBase(kObjectsBinding);
+        groupStore_.bindBase(kGroupsBinding);
+    } else {
+        objects_.bindBase(kObjectsBinding);
+        groups_.bindBase(kGroupsBinding);
+    }
     materials_.bindBase(kMaterialsBinding);
     lights_.bindBase(kLightsBinding);
     gridCells_.bind(kGridCellsUnit);

@@ -2,9 +2,12 @@
 #include "marchbox/gl/scene_compiler.h"
 
 #include "marchbox/gl/plain_members.h"
+#include "marchbox/gl/scene_tree.h"
 
 #include <algorithm>
-#include <cstdint>
+#include <functional>
+#include <glm/gtc/quaternion.hpp>
+#include <iterator>
 #include <sstream>
 
 namespace mb {
@@ -12,25 +15,45 @@ namespace mb {
 namespace {
 
 // Each type's SDF call, once: `$o` is the object's record, `$q` the point in its frame.
-const char* const kShapeCall[kShapeTypeCount] = {
-    "sdSphere($q, $o.shape.x)",                 // radius
-    "sdBox($q, $o.sizeMinor.xyz)",              // half-extents
-    "sdTorus($q, $o.shape.x, $o.sizeMinor.w)",  // major radius, tube radius
-    "sdCapsule($q, $o.shape.y, $o.shape.x)",    // height, radius
-    "sdCylinder($q, $o.shape.y, $o.shape.x)",   // height, radius
+const char* const kShapeCall[] = {
+    "sdSphere($q, $o.shape.x)",                         // radius
+    "sdBox($q, $o.sizeMinor.xyz)",                      // half-extents
+    "sdTorus($q, $o.shape.x, $o.sizeMinor.w)",          // major radius, tube radius
+    "sdCapsule($q, $o.shape.y, $o.shape.x)",            // height, radius
+    "sdCylinder($q, $o.shape.y, $o.shape.x)",           // height, radius
+    "sdCone($q, $o.shape.y, $o.shape.x, $o.detail.x)",  // height, base and top radii
+    "sdEllipsoid($q, $o.sizeMinor.xyz)",                // semi-axes
 };
+static_assert(std::size(kShapeCall) == kShapeTypeCount, "an SDF call for every ShapeType");
 
-// Each type's exact hit (shaders/intersect.glsl): `$r` and `$d` are the ray in the object's frame.
-const char* const kHitCall[kShapeTypeCount] = {
+// The same with rounded edges (`round`, $o.detail.y), for the types that have edges.
+const char* const kRoundedCall[] = {
+    nullptr,
+    "sdRoundedBox($q, $o.sizeMinor.xyz, $o.detail.y)",
+    nullptr,
+    nullptr,
+    "sdRoundedCylinder($q, $o.shape.y, $o.shape.x, $o.detail.y)",
+    "sdRoundedCone($q, $o.shape.y, $o.shape.x, $o.detail.x, $o.detail.y)",
+    nullptr,
+};
+static_assert(std::size(kRoundedCall) == kShapeTypeCount, "a rounded call or none for every type");
+
+// Each type's exact hit (shaders/intersect.glsl): `$r` and `$d` are the ray in the object's
+// frame. None where no plain member can be of the type (exactlyMet in plain_members.h).
+const char* const kHitCall[] = {
     "hitSphere($r, $d, $o.shape.x)",
     "hitBox($r, $d, $o.sizeMinor.xyz)",
     "hitTorus($r, $d, $o.shape.x, $o.sizeMinor.w)",
     "hitCapsule($r, $d, $o.shape.y, $o.shape.x)",
     "hitCylinder($r, $d, $o.shape.y, $o.shape.x)",
+    nullptr,
+    nullptr,
 };
+static_assert(std::size(kHitCall) == kShapeTypeCount, "a hit call or none for every type");
 
 // Each operator's join onto the chain (shaders/sdf.glsl).
 const char* const kJoin[] = {"joinUnion", "joinSubtract", "joinIntersect"};
+static_assert(std::size(kJoin) == kCsgOpCount, "a join for every CsgOp");
 
 std::string replaceAll(std::string s, const std::string& from, const std::string& to) {
     for (size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
@@ -38,14 +61,19 @@ std::string replaceAll(std::string s, const std::string& from, const std::string
     return s;
 }
 
-std::string shapeCall(ShapeType type, const std::string& record, const std::string& point) {
-    return replaceAll(replaceAll(kShapeCall[int(type)], "$o", record), "$q", point);
+// The object's distance: its type's call, rounded and hollowed where its layout says so.
+std::string shapeCall(ShapeType type, bool rounded, bool shelled, const std::string& record,
+                      const std::string& point) {
+    std::string call = rounded ? kRoundedCall[int(type)] : kShapeCall[int(type)];
+    if (shelled) call = "opShell(" + call + ", $o.detail.z)";
+    return replaceAll(replaceAll(call, "$o", record), "$q", point);
 }
 
 std::string comment(const ObjectLayout& o, int i) {
     return "  // " + std::to_string(i) + ": " + shapeTypeName(o.type) +
            (o.op != CsgOp::Union ? std::string(", ") + csgOpName(o.op) : "") +
-           (o.blended ? ", blended" : "") + (o.rotated ? ", turned" : "");
+           (o.blended ? ", blended" : "") + (o.rotated ? ", turned" : "") +
+           (o.rounded ? ", rounded" : "") + (o.shelled ? ", hollow" : "");
 }
 
 // A vector v of the world in object rec's frame, turned only where the object is.
@@ -53,12 +81,16 @@ std::string inFrame(const ObjectLayout& o, const std::string& rec, const std::st
     return o.rotated ? rec + ".toLocal * (" + v + ")" : v;
 }
 
-std::string objectLine(const ObjectLayout& o, int i) {
+// Object i joined onto the chain `res` at the point `p` (a member of a mirrored or repeated
+// group sees its group's image of the point).
+std::string objectLine(const ObjectLayout& o, int i, const std::string& indent = "    ",
+                       const std::string& res = "res", const std::string& p = "p") {
     std::string rec = "o" + std::to_string(i), id = std::to_string(i);
-    std::string q = inFrame(o, rec, "p - " + rec + ".posBound.xyz");
+    std::string q = inFrame(o, rec, p + " - " + rec + ".posBound.xyz");
     std::string k = o.blended ? rec + ".shape.z" : "0.0";
-    return "    res = " + std::string(kJoin[int(o.op)]) + "(res, " + shapeCall(o.type, rec, q) +
-           ", " + k + ", " + id + ".0);" + comment(o, i) + "\n";
+    return indent + res + " = " + kJoin[int(o.op)] + "(" + res + ", " +
+           shapeCall(o.type, o.rounded, o.shelled, rec, q) + ", " + k + ", " + id + ".0);" +
+           comment(o, i) + "\n";
 }
 
 // A ray call of object i: `$r` and `$d` become the ray in its frame, `$o` its record.
@@ -82,32 +114,168 @@ std::string clearanceLine(const ObjectLayout& o, int i) {
 
 bool plainBall(const ObjectLayout& o) { return o.plain && o.type == ShapeType::Sphere; }
 
+using Keep = std::function<bool(const ObjectLayout&)>;
+
+std::string groupComment(const GroupLayout& g, int n) {
+    static const char* const kAxes[] = {"x", "y", "z"};
+    std::string s = "// group " + std::to_string(n) + ": " + g.name;
+    if (g.op != CsgOp::Union) s += std::string(", ") + csgOpName(g.op);
+    if (g.blended) s += ", blended";
+    std::string axes;
+    for (int a = 0; a < 3; ++a)
+        if (g.mirror[a]) axes += axes.empty() ? kAxes[a] : std::string(", ") + kAxes[a];
+    if (!axes.empty()) s += ", mirrored in " + axes;
+    if (g.repeat != glm::ivec3(1))
+        s += ", " + std::to_string(g.repeat.x) + " x " + std::to_string(g.repeat.y) + " x " +
+             std::to_string(g.repeat.z) + " copies";
+    return s + "\n";
+}
+
+// The GLSL swizzle of the mirrored axes ("x", "xz"), empty for none.
+std::string mirrorSwizzle(const GroupLayout& g) {
+    std::string s;
+    for (int a = 0; a < 3; ++a)
+        if (g.mirror[a]) s += "xyz"[a];
+    return s;
+}
+
+// Writes a chain: the members of one group (or of the top level), a line per object and a
+// nested block per member group, over the objects `keep` selects. A group none of whose objects
+// is kept is left out whole.
+class ChainWriter {
+public:
+    ChainWriter(std::ostringstream& s, const SceneLayout& layout, Keep keep)
+        : s_(s), layout_(layout), keep_(std::move(keep)) {}
+
+    // parent's members among objects [first, end), joined onto `res` at point `p`.
+    void members(int parent, int first, int end, const std::string& indent, const std::string& res,
+                 const std::string& p) {
+        for (int i = first; i < end;) {
+            const ObjectLayout& o = layout_.objects[size_t(i)];
+            if (o.group == parent) {
+                if (keep_(o)) s_ << objectLine(o, i, indent, res, p);
+                ++i;
+                continue;
+            }
+            int g = o.group;  // the member group that holds object i
+            while (layout_.groups[size_t(g)].parent != parent) g = layout_.groups[size_t(g)].parent;
+            if (keeps(g)) group(g, indent, res, p);
+            i = layout_.groups[size_t(g)].end;
+        }
+    }
+
+private:
+    bool keeps(int g) const {
+        const GroupLayout& group = layout_.groups[size_t(g)];
+        for (int i = group.first; i < group.end; ++i)
+            if (keep_(layout_.objects[size_t(i)])) return true;
+        return false;
+    }
+
+    // Where the group's members lie beyond its bounding sphere they leave res as it is (sdf.cpp's
+    // leavesAlone): a loop, not an if, which llvmpipe leaves at once when no ray of a SIMD group
+    // comes near. An intersection always needs its value.
+    void open(const GroupLayout& g, const std::string& rec, const std::string& indent,
+              const std::string& res, const std::string& p) {
+        const std::string lower =
+            "length(" + p + " - " + rec + ".posBound.xyz) - " + rec + ".posBound.w";
+        const std::string k = rec + ".blend.x";
+        if (g.op == CsgOp::Union)
+            s_ << indent << "for (bool near = " << lower << " < " << res << ".x"
+               << (g.blended ? " + " + k : "") << "; near; near = false) {\n";
+        else if (g.op == CsgOp::Subtract)
+            s_ << indent << "for (bool near = " << lower << " < " << (g.blended ? k + " - " : "-")
+               << res << ".x; near; near = false) {\n";
+        else s_ << indent << "{\n";
+    }
+
+    // The point in the group's frame, turned only where the group is.
+    std::string frame(const GroupLayout& g, const std::string& rec, const std::string& p) {
+        std::string v = p + " - " + rec + ".posBound.xyz";
+        return g.turned ? rec + ".toLocal * (" + v + ")" : v;
+    }
+    // A point q of the group's frame back in the world.
+    std::string world(const GroupLayout& g, const std::string& rec, const std::string& q) {
+        return rec + ".posBound.xyz + " + q + (g.turned ? " * " + rec + ".toLocal" : "");
+    }
+
+    void group(int n, const std::string& indent, const std::string& res, const std::string& p) {
+        const GroupLayout& g = layout_.groups[size_t(n)];
+        const std::string id = std::to_string(n), rec = "g" + id, chain = "r" + id;
+        const std::string in = indent + "    ", axes = mirrorSwizzle(g);
+        const std::string k = g.blended ? rec + ".blend.x" : "0.0";
+        s_ << indent << groupComment(g, n);
+        open(g, rec, indent, res, p);
+        std::string result = chain;
+        if (g.repeat == glm::ivec3(1)) {
+            std::string point = p;
+            if (!axes.empty()) {
+                const std::string q = "q" + id;
+                point = "p" + id;
+                s_ << in << "vec3 " << q << " = " << frame(g, rec, p) << ";\n"
+                   << in << q << "." << axes << " = abs(" << q << "." << axes << ");\n"
+                   << in << "vec3 " << point << " = " << world(g, rec, q)
+                   << ";  // the point its members see\n";
+            }
+            s_ << in << "vec2 " << chain << " = vec2(1e10, HIT_NONE);\n";
+            members(n, g.first, g.end, in, chain, point);
+        } else {
+            // The union of the copies that can come nearest (groups.glsl), sharp.
+            const std::string q = "q" + id, copies = "copies" + id, c = "c" + id, i = "n" + id,
+                              point = "p" + id, inner = in + "    ";
+            result = "best" + id;
+            s_ << in << "vec3 " << q << " = " << frame(g, rec, p) << ";\n"
+               << in << "vec2 " << result << " = vec2(1e10, HIT_NONE);\n"
+               << in << "Copies " << copies << " = nearestCopy(" << q << ", " << rec
+               << ".spacing.xyz, ivec3(" << g.repeat.x << ", " << g.repeat.y << ", " << g.repeat.z
+               << "));\n"
+               << in << "for (int " << i << " = 0; " << i << " < " << copies << ".count; ++" << i
+               << ") {\n"
+               << inner << "vec3 " << c << ";\n"
+               << inner << "if (!copyAt(" << copies << ", " << i << ", " << q << ", " << rec
+               << ".spacing, " << result << ".x, " << c << ")) continue;\n";
+            if (!axes.empty())
+                s_ << inner << c << "." << axes << " = abs(" << c << "." << axes << ");\n";
+            s_ << inner << "vec3 " << point << " = " << world(g, rec, c)
+               << ";  // the point this copy's members see\n"
+               << inner << "vec2 " << chain << " = vec2(1e10, HIT_NONE);\n";
+            members(n, g.first, g.end, inner, chain, point);
+            s_ << inner << "if (" << chain << ".x < " << result << ".x) " << result << " = "
+               << chain << ";\n"
+               << inner << "if (" << i << " == 0) widenCopies(" << copies << ", " << q << ", "
+               << rec << ".spacing, " << result << ".x);\n"
+               << in << "}\n";
+        }
+        s_ << in << res << " = " << kJoin[int(g.op)] << "(" << res << ", " << result << ".x, " << k
+           << ", " << result << ".y);  // " << g.name << "\n"
+           << indent << "}\n";
+    }
+
+    std::ostringstream& s_;
+    const SceneLayout& layout_;
+    Keep keep_;
+};
+
 // One function of the chain over the objects `keep` selects.
-template <typename Keep>
-void writeChain(std::ostringstream& s, const char* name, const std::vector<ObjectLayout>& layout,
-                Keep keep) {
+void writeChain(std::ostringstream& s, const char* name, const SceneLayout& layout, Keep keep) {
     s << "vec2 " << name << "(vec3 p) {\n    vec2 res = vec2(1e10, HIT_NONE);\n";
-    for (size_t i = 0; i < layout.size(); ++i)
-        if (keep(layout[i])) s << objectLine(layout[i], int(i));
+    ChainWriter(s, layout, std::move(keep))
+        .members(-1, 0, int(layout.objects.size()), "    ", "res", "p");
     s << "    return res;\n}\n";
 }
 
 // The plain members' exact hits; anyHit (shadows) changes nothing here: the lines run straight
 // through, a loop would not end sooner on llvmpipe.
-void writePlainHits(std::ostringstream& s, const std::vector<ObjectLayout>& layout) {
-    uint64_t members = 0;
-    for (size_t i = 0; i < layout.size(); ++i) members |= uint64_t(layout[i].plain) << i;
-    s << "\n// Whether object id is a plain member.\nbool plainMember(int id) {\n"
-      << "    uint bits = id < 32 ? " << uint32_t(members) << "u : " << uint32_t(members >> 32)
-      << "u;\n    return id >= 0 && ((bits >> uint(id & 31)) & 1u) != 0u;\n}\n";
+void writePlainHits(std::ostringstream& s, const SceneLayout& layout) {
+    const std::vector<ObjectLayout>& objects = layout.objects;
     s << "\n// The plain members, met exactly: x the nearest hit before far, y its object. A loop, "
          "not\n"
          "// an if: llvmpipe leaves it at once when no ray of a SIMD group meets their box.\n"
          "vec2 hitPlainMembers(vec3 ro, vec3 rd, float far, bool anyHit) {\n"
          "    vec2 best = vec2(far, HIT_NONE);\n"
          "    for (bool near = plainBoxMet(ro, rd, far); near; near = false) {\n";
-    for (size_t i = 0; i < layout.size(); ++i)
-        if (layout[i].plain) s << "    " << hitLine(layout[i], int(i));
+    for (size_t i = 0; i < objects.size(); ++i)
+        if (objects[i].plain) s << "    " << hitLine(objects[i], int(i));
     s << "    }\n    return best;\n}\n\n// The marched objects: all but the plain members.\n";
     writeChain(s, "mapRest", layout, [](const ObjectLayout& o) { return !o.plain; });
 }
@@ -117,69 +285,121 @@ void writePlainHits(std::ostringstream& s, const std::vector<ObjectLayout>& layo
 // nothing), and the chain of everything else, which is marched. Searching another shape's
 // penumbra, as the grid does, cost more here than marching it with the rest: in default.txt,
 // a torus and a capsule made the frame 1.5-2x slower.
-void writeSoftShadowParts(std::ostringstream& s, const std::vector<ObjectLayout>& layout) {
+void writeSoftShadowParts(std::ostringstream& s, const SceneLayout& layout) {
+    const std::vector<ObjectLayout>& objects = layout.objects;
     s << "\n// The plain balls' soft shadow: the least of their clearances along the ray.\n"
          "float plainClearance(vec3 ro, vec3 rd, float far, float k) {\n"
          "    float least = 1e10;\n";
-    if (std::any_of(layout.begin(), layout.end(), plainBall)) {
+    if (std::any_of(objects.begin(), objects.end(), plainBall)) {
         s << "    for (bool near = plainBoxNear(ro, rd, far, k); near; near = false) {\n";
-        for (size_t i = 0; i < layout.size(); ++i)
-            if (plainBall(layout[i])) s << "    " << clearanceLine(layout[i], int(i));
+        for (size_t i = 0; i < objects.size(); ++i)
+            if (plainBall(objects[i])) s << "    " << clearanceLine(objects[i], int(i));
         s << "    }\n";
     }
     s << "    return least;\n}\n\n// What soft shadows march: all but the plain balls.\n";
     writeChain(s, "mapSoftRest", layout, [](const ObjectLayout& o) { return !plainBall(o); });
 }
 
+bool ownTurn(const std::optional<glm::quat>& orient, glm::vec3 rot) {
+    return orient ? *orient != glm::quat(1.0f, 0.0f, 0.0f, 0.0f) : rot != glm::vec3(0.0f);
+}
+
 // Whether the shader turns the point into the object's frame. A body of any shape but the
-// sphere turns as it moves, so its shader has the turn from the start and play compiles nothing.
-bool turns(const Object& o) {
-    if (o.dynamic() && o.type != ShapeType::Sphere) return true;
-    return o.orient ? *o.orient != glm::quat(1.0f, 0.0f, 0.0f, 0.0f) : o.rot != glm::vec3(0.0f);
+// sphere turns as it moves, so its shader has the turn from the start and play compiles nothing;
+// so does a member of a turned group, or of a body (scene_tree.h's frameTurned). A ball is the
+// same turned or not: only its own turn, as a top-level ball's, turns it.
+bool turns(const Scene& scene, const Object& o) {
+    if (o.type != ShapeType::Sphere && (o.dynamic() || frameTurned(scene, o.group))) return true;
+    return ownTurn(o.orient, o.rot);
+}
+
+bool anyGroupNotFlat(const SceneLayout& layout) {
+    for (const GroupLayout& g : layout.groups)
+        if (g.op != CsgOp::Union || g.blended || glm::any(g.mirror) || g.repeat != glm::ivec3(1))
+            return true;
+    for (const ObjectLayout& o : layout.objects)
+        if (o.group >= 0 && (o.op != CsgOp::Union || o.blended)) return true;
+    return false;
 }
 
 }  // namespace
 
-std::vector<ObjectLayout> objectLayout(const Scene& scene) {
-    std::vector<ObjectLayout> layout;
-    layout.reserve(scene.objects.size());
+SceneLayout sceneLayout(const Scene& scene) {
+    SceneLayout layout;
+    layout.objects.reserve(scene.objects.size());
     std::vector<bool> plain = plainMembers(scene);
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
-        layout.push_back({o.type, o.op, turns(o), o.blend > 0.0f, plain[i]});
+        layout.objects.push_back({o.type, o.op, turns(scene, o), o.blend > 0.0f, plain[i],
+                                  o.round > 0.0f && kRoundedCall[int(o.type)] != nullptr,
+                                  o.shell > 0.0f, o.group});
+    }
+    for (size_t g = 0; g < scene.groups.size(); ++g) {
+        const Group& group = scene.groups[g];
+        layout.groups.push_back({group.name, group.parent, group.first, groupEnd(scene, int(g)),
+                                 group.op, group.blend > 0.0f, frameTurned(scene, int(g)),
+                                 group.mirror, group.repeat});
     }
     return layout;
 }
 
-std::string compileSceneMap(const std::vector<ObjectLayout>& layout, bool softShadows) {
+std::string compileSceneMap(const SceneLayout& layout, bool softShadows) {
+    const std::vector<ObjectLayout>& objects = layout.objects;
     std::ostringstream s;
-    s << "// The scene, compiled: " << layout.size() << " objects in file order.\n";
-    if (!layout.empty()) {
-        s << "// Read from the Objects block once per pixel: the march reads registers.\nObject";
-        for (size_t i = 0; i < layout.size(); ++i) s << (i ? ", o" : " o") << i;
-        s << ";\n";
+    s << "// The scene, compiled: " << objects.size() << " objects in "
+      << (layout.groups.empty() ? "file order"
+                                : std::to_string(layout.groups.size()) + " groups, in tree order")
+      << ".\n";
+    if (anyGroupNotFlat(layout))
+        s << "// Its groups carve, blend, mirror or repeat their members alone: the uber shader "
+             "and the\n// object grid walk one flat chain, so this scene is always compiled.\n";
+    if (!objects.empty() || !layout.groups.empty()) {
+        s << (layout.groups.empty() ? "// Read from the Objects block"
+                                    : "// Read from the Objects and Groups blocks")
+          << " once per pixel: the march reads registers.\n";
+        if (!objects.empty()) {
+            s << "Object";
+            for (size_t i = 0; i < objects.size(); ++i) s << (i ? ", o" : " o") << i;
+            s << ";\n";
+        }
+        if (!layout.groups.empty()) {
+            s << "Group";
+            for (size_t g = 0; g < layout.groups.size(); ++g) s << (g ? ", g" : " g") << g;
+            s << ";\n";
+        }
     }
     s << "\nvoid loadObjects() {\n";
-    for (size_t i = 0; i < layout.size(); ++i) s << "    o" << i << " = uObjects[" << i << "];\n";
+    for (size_t i = 0; i < objects.size(); ++i) s << "    o" << i << " = uObjects[" << i << "];\n";
+    for (size_t g = 0; g < layout.groups.size(); ++g)
+        s << "    g" << g << " = uGroups[" << g << "];\n";
     s << "}\n\n// x: distance; y: index of the surface's object, HIT_NONE for nothing.\n";
     writeChain(s, "mapObjects", layout, [](const ObjectLayout&) { return true; });
-    if (std::none_of(layout.begin(), layout.end(), [](const ObjectLayout& o) { return o.plain; }))
+    if (std::none_of(objects.begin(), objects.end(), [](const ObjectLayout& o) { return o.plain; }))
         return s.str();
     writePlainHits(s, layout);
     if (softShadows) writeSoftShadowParts(s, layout);
     return s.str();
 }
 
-std::string compileShapeSwitch(unsigned shapes) {
+std::string compileShapeSwitch(unsigned shapes, bool round, bool shell) {
     std::ostringstream s;
+    // With hollow shapes the switch is the solid's, and sdShape hollows it (sdf.cpp's order).
     s << "// Object o's own distance at q, a point in its frame.\n"
-         "float sdShape(Object o, vec3 q) {\n    int type = o.info.x;\n";
-    for (int t = 0; t < kShapeTypeCount; ++t)
-        if (shapes >> t & 1u)
-            s << "    if (type == " << t << ") return " << shapeCall(ShapeType(t), "o", "q")
-              << ";\n";
-    s << "    return 1e10;\n}\n\n"
-         "float sdObjectLocal(int i, vec3 q) { return sdShape(uObjects[i], q); }\n";
+      << (shell ? "float sdSolid(Object o, vec3 q) {\n" : "float sdShape(Object o, vec3 q) {\n")
+      << "    int type = o.info.x;\n";
+    for (int t = 0; t < kShapeTypeCount; ++t) {
+        if (!(shapes >> t & 1u)) continue;
+        const ShapeType type = ShapeType(t);
+        s << "    if (type == " << t << ") return ";
+        if (round && kRoundedCall[t])
+            s << "o.detail.y > 0.0 ? " << shapeCall(type, true, false, "o", "q") << "\n        : ";
+        s << shapeCall(type, false, false, "o", "q") << ";\n";
+    }
+    s << "    return 1e10;\n}\n";
+    if (shell)
+        s << "\nfloat sdShape(Object o, vec3 q) {\n    float d = sdSolid(o, q);\n"
+             "    return o.detail.z > 0.0 ? opShell(d, o.detail.z) : d;\n}\n";
+    s << "\nfloat sdObjectLocal(int i, vec3 q) { return sdShape(uObjects[i], q); }\n";
     return s.str();
 }
 

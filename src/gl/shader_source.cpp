@@ -5,6 +5,7 @@
 #include "marchbox/gl/glsl_conditionals.h"
 #include "marchbox/gl/gpu_scene.h"
 #include "marchbox/gl/plain_members.h"
+#include "marchbox/gl/scene_tree.h"
 #include "marchbox/gl/shader.h"
 
 #include "marchbox/scene/sdf.h"
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <iterator>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -48,6 +50,7 @@ static ShaderFeatures uberFeatures(RenderMode mode, int uniformObjects) {
     f.mode = mode;
     f.shapes = (1u << kShapeTypeCount) - 1;
     f.subtract = f.intersect = f.blend = true;
+    f.round = f.shell = true;
     f.objects = std::min(kMaxObjects, uniformObjects);
     f.materials = kMaxMaterials;
     f.pointLights = f.dirLights = kMaxLights;
@@ -103,24 +106,38 @@ ShaderFeatures shaderFeatures(const Scene& s, RenderMode mode, bool uber, int ma
                               const RenderQuality& quality) {
     int blockBytes = maxUniformBlockBytes > 0 ? maxUniformBlockBytes : 16384;
     int uniformObjects = blockBytes / int(sizeof(GpuObject));
-    if (uber) {
+    const bool flat = flatChain(s);
+    if (uber && flat) {
         ShaderFeatures f = uberFeatures(mode, uniformObjects);
         applyQuality(&f, quality);
         return f;
     }
     ShaderFeatures f;
     f.mode = mode;
+    auto addOp = [&f](CsgOp op, float blend) {
+        f.subtract |= op == CsgOp::Subtract;
+        f.intersect |= op == CsgOp::Intersect;
+        f.blend |= blend > 0;
+    };
     for (const Object& o : s.objects) {
         f.shapes |= 1u << int(o.type);
-        f.subtract |= o.op == CsgOp::Subtract;
-        f.intersect |= o.op == CsgOp::Intersect;
-        f.blend |= o.blend > 0;
+        addOp(o.op, o.blend);
+        f.round |= o.round > 0;
+        f.shell |= o.shell > 0;
     }
     f.objects = int(s.objects.size());
-    f.objectsInStorage = f.objects > uniformObjects;
-    f.grid = usesGrid(s, quality);
-    f.compiled = !f.grid && f.objects <= kGridMinObjects;
-    if (f.compiled) f.layout = objectLayout(s);
+    f.grid = flat && usesGrid(s, quality);
+    f.compiled = !flat || (!f.grid && f.objects <= kGridMinObjects);
+    if (f.compiled) {
+        f.layout = sceneLayout(s);
+        f.groups = int(s.groups.size());
+        for (const Group& g : s.groups) {
+            addOp(g.op, g.blend);
+            f.repeat |= g.repeat != glm::ivec3(1);
+        }
+    }
+    f.objectsInStorage =
+        f.objects > uniformObjects || f.groups * int(sizeof(GpuGroup)) > blockBytes;
     choosePlain(&f, s);
     f.materials = int(s.materials.size());
     for (const Light& l : s.lights) (l.directional ? f.dirLights : f.pointLights)++;
@@ -148,16 +165,20 @@ static std::string counted(int n, const char* what) {
 // How the objects are visited, then one line per group of features.
 std::vector<std::string> describeFeatures(const ShaderFeatures& f) {
     if (f.uber) return {"uber: every feature, switched by uniforms"};
-    std::vector<std::string> lines = {f.compiled ? "compiled: " + counted(f.objects, "object") +
-                                                       ", a line each"
-                                      : f.grid ? "object grid: " + counted(f.objects, "object")
-                                               : "object loop: " + counted(f.objects, "object")};
+    std::vector<std::string> lines = {
+        f.compiled ? "compiled: " + counted(f.objects, "object") +
+                         (f.groups ? " in " + counted(f.groups, "group") : "") + ", a line each"
+        : f.grid ? "object grid: " + counted(f.objects, "object")
+                 : "object loop: " + counted(f.objects, "object")};
     std::vector<std::string> shapes, ops = {"union"}, extras;
     for (int t = 0; t < kShapeTypeCount; ++t)
         if (f.shapes >> t & 1u) shapes.push_back(shapeTypeName(ShapeType(t)));
     if (f.subtract) ops.push_back("subtract");
     if (f.intersect) ops.push_back("intersect");
     if (f.blend) ops.push_back("blended");
+    if (f.round) ops.push_back("rounded");
+    if (f.shell) ops.push_back("hollow");
+    if (f.repeat) ops.push_back("repeated");
     if (!shapes.empty()) lines.insert(lines.end(), {joined(shapes), joined(ops)});
     lines.push_back(counted(f.pointLights, "point light") + ", " +
                     counted(f.dirLights, "directional light"));
@@ -185,13 +206,19 @@ static std::string modeMacro(int mode) {
 static std::vector<std::pair<std::string, long>> featureDefines(const ShaderFeatures& f) {
     std::vector<std::pair<std::string, long>> d = {{"UBER", f.uber}, {"MODE", long(f.mode)}};
     for (int m = 0; m < kRenderModeCount; ++m) d.push_back({modeMacro(m), m});
-    static const char* shapeDefs[kShapeTypeCount] = {"HAS_SPHERE", "HAS_BOX", "HAS_TORUS",
-                                                     "HAS_CAPSULE", "HAS_CYLINDER"};
+    static const char* const shapeDefs[] = {"HAS_SPHERE",   "HAS_BOX",      "HAS_TORUS",
+                                            "HAS_CAPSULE",  "HAS_CYLINDER", "HAS_CONE",
+                                            "HAS_ELLIPSOID"};
+    static_assert(std::size(shapeDefs) == kShapeTypeCount, "a HAS_ macro for every ShapeType");
     for (int i = 0; i < kShapeTypeCount; ++i) d.push_back({shapeDefs[i], (f.shapes >> i) & 1});
     d.insert(d.end(), {{"HAS_SUBTRACT", f.subtract},
                        {"HAS_INTERSECT", f.intersect},
                        {"HAS_BLEND", f.blend},
+                       {"HAS_ROUND", f.round},
+                       {"HAS_SHELL", f.shell},
                        {"NUM_OBJECTS", f.objects},
+                       {"NUM_GROUPS", f.groups},
+                       {"HAS_REPEAT", f.repeat},
                        {"NUM_MATERIALS", f.materials},
                        {"NUM_POINT_LIGHTS", f.pointLights},
                        {"NUM_DIR_LIGHTS", f.dirLights},
@@ -240,7 +267,7 @@ bool fragmentSource(const ShaderFeatures& f, std::string* out, std::string* erro
         return false;
     }
     std::string scene = (f.compiled ? compileSceneMap(f.layout, f.shadows == 2) + "\n" : "") +
-                        compileShapeSwitch(f.shapes);
+                        compileShapeSwitch(f.shapes, f.round, f.shell);
     resolved.replace(at, marker.size(), scene);
     auto markerLine = map.begin() + std::count(resolved.begin(), resolved.begin() + long(at), '\n');
     LineMap sceneLines = linesOf("<scene code>", scene);

@@ -73,7 +73,7 @@ TEST(Compiled, RandomScenesDrawAsTheGeneralProgramDoes) {
 TEST(Compiled, TheRandomScenesCoverEveryTypeOperatorBlendAndRotation) {
     unsigned types = 0, ops = 0, blended = 0, turned = 0;
     for (unsigned seed = 1; seed <= 12; ++seed)
-        for (const ObjectLayout& o : objectLayout(randomScene(seed))) {
+        for (const ObjectLayout& o : sceneLayout(randomScene(seed)).objects) {
             types |= 1u << int(o.type);
             ops |= 1u << int(o.op);
             blended += o.blended;

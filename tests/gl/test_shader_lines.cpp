@@ -38,7 +38,7 @@ void expectEveryLineFound(const ShaderFeatures& f) {
         {"<defines>", splitLines(shaderPrefix(f))},
         {"<scene code>",
          splitLines((f.compiled ? compileSceneMap(f.layout, f.shadows == 2) + "\n" : "") +
-                    compileShapeSwitch(f.shapes))}};
+                    compileShapeSwitch(f.shapes, f.round, f.shell))}};
     for (size_t i = 0; i < lines.size(); ++i) {
         const LineOrigin& o = map[i];
         if (!origins.count(o.file)) origins[o.file] = fileLines(o.file);

@@ -43,6 +43,7 @@ TEST_F(Std140, ObjectOffsetsMatchGpuObject) {
     EXPECT_EQ(blockOffset(program, "uObjects[0].sizeMinor"), GLint(offsetof(GpuObject, sizeMinor)));
     EXPECT_EQ(blockOffset(program, "uObjects[0].shape"), GLint(offsetof(GpuObject, shape)));
     EXPECT_EQ(blockOffset(program, "uObjects[0].info"), GLint(offsetof(GpuObject, info)));
+    EXPECT_EQ(blockOffset(program, "uObjects[0].detail"), GLint(offsetof(GpuObject, detail)));
     EXPECT_EQ(blockOffset(program, "uObjects[0].toLocal"), GLint(offsetof(GpuObject, toLocal)));
     EXPECT_EQ(blockOffset(program, "uObjects[1].posBound"), GLint(sizeof(GpuObject)));
 }

@@ -17,9 +17,19 @@ struct GpuObject {
     float sizeMinor[4];   // box half-extents xyz, torus tube radius
     float shape[4];       // radius, height, blend, unused
     int32_t info[4];      // type, op, material, unused
+    float detail[4];      // cone's top radius, edge radius (round), wall thickness (shell), unused
     float toLocal[3][4];  // mat3 world→local, column-major, each column padded to a vec4
 };
-static_assert(sizeof(GpuObject) == 112, "std140 Object is 112 bytes");
+static_assert(sizeof(GpuObject) == 128, "std140 Object is 128 bytes");
+
+// A group of the compiled tree (gl/scene_compiler.h), from makeSceneSdf's SdfGroup.
+struct GpuGroup {
+    float posBound[4];    // origin xyz in the world, bound of its whole shape (every copy)
+    float spacing[4];     // between copies xyz; w: bound of one copy's shape
+    float blend[4];       // smooth-blend radius of its join, unused
+    float toLocal[3][4];  // mat3 world→group frame, column-major, each column padded to a vec4
+};
+static_assert(sizeof(GpuGroup) == 96, "std140 Group is 96 bytes");
 
 struct GpuMaterial {
     float color[4];   // r g b, Kr
@@ -34,7 +44,8 @@ struct GpuLight {
 static_assert(sizeof(GpuLight) == 32, "std140 Light is 32 bytes");
 
 struct GpuScene {
-    std::vector<GpuObject> objects;
+    std::vector<GpuObject> objects;  // in the world: a member's place composed with its groups'
+    std::vector<GpuGroup> groups;
     std::vector<GpuMaterial> materials;
     std::vector<GpuLight> lights;  // point lights first, then directional ones
     int pointLights = 0, dirLights = 0;
@@ -42,7 +53,8 @@ struct GpuScene {
 
 GpuScene packScene(const Scene& scene);
 
-// Far end of every ray: past the farthest object from the camera, and never under 100 m.
+// Far end of every ray: twice the farthest reach from the camera (of an object, or of a
+// top-level group's bound, which holds its mirrors and copies), and never under 100 m.
 float maxRayDistance(const Scene& scene);
 
 }  // namespace mb

@@ -153,8 +153,8 @@ private:
     std::optional<Failure> failed_;  // not built again until the shaders reload
     Program* current_ = nullptr;
     ScreenQuad quad_;
-    UniformBuffer objects_, materials_, lights_;
-    StorageBuffer objectStore_;
+    UniformBuffer objects_, materials_, lights_, groups_;
+    StorageBuffer objectStore_, groupStore_;
     bool objectsInStorage_ = false;  // which of the two holds the objects (rebind)
     TextureBuffer gridCells_, gridItems_;
     TextureBuffer plainCells_, plainItems_, plainShapes_;  // the plain members' grid

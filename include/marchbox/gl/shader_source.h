@@ -47,22 +47,25 @@ struct ShaderFeatures {
     RenderMode mode = RenderMode::Shaded;
     unsigned shapes = 0;  // bit i set: ShapeType i is present
     bool subtract = false, intersect = false, blend = false;
+    bool round = false, shell = false;  // some object has rounded edges, some is hollow
     int objects = 0, materials = 0, pointLights = 0, dirLights = 0;
+    int groups = 0;       // groups the compiled tree reads (the Groups block); 0 unless compiled
+    bool repeat = false;  // some group has copies (shaders/groups.glsl)
     bool ground = true;
     int steps = 256;      // march steps, a compile-time loop bound
     int shadows = 0;      // 0 none, 1 hard, 2 soft
     int reflections = 0;  // bounces actually possible: 0 when nothing reflects
     bool fog = false, ao = false;
-    bool objectsInStorage = false;  // past the uniform-block limit objects go in an SSBO
+    bool objectsInStorage = false;  // past the uniform-block limit objects (and groups) go in SSBOs
     bool grid = false;              // steps visit one cell of the object grid, not every object
     int relaxPercent = 100;         // applies without the grid only: cell caps are not radii
     bool coneEpsilon = false;
     int shadowSteps = 128;
     unsigned shadowCasters = (1u << kMaxLights) - 1;  // bit i: light i of the Lights block casts
     bool checkerboard = false;
-    bool outline = false;              // the editor's selection ring, shaded views only
-    bool compiled = false;             // the chain is straight-line code, per `layout`
-    std::vector<ObjectLayout> layout;  // empty unless compiled
+    bool outline = false;   // the editor's selection ring, shaded views only
+    bool compiled = false;  // the chain is straight-line code, per `layout`
+    SceneLayout layout;     // empty unless compiled
     // Plain members (gl/plain_members.h) met exactly: 0 none, everything marched; 1 a line each
     // (compiled); 2 through their own grid. `rest`: some objects are still marched.
     int plain = 0;
@@ -72,9 +75,11 @@ struct ShaderFeatures {
 };
 
 // Up to this many objects the chain is compiled straight-line; above it a step looks only at
-// its grid cell. Measured on llvmpipe at 480x270 (docs/render-report.md): compiled against
-// the grid, 8 objects 14 against 54 ms, 32: 52 against 83, 64: 122 against 150, 96: 215
-// against 198; and compiling costs about 30 ms more per object (64 objects: 2 s).
+// its grid cell. A scene whose groups do not flatten (gl/scene_tree.h) is compiled whatever its
+// size, and for the uber shader too: the grid and the uber shader's loop walk one flat chain.
+// Measured on llvmpipe at 480x270 (docs/render-report.md): compiled against the grid, 8 objects 14
+// against 54 ms, 32: 52 against 83, 64: 122 against 150, 96: 215 against 198; and compiling costs
+// about 30 ms more per object (64 objects: 2 s).
 constexpr int kGridMinObjects = 64;
 
 // The rules both the specialised and the uber shader follow, each written once.
@@ -86,6 +91,8 @@ unsigned shadowCasters(const Scene& scene, float cutoff);
 bool usesGrid(const Scene& scene, const RenderQuality& quality);  // see RenderQuality::grid
 
 // maxUniformBlockBytes is GL_MAX_UNIFORM_BLOCK_SIZE; 0 means "assume the GL minimum, 16 KiB".
+// `uber` asks for the general shader; a scene it cannot draw (groups that do not flatten) gets
+// its compiled features instead, whose shader says why in a comment.
 ShaderFeatures shaderFeatures(const Scene& scene, RenderMode mode, bool uber,
                               int maxUniformBlockBytes, const RenderQuality& quality = {});
 

@@ -1,0 +1,27 @@
+// marchbox/gl/scene_tree.h — a scene's groups as the renderer sees them: which flatten into a
+// plain chain of objects, and which need the compiled shader's nested blocks.
+//
+// A group whose members all join by a sharp union, itself joined by a sharp union, with no
+// mirror and one copy, adds its members to its parent's chain exactly as if they stood there
+// one by one: min is associative, and the first of equal distances keeps the surface either
+// way. Such groups flatten. Any other group (a member's subtract or intersect, a blend, a
+// mirror, copies) carves, blends or copies only inside itself: only the compiled shader, which
+// writes the tree as nested blocks, draws it. The uber shader and the object grid walk flat
+// chains, so a scene with such a group is always compiled (shader_source.cpp).
+#pragma once
+
+#include "marchbox/scene/scene.h"
+
+namespace mb {
+
+bool flatGroup(const Scene& scene, int g);  // its members may join its parent's chain directly
+bool flatChain(const Scene& scene);         // every group flattens: one chain of objects
+
+// Whether group g's frame is turned in the world (its own turn or a parent's), or may turn: a
+// body (a dynamic top-level group) turns as it moves, so its shader has the turn from the start
+// and play compiles nothing.
+bool frameTurned(const Scene& scene, int g);
+// Whether object o moves with the simulator: a body of its own, or a member of one.
+bool moves(const Scene& scene, const Object& o);
+
+}  // namespace mb
