@@ -12,23 +12,27 @@ namespace mb {
 
 namespace reference {
 
-// The farthest a camera ray looks: twice the farthest object's reach, and never under 100 m.
-// Only directional shadow rays use it; what lies past the objects is ground, handled in closed
-// form. It is the GPU's uMaxDist, since a low sun's soft penumbra depends on it (the ground's
-// k·h/t term keeps falling along the ray).
-static double farDistance(const Scene& scene) {
+// The farthest a camera ray looks: twice the farthest reach of an object or of a top-level
+// group's bound (which holds its mirrors and copies), and never under 100 m. Only directional
+// shadow rays use it; what lies past the objects is ground, handled in closed form. It is the
+// GPU's uMaxDist, since a low sun's soft penumbra depends on it (the ground's k·h/t term keeps
+// falling along the ray).
+static double farDistance(const Scene& scene, const SceneSdf& sdf) {
     double far = 100.0;
-    for (const Object& o : scene.objects) {
-        double reach = glm::length(dvec3(o.pos) - dvec3(scene.camera.pos)) + makeSdfObject(o).bound;
-        far = std::max(far, 2.0 * reach);
-    }
+    auto reach = [&](glm::vec3 centre, float bound) {
+        far = std::max(
+            far, 2.0 * (glm::length(dvec3(centre) - dvec3(scene.camera.pos)) + double(bound)));
+    };
+    for (const SdfObject& o : sdf.objects) reach(o.pos, o.bound);
+    for (const SdfGroup& g : sdf.groups)
+        if (g.parent < 0) reach(g.pos, g.bound);
     return far;
 }
 
 Model prepareModel(const Scene& scene, const ReferenceOptions& options) {
     Model m;
     m.scene = &scene;
-    m.sdf = makeSceneSdf(scene);
+    m.sdf = makeSceneSdf(scene);  // members in the world, groups evaluated as a tree
     for (const Light& l : scene.lights) {
         dvec3 v = l.directional ? -glm::normalize(dvec3(l.vec)) : dvec3(l.vec);
         m.lights.push_back({l.directional, v, dvec3(l.color) * double(l.intensity)});
@@ -36,7 +40,7 @@ Model prepareModel(const Scene& scene, const ReferenceOptions& options) {
     m.horizon = skyHorizon(scene);
     m.epsilon = scene.render.epsilon;
     m.softness = options.softness;
-    m.far = farDistance(scene);
+    m.far = farDistance(scene, m.sdf);
     return m;
 }
 

@@ -63,10 +63,15 @@ Hit marchObjects(const Model& m, dvec3 o, dvec3 d, double tLimit) {
 
 }  // namespace
 
+// A top-level group's bound holds its members' mirrors and copies, which its objects' own
+// bounds (about the modelled copy) do not.
 double beyondEverything(const Model& m, dvec3 origin) {
     double far = 0.0;
     for (const SdfObject& o : m.sdf.objects)
         far = std::max(far, glm::length(dvec3(o.pos) - origin) + double(o.bound));
+    for (const SdfGroup& g : m.sdf.groups)
+        if (g.parent < 0)
+            far = std::max(far, glm::length(dvec3(g.pos) - origin) + double(g.bound + g.blend));
     return far;
 }
 

@@ -239,3 +239,68 @@ TEST(ReferenceRender, PixelsFollowTheCameraRayAndTopRowFirst) {
         expectColor(dvec3(img.color(x, row)), glm::clamp(r.color, 0.0, 1.0), 1e-3, "pixel");
     }
 }
+
+namespace {
+
+// A static cup at the origin: a cylinder (radius 0.5, y 0 to 1) less a taller one (radius 0.4,
+// from y 0.1 up past the rim), and `before` standing ahead of it in the file.
+Scene cupAfter(const std::string& before) {
+    Scene s = openFloor(bulbAt(dvec3(0, 5, 0)));
+    s.materials.push_back({});
+    Object ball;
+    ball.pos = glm::vec3(0, 0.6f, 0);
+    ball.radius = 0.15f;
+    ball.isStatic = true;
+    if (before == "ball") s.objects.push_back(ball);
+    Group cup;
+    cup.name = "cup";
+    cup.pos = glm::vec3(0, 0.5f, 0);
+    cup.isStatic = true;
+    cup.first = int(s.objects.size());
+    s.groups.push_back(cup);
+    Object wall, hollow;
+    wall.type = hollow.type = ShapeType::Cylinder;
+    wall.group = hollow.group = 0;
+    wall.radius = 0.5f, wall.height = 1.0f;
+    hollow.radius = 0.4f, hollow.height = 1.0f, hollow.pos = glm::vec3(0, 0.1f, 0);
+    hollow.op = CsgOp::Subtract;
+    s.objects.push_back(wall);
+    s.objects.push_back(hollow);
+    return s;
+}
+
+}  // namespace
+
+// The cup's subtract hollows the cup alone: straight down, a ray meets the cup's floor at
+// y = 0.1, and with a ball standing inside the hollow (outside the group, before it in the
+// file) the ball's top at y = 0.75. Flattened into one chain, the subtract would carve the ball.
+TEST(ReferenceRender, AGroupsSubtractCarvesItsGroupAlone) {
+    ReferenceSample empty = traceReference(cupAfter("nothing"), dvec3(0.2, 3, 0), dvec3(0, -1, 0));
+    EXPECT_EQ(empty.object, 1) << "a carved face is the carving object's";
+    EXPECT_NEAR(empty.t, 2.9, 1e-4);
+    ReferenceSample ball = traceReference(cupAfter("ball"), dvec3(0, 3, 0), dvec3(0, -1, 0));
+    EXPECT_EQ(ball.object, 0) << "the ball, whole";
+    EXPECT_NEAR(ball.t, 2.25, 1e-4);
+}
+
+// Five copies of a ball 2 m apart along x (at -4 to 4). A ray from the side, aimed at the far
+// copy, passes no nearer copy: it must march past every object's own bound about the modelled
+// ball to reach it, at |(4, 0, 3)| − 0.3 = 4.7.
+TEST(ReferenceRender, RaysMeetTheFarCopiesOfARepeatedGroup) {
+    Scene s = openFloor(bulbAt(dvec3(0, 5, 0)));
+    s.materials.push_back({});
+    Group row;
+    row.name = "row";
+    row.pos = glm::vec3(0, 0.5f, 0);
+    row.isStatic = true;
+    row.repeat = glm::ivec3(5, 1, 1);
+    row.spacing = glm::vec3(2.0f, 1.0f, 1.0f);
+    s.groups.push_back(row);
+    Object ball;
+    ball.group = 0;
+    ball.radius = 0.3f;
+    s.objects.push_back(ball);
+    ReferenceSample r = traceReference(s, dvec3(0, 0.5, -3), glm::normalize(dvec3(4, 0, 3)));
+    EXPECT_EQ(r.object, 0);
+    EXPECT_NEAR(r.t, 4.7, 1e-4);
+}
