@@ -187,3 +187,13 @@ TEST(Reference, SoftShadowsThroughTheGridAgreeWithTheCpuReference) {
                         test::loadSceneOrDie("scenes/" + std::string(name) + ".txt"), options);
     }
 }
+
+// Format version 3 (tests/scenes/groups_v3.txt): groups carving, nesting, turning, mirroring and
+// repeating, rounded cones, an ellipsoid and a hollow ball, drawn by the compiled tree, agree
+// with the reference, which evaluates the tree with the SDF mirror, as the example scenes do.
+// Measured: ids 0.979, mean 0.26, p99 0.67, open max 1.0. Planted and caught: the compiler's
+// group nesting dropped (ids 0.928), the reference's groups flattened (ids 0.926, open max 97).
+TEST(Reference, GroupsConesAndShellsAgreeWithTheCpuReference) {
+    expectAgreement("groups_v3", test::loadSceneOrDie("tests/scenes/groups_v3.txt"),
+                    test::options(RenderMode::Shaded));
+}

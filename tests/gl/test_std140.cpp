@@ -48,6 +48,32 @@ TEST_F(Std140, ObjectOffsetsMatchGpuObject) {
     EXPECT_EQ(blockOffset(program, "uObjects[1].posBound"), GLint(sizeof(GpuObject)));
 }
 
+// The Groups block exists only in a compiled scene with groups: two here, one in the other.
+TEST_F(Std140, GroupOffsetsMatchGpuGroup) {
+    Scene s;
+    s.materials.push_back({});
+    Group outer, inner;
+    outer.name = "outer";
+    inner.name = "inner", inner.parent = 0, inner.first = 1;
+    s.groups = {outer, inner};
+    for (int g : {0, 1}) {
+        Object o;
+        o.group = g;
+        o.op = g ? CsgOp::Subtract : CsgOp::Union;
+        s.objects.push_back(o);
+    }
+    std::string error;
+    ASSERT_TRUE(renderer.setScene(s, test::options(RenderMode::Shaded), &error)) << error;
+    ASSERT_NE(renderer.features(), nullptr);
+    ASSERT_EQ(renderer.features()->groups, 2);
+    GLuint compiled = renderer.program()->id();
+    EXPECT_EQ(blockOffset(compiled, "uGroups[0].posBound"), GLint(offsetof(GpuGroup, posBound)));
+    EXPECT_EQ(blockOffset(compiled, "uGroups[0].spacing"), GLint(offsetof(GpuGroup, spacing)));
+    EXPECT_EQ(blockOffset(compiled, "uGroups[0].blend"), GLint(offsetof(GpuGroup, blend)));
+    EXPECT_EQ(blockOffset(compiled, "uGroups[0].toLocal"), GLint(offsetof(GpuGroup, toLocal)));
+    EXPECT_EQ(blockOffset(compiled, "uGroups[1].posBound"), GLint(sizeof(GpuGroup)));
+}
+
 TEST_F(Std140, MaterialAndLightOffsetsMatch) {
     EXPECT_EQ(blockOffset(program, "uMaterials[0].color"), GLint(offsetof(GpuMaterial, color)));
     EXPECT_EQ(blockOffset(program, "uMaterials[0].coeffs"), GLint(offsetof(GpuMaterial, coeffs)));
