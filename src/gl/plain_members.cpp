@@ -35,10 +35,11 @@ bool reaches(const ChainItem& later, const ChainItem& earlier) {
 
 std::vector<ChainItem> chainItems(const Scene& scene, const SceneSdf& sdf) {
     std::vector<ChainItem> items;
+    const std::vector<bool> flat = flatGroups(scene);
     for (size_t i = 0; i < scene.objects.size();) {
         const Object& o = scene.objects[i];
         const int top = topGroupOf(scene, o);
-        if (top >= 0 && !flatGroup(scene, top)) {
+        if (top >= 0 && !flat[size_t(top)]) {
             const Group& g = scene.groups[size_t(top)];
             const SdfGroup& s = sdf.groups[size_t(top)];
             items.push_back({-1, g.op, g.blend, s.pos, s.bound, g.dynamic()});

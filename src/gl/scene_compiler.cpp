@@ -313,9 +313,12 @@ bool turns(const Scene& scene, const Object& o) {
     return ownTurn(o.orient, o.rot);
 }
 
+// scene_tree.h's !flatChain, from the layout: a group with members that carves, blends,
+// mirrors or repeats, or a member that does.
 bool anyGroupNotFlat(const SceneLayout& layout) {
     for (const GroupLayout& g : layout.groups)
-        if (g.op != CsgOp::Union || g.blended || glm::any(g.mirror) || g.repeat != glm::ivec3(1))
+        if (g.end > g.first &&
+            (g.op != CsgOp::Union || g.blended || glm::any(g.mirror) || g.repeat != glm::ivec3(1)))
             return true;
     for (const ObjectLayout& o : layout.objects)
         if (o.group >= 0 && (o.op != CsgOp::Union || o.blended)) return true;
@@ -334,11 +337,12 @@ SceneLayout sceneLayout(const Scene& scene) {
                                   o.round > 0.0f && kRoundedCall[int(o.type)] != nullptr,
                                   o.shell > 0.0f, o.group});
     }
+    const std::vector<int> end = groupEnds(scene);
     for (size_t g = 0; g < scene.groups.size(); ++g) {
         const Group& group = scene.groups[g];
-        layout.groups.push_back({group.name, group.parent, group.first, groupEnd(scene, int(g)),
-                                 group.op, group.blend > 0.0f, frameTurned(scene, int(g)),
-                                 group.mirror, group.repeat});
+        layout.groups.push_back({group.name, group.parent, group.first, end[g], group.op,
+                                 group.blend > 0.0f, frameTurned(scene, int(g)), group.mirror,
+                                 group.repeat});
     }
     return layout;
 }

@@ -1,7 +1,6 @@
 // scene_tree.cpp — which groups flatten into a plain chain (see scene_tree.h).
 #include "marchbox/gl/scene_tree.h"
 
-#include <algorithm>
 #include <glm/gtc/quaternion.hpp>
 
 namespace mb {
@@ -16,25 +15,36 @@ bool ownTurn(const std::optional<glm::quat>& orient, glm::vec3 rot) {
 
 }  // namespace
 
-bool flatGroup(const Scene& scene, int g) {
-    const Group& group = scene.groups[size_t(g)];
-    const int end = groupEnd(scene, g);
-    if (end == group.first) return true;  // no members: it adds nothing, wherever it stands
-    if (!sharpUnion(group.op, group.blend) || glm::any(group.mirror) ||
-        group.repeat != glm::ivec3(1))
-        return false;
-    for (int i = group.first; i < end; ++i) {
-        const Object& o = scene.objects[size_t(i)];
-        if (o.group == g && !sharpUnion(o.op, o.blend)) return false;
+std::vector<int> groupEnds(const Scene& scene) {
+    std::vector<int> end(scene.groups.size());
+    for (size_t g = 0; g < scene.groups.size(); ++g) end[g] = scene.groups[g].first;
+    for (size_t i = 0; i < scene.objects.size(); ++i)
+        for (int g = scene.objects[i].group; g >= 0; g = scene.groups[size_t(g)].parent)
+            end[size_t(g)] = int(i) + 1;
+    return end;
+}
+
+// Children stand after their parents in tree order, so one pass from the last group up sees
+// every child before its parent.
+std::vector<bool> flatGroups(const Scene& scene) {
+    const size_t n = scene.groups.size();
+    const std::vector<int> end = groupEnds(scene);
+    std::vector<bool> flat(n, true), blocked(n, false);
+    for (const Object& o : scene.objects)
+        if (o.group >= 0 && !sharpUnion(o.op, o.blend)) blocked[size_t(o.group)] = true;
+    for (size_t g = n; g-- > 0;) {
+        const Group& group = scene.groups[g];
+        if (end[g] == group.first) continue;  // no members: it adds nothing, wherever it stands
+        flat[g] = !blocked[g] && sharpUnion(group.op, group.blend) && !glm::any(group.mirror) &&
+                  group.repeat == glm::ivec3(1);
+        if (!flat[g] && group.parent >= 0) blocked[size_t(group.parent)] = true;
     }
-    for (size_t child = size_t(g) + 1; child < scene.groups.size(); ++child)
-        if (scene.groups[child].parent == g && !flatGroup(scene, int(child))) return false;
-    return true;
+    return flat;
 }
 
 bool flatChain(const Scene& scene) {
-    for (size_t g = 0; g < scene.groups.size(); ++g)
-        if (scene.groups[g].parent < 0 && !flatGroup(scene, int(g))) return false;
+    for (bool flat : flatGroups(scene))
+        if (!flat) return false;
     return true;
 }
 

@@ -161,6 +161,31 @@ TEST(Groups, GroupsThatFlattenDrawAlikeThroughEveryPath) {
     }
 }
 
+// Which groups flatten (scene_tree.h): sharp unions all the way down, no mirror, one copy; a
+// group with no members adds nothing, whatever it would do. The bug it catches: a group judged
+// by its own members alone, its member groups' carving, blends or copies let into the flat chain.
+TEST(Groups, OnlySharpUnionsAllTheWayDownFlatten) {
+    const std::string table = std::string(kHeader) + kTable;
+    EXPECT_TRUE(flatChain(parseOrDie(table)));
+    for (const char* leg : {" op:subtract\n", " op:intersect\n", " blend:0.1\n"}) {
+        std::string text = table;
+        const std::string first = "height:0.7\n";
+        text.replace(text.find(first), first.size(), std::string("height:0.7") + leg);
+        Scene s = parseOrDie(text);
+        EXPECT_FALSE(flatChain(s)) << "a leg of the nested group with" << leg;
+        EXPECT_EQ(flatGroups(s), (std::vector<bool>{false, false})) << leg;
+    }
+    for (const char* key : {" mirror:x", " repeat:2,1,1", " op:subtract", " blend:0.1"}) {
+        std::string text = table;
+        const std::string legs = "group name:legs in:table pos:0,0.35,0";
+        text.replace(text.find(legs), legs.size(), legs + key);
+        EXPECT_FALSE(flatChain(parseOrDie(text))) << key;
+        // The same group with no members adds nothing: it flattens.
+        Scene s = parseOrDie(std::string(kHeader) + "group name:empty static:1" + key + "\n");
+        EXPECT_TRUE(flatChain(s)) << key;
+    }
+}
+
 // The uber shader and the grid walk one flat chain: a scene whose groups carve, blend, mirror or
 // repeat is compiled, for the uber shader too (`marchbox shader --uber`, `render --uber`), and
 // its shader says why. The grid is never used for it, however many objects it has.

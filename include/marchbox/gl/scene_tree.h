@@ -12,10 +12,16 @@
 
 #include "marchbox/scene/scene.h"
 
+#include <vector>
+
 namespace mb {
 
-bool flatGroup(const Scene& scene, int g);  // its members may join its parent's chain directly
-bool flatChain(const Scene& scene);         // every group flattens: one chain of objects
+// For every group, whether its members may join its parent's chain directly (a group with no
+// members adds nothing: it flattens). A group flattens only where its member groups do.
+std::vector<bool> flatGroups(const Scene& scene);
+bool flatChain(const Scene& scene);  // every group flattens: one chain of objects
+// For every group, one past its last object in the tree order (groupEnd, in one pass).
+std::vector<int> groupEnds(const Scene& scene);
 
 // Whether group g's frame is turned in the world (its own turn or a parent's), or may turn: a
 // body (a dynamic top-level group) turns as it moves, so its shader has the turn from the start
