@@ -1,6 +1,10 @@
 // rigid_body.cpp — closed-form mass properties and the free rigid body's rotation (rigid_body.h).
 #include "rigid_body.h"
 
+#include "marchbox/scene/sdf.h"
+
+#include <string>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -132,23 +136,56 @@ bool rotateSymmetric(dquat& q, dvec3& bodyMomentum, const dvec3& inertia, double
     return true;
 }
 
+// A cone's, an ellipsoid's, a rounded or a shelled shape's: from its moments, in closed form
+// where mass_moments.cpp has one, else integrated over its SDF. The shape is symmetric about its
+// local planes (and round about y where its section is a circle), so the moments are made so:
+// the integral's rounding must not tilt the body's axes or move its centre off the axis.
+MassProperties symmetricMass(const Object& o) {
+    Object at = o;
+    at.pos = glm::vec3(0.0f);
+    const SdfObject shape = makeSdfObject(at);
+    Moments m;
+    if (!closedFormMoments(shape, &m)) {
+        std::string key;
+        for (const float v : {float(o.type), o.size.x, o.size.y, o.size.z, o.radius, o.height,
+                              o.top, o.round, o.shell})
+            key.append(reinterpret_cast<const char*>(&v), sizeof v);
+        m = rememberedMoments(key, [&] {
+            return integrateSolid([&](const glm::vec3& p) { return sdObjectLocal(shape, p); },
+                                  double(shape.bound), kIntegrationDepth)
+                .value;
+        });
+    }
+    m.first = dvec3(0.0, o.type == ShapeType::Cone ? m.first.y : 0.0, 0.0);
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
+            if (r != c) m.second[c][r] = 0.0;
+    if (o.type == ShapeType::Cylinder || o.type == ShapeType::Cone ||
+        o.type == ShapeType::Capsule || o.type == ShapeType::Torus)
+        m.second[0][0] = m.second[2][2] = 0.5 * (m.second[0][0] + m.second[2][2]);
+    return massFromMoments(m, double(o.mass));
+}
+
 }  // namespace
 
 MassProperties massProperties(const Object& o) {
     const double m = o.mass, r = o.radius, h = o.height;
-    switch (o.type) {
-        case ShapeType::Sphere:
-            return {m, sphereInertia(m, r)};
-        case ShapeType::Box:
-            return {m, boxInertia(m, dvec3(o.size))};
-        case ShapeType::Torus:
-            return {m, torusInertia(m, r, o.minor)};
-        case ShapeType::Capsule:
-            return {m, capsuleInertia(m, r, h)};
-        case ShapeType::Cylinder:
-            return {m, cylinderInertia(m, r, h)};
-    }
-    return {m, sphereInertia(m, r)};  // unreachable: the loader admits only the five shapes
+    if (o.round <= 0.0f && o.shell <= 0.0f) switch (o.type) {
+            case ShapeType::Sphere:
+                return {m, sphereInertia(m, r)};
+            case ShapeType::Box:
+                return {m, boxInertia(m, dvec3(o.size))};
+            case ShapeType::Torus:
+                return {m, torusInertia(m, r, o.minor)};
+            case ShapeType::Capsule:
+                return {m, capsuleInertia(m, r, h)};
+            case ShapeType::Cylinder:
+                return {m, cylinderInertia(m, r, h)};
+            case ShapeType::Cone:
+            case ShapeType::Ellipsoid:
+                break;
+        }
+    return symmetricMass(o);
 }
 
 // Yoshida's triple jump: Strang steps of w1·h, w0·h, w1·h with w1 = 1/(2 − ∛2), w0 = 1 − 2·w1

@@ -1,9 +1,13 @@
 // rigid_body.h — mass properties of every shape and the torque-free rotation of a rigid body.
 //
-// Pure maths for the rigid-body step: no world, no contacts. Each shape's local frame is its
-// principal frame (every shape is symmetric about its local axes), so the inertia tensor is the
-// diagonal `inertia` and a body's orientation q (body to world) carries it to the world.
+// Pure maths for the rigid-body step: no world, no contacts. Every shape is symmetric about its
+// local axes, so its principal axes are its own and the inertia tensor is the diagonal
+// `inertia`; a body's orientation q (body to world) carries it to the world. Its centre of mass
+// is its origin but for a cone (a frustum's lies towards its base), which is where the body's
+// frame stands (MassProperties::centre).
 #pragma once
+
+#include "mass_moments.h"
 
 #include "marchbox/scene/scene.h"
 
@@ -12,12 +16,9 @@
 
 namespace mb {
 
-struct MassProperties {
-    double mass;         // kg
-    glm::dvec3 inertia;  // principal moments about the local x, y, z axes, kg·m²
-};
-
-// Uniform density and total mass o.mass, from each shape's closed form (rigid_body.cpp).
+// Uniform density and total mass o.mass, from each shape's closed form (rigid_body.cpp); a
+// rounded shape, or a shelled ellipsoid, by integration over its SDF (mass_moments.h), made
+// symmetric as the shape is. `axes` is always the identity.
 MassProperties massProperties(const Object& o);
 
 // The free rigid body's rotation over h (no torque): orientation q (body to world, unit) and

@@ -8,6 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
 #include <glm/geometric.hpp>
 
 using namespace mb;
@@ -138,6 +141,59 @@ TEST(RigidBodyMass, EachShapeMatchesASampledIntegralOfItsSdf) {
         for (int k = 0; k < 3; ++k)
             EXPECT_NEAR(closed[k] / sampled[k], 1.0, 1e-3) << shapeTypeName(type) << " axis " << k;
     }
+}
+
+// Version 3's shapes: cones (pointed and cut), an ellipsoid, every shape hollowed, the edged
+// ones rounded. Their moments about the shape's own origin, I + m·(|c|² − c_k²) from the
+// centre c, against the same sampled integral of the SDF that is drawn; and a cone's centre of
+// mass in closed form: a frustum's lies h·(R² + 2Rr + 3r²) / (4·(R² + Rr + r²)) above its base,
+// a pointed cone's h/4. Closed forms and integrals alike within 1.5e-3 of the samples (the
+// worst measured: 1.1e-3, the ellipsoid's thin shell, integrated where the others have closed
+// forms; the closed forms within 5e-4, the samples' own scatter). Planted: the frustum's
+// Gauss–Legendre nodes at ±√(1/3) (the cone 41 % off); a hollow cylinder's inner cylinder only
+// t shorter, not 2t (8 % off).
+TEST(RigidBodyMass, VersionThreeShapesMatchASampledIntegralOfTheirSdf) {
+    std::vector<Object> shapes;
+    Object o = shape(ShapeType::Cone);
+    shapes.push_back(o);
+    o.top = 0.125f;
+    shapes.push_back(o);
+    shapes.push_back(shape(ShapeType::Ellipsoid));
+    for (ShapeType type : {ShapeType::Sphere, ShapeType::Box, ShapeType::Torus, ShapeType::Capsule,
+                           ShapeType::Cylinder, ShapeType::Cone, ShapeType::Ellipsoid}) {
+        o = shape(type);
+        o.shell = type == ShapeType::Torus ? 0.03125f : 0.0625f;
+        if (type == ShapeType::Box) o.shell = 0.03125f;
+        shapes.push_back(o);
+    }
+    for (ShapeType type : {ShapeType::Box, ShapeType::Cylinder, ShapeType::Cone}) {
+        o = shape(type);
+        o.round = 0.03125f;
+        shapes.push_back(o);
+    }
+    for (const Object& body : shapes) {
+        const MassProperties mp = massProperties(body);
+        EXPECT_EQ(mp.axes, dquat(1.0, 0.0, 0.0, 0.0));
+        dvec3 aboutOrigin = mp.inertia;
+        for (int k = 0; k < 3; ++k)
+            aboutOrigin[k] +=
+                mp.mass * (glm::dot(mp.centre, mp.centre) - mp.centre[k] * mp.centre[k]);
+        const dvec3 sampled = sampledInertia(body, 160);
+        const std::string name =
+            std::string(shapeTypeName(body.type)) + (body.shell > 0.0f ? " shell" : "") +
+            (body.round > 0.0f ? " round" : "") + (body.top > 0.0f ? " cut" : "");
+        for (int k = 0; k < 3; ++k) {
+            std::printf("%-16s axis %d: %.6f sampled %.6f (%+.2g)\n", name.c_str(), k,
+                        aboutOrigin[k], sampled[k], aboutOrigin[k] / sampled[k] - 1.0);
+            EXPECT_NEAR(aboutOrigin[k] / sampled[k], 1.0, 1.5e-3) << name << " axis " << k;
+        }
+    }
+    const double h = 0.5, big = 0.25, small = 0.125;
+    EXPECT_NEAR(massProperties(shapes[0]).centre.y, -h / 2 + h / 4, 1e-12);
+    EXPECT_NEAR(massProperties(shapes[1]).centre.y,
+                -h / 2 + h * (big * big + 2 * big * small + 3 * small * small) /
+                             (4 * (big * big + big * small + small * small)),
+                1e-12);
 }
 
 // The worst relative drift of the energy and of the world angular momentum over 10 s.
