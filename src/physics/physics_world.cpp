@@ -5,6 +5,7 @@
 #include "broadphase.h"
 #include "contact_batches.h"
 #include "contact_solver.h"
+#include "group_body.h"
 #include "impacts.h"
 #include "island.h"
 #include "rigid_bodies.h"
@@ -43,6 +44,7 @@ Found found(int a, int b, const PhysicsBody& onB, int feature, bool curved, cons
 double largestRestitution(const Scene& scene) {
     double e = scene.world.restitution;
     for (const Object& o : scene.objects) e = std::max(e, double(o.restitution.value_or(0.0f)));
+    for (const Group& g : scene.groups) e = std::max(e, double(g.restitution.value_or(0.0f)));
     return e;
 }
 
@@ -50,7 +52,7 @@ double largestRestitution(const Scene& scene) {
 
 struct PhysicsWorld::Impl {
     Impl(const Scene& scene, const PhysicsSettings& settings)
-        : statics(scene),
+        : statics(withoutBodyMembers(scene)),  // a dynamic group's members move with it
           rigid(scene, settings),
           gravity(scene.world.gravity),
           maxRestitution(largestRestitution(scene)),
@@ -178,7 +180,8 @@ PhysicsWorld::PhysicsWorld(const Scene& scene, const PhysicsSettings& settings)
     : settings_(settings), impl_(std::make_unique<Impl>(scene, settings_)) {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
-        if (!o.dynamic() || o.type != ShapeType::Sphere) continue;  // the others: RigidBodies
+        // The others, and hollow spheres: RigidBodies.
+        if (!o.dynamic() || o.type != ShapeType::Sphere || o.shell > 0.0f) continue;
         PhysicsBody b;
         b.pos = dvec3(o.pos);
         b.vel = dvec3(o.vel);
@@ -212,7 +215,7 @@ int PhysicsWorld::rigidCount() const { return impl_->rigid.count(); }
 
 RigidState PhysicsWorld::rigid(int i) const {
     const RigidBody& b = impl_->rigid.body(i);
-    return {b.pos, b.vel, b.spin, b.orient, b.awake, b.object};
+    return {b.origin(), b.vel, b.spin, b.shapeOrient(), b.awake, b.object, b.group, b.pos};
 }
 
 double PhysicsWorld::kineticEnergy() const {

@@ -11,6 +11,9 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_access.hpp>
+#include <limits>
+#include <map>
+#include <string>
 
 namespace mb {
 
@@ -18,12 +21,24 @@ using glm::dmat3;
 using glm::dquat;
 using glm::dvec3;
 
+dquat RigidBody::shapeOrient() const {
+    return framed ? glm::normalize(orient * glm::conjugate(axes)) : orient;
+}
+
+dvec3 RigidBody::origin() const { return framed ? pos - shapeOrient() * centre : pos; }
+
 namespace {
 
-constexpr int kProbeStride = 64;          // StaticCollider ids per body: its probes, then its rims'
 constexpr int kSweeps = 4;                // at most, of a manifold's rows in the relax pass
 constexpr double kSweepTolerance = 1e-3;  // m/s: a sweep that changed no row more has converged
 constexpr int kBounceSweeps = 16;         // of a manifold's rows in restitute: a face bounces whole
+constexpr int kNewtonSteps = 4;           // at most, projecting a point onto a bound's surface
+constexpr int kGroupManifold = 8;         // points a group's manifold keeps (reduceManifold)
+constexpr int kTraceSteps = 64;           // at most, along a ray to a bound's surface
+// A landing no further than this times the bound certifies it: the true distance lies between
+// the two. The gradient's direction is good to ~1e-3 (fineGradient), which moves the landing by
+// its square; the float differences near an edge by ~1e-4. Within it, the bound is used.
+constexpr double kCertified = 1.0 + 1e-3;
 
 // The shape alone, at the origin and unturned: the body's frame.
 SdfObject shapeOf(const Object& o) {
@@ -43,32 +58,147 @@ dmat3 worldInverseInertia(const dquat& q, const dvec3& inertia) {
 }
 
 // The body's signed distance at world point p, and its gradient (tetrahedral differences in
-// the body's frame, where the float SDF sees small numbers, turned back to world).
+// the shape's frame, where the float SDF sees small numbers, turned back to world).
 struct ShapeSample {
     double distance;
     dvec3 normal;
 };
 
+// p in the shape's frame (the body's, moved to its centre and turned to its axes where framed).
 glm::vec3 localPoint(const RigidBody& b, const dvec3& p) {
-    return glm::vec3(glm::conjugate(b.orient) * (p - b.pos));
+    const dvec3 local = glm::conjugate(b.orient) * (p - b.pos);
+    return glm::vec3(b.framed ? b.centre + b.axes * local : local);
 }
 
-double distanceTo(const RigidBody& b, const dvec3& p) {
-    return double(sdObjectLocal(b.shape, localPoint(b, p)));
+double shapeDistance(const RigidBody& b, const glm::vec3& l) {
+    return b.groupShape ? double(b.groupShape->distance(l)) : double(sdObjectLocal(b.shape, l));
 }
 
-dvec3 normalAt(const RigidBody& b, const dvec3& p) {
+double distanceTo(const RigidBody& b, const dvec3& p) { return shapeDistance(b, localPoint(b, p)); }
+
+// Σ k·f(l + h·k) over a tetrahedron's corners k is 4h·∇f: the gradient in the shape's frame,
+// unnormalised, and turned to the world.
+dvec3 gradientAt(const RigidBody& b, const dvec3& p, double* step) {
     const glm::vec3 l = localPoint(b, p);
     const float h = float(1e-3 * b.bound);
     const glm::vec3 k[4] = {{1, -1, -1}, {-1, -1, 1}, {-1, 1, -1}, {1, 1, 1}};
     dvec3 n(0.0);
-    for (const glm::vec3& c : k) n += dvec3(c) * double(sdObjectLocal(b.shape, l + c * h));
-    const double len = glm::length(n);
-    return b.orient * (len > 0.0 ? n / len : dvec3(0, 1, 0));
+    for (const glm::vec3& c : k) n += dvec3(c) * shapeDistance(b, l + c * h);
+    *step = double(h);
+    return n;
 }
 
-ShapeSample sampleShape(const RigidBody& b, const dvec3& p) {
-    return {distanceTo(b, p), normalAt(b, p)};
+dvec3 toWorld(const RigidBody& b, const dvec3& shapeVector) {
+    return b.orient * (b.framed ? glm::conjugate(b.axes) * shapeVector : shapeVector);
+}
+
+// The gradient by central differences a tenth as wide as gradientAt's: Newton's steps go along
+// it, and near a crease of the distance (as far from a cup's wall as from its floor) a wider
+// difference averages the two sides and steps off the nearest point. Good to ~1e-3 in float.
+dvec3 fineGradient(const RigidBody& b, const dvec3& p) {
+    const glm::vec3 l = localPoint(b, p);
+    const float h = float(1e-4 * b.bound);
+    dvec3 g;
+    for (int k = 0; k < 3; ++k) {
+        glm::vec3 e(0.0f);
+        e[k] = h;
+        g[k] = (shapeDistance(b, l + e) - shapeDistance(b, l - e)) / (2.0 * double(h));
+    }
+    return toWorld(b, g);
+}
+
+dvec3 normalAt(const RigidBody& b, const dvec3& p) {
+    double h;
+    const dvec3 n = gradientAt(b, p, &h);
+    const double len = glm::length(n);
+    return toWorld(b, len > 0.0 ? n / len : dvec3(0, 1, 0));
+}
+
+// How far along the ray from p (outside) the surface is, sphere tracing the body's SDF (a bound
+// never steps past it): infinite beyond `limit`, or where the ray takes too many steps.
+double traceRay(const RigidBody& b, const dvec3& p, const dvec3& dir, double limit, double tol) {
+    double t = 0.0;
+    for (int k = 0; k < kTraceSteps; ++k) {
+        const double f = distanceTo(b, p + t * dir);
+        if (f <= tol) return t;
+        t += f;
+        if (t > limit) break;
+    }
+    return std::numeric_limits<double>::infinity();
+}
+
+// The nearest point of the surface seen from p (outside) lies on the ray to it, first on that
+// ray: p's distance is the least over directions of how far the rays go. The gradient's
+// direction and a cube's six faces and eight corners (one of them within 37° of any direction,
+// so a face at distance d is met by 1.25·d), then a pattern search about the best: tilts of a
+// quarter radian that halve whenever none is shorter, to 0.25°. Rays end at `limit`, what the
+// caller can use; with none shorter, the distance is `limit`.
+ShapeSample searchSurface(const RigidBody& b, const dvec3& p, const dvec3& down, double limit,
+                          double tol) {
+    dvec3 best = down;
+    double shortest = traceRay(b, p, down, limit, tol);
+    for (int k = 0; k < 14; ++k) {
+        dvec3 dir(0.0);
+        if (k < 6) {
+            dir[k % 3] = k < 3 ? 1.0 : -1.0;
+        } else {
+            dir = glm::normalize(dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1));
+        }
+        const double t = traceRay(b, p, dir, limit, tol);
+        if (t < shortest) shortest = t, best = dir;
+    }
+    if (!std::isfinite(shortest)) return {limit, -down};
+    for (double tilt = 0.25; tilt > 4e-3;) {
+        const dvec3 u = glm::normalize(
+            glm::cross(best, std::abs(best.x) < 0.57 ? dvec3(1, 0, 0) : dvec3(0, 1, 0)));
+        const dvec3 v = glm::cross(best, u);
+        bool shorter = false;
+        for (const dvec3& side : {u, -u, v, -v}) {
+            const dvec3 dir = glm::normalize(best + tilt * side);
+            const double t = traceRay(b, p, dir, shortest, tol);
+            if (t < shortest) shortest = t, best = dir, shorter = true;
+        }
+        if (!shorter) tilt *= 0.5;
+    }
+    return {shortest, -best};
+}
+
+// Where the body's SDF is a bound, `bound` (its value at p) may be far below the distance to
+// what is drawn: over a cup, max(outer, −inner) is the distance to a lid across its mouth.
+// Newton's steps along the gradient, x −= f·∇f/|∇f|², take p onto f = 0, a point of the true
+// surface, and p's distance is measured from it, |p − x|: no less than the true distance, and
+// certified where it is no more than |f(p)|, which is no more than the true distance (an exact
+// SDF's first step lands so). Where the steps do not land so (over the cup's mouth they go back
+// and forth between its rim's plane and the carved cylinder's top), the rays find the distance,
+// up to `limit` (searchSurface). Points inside keep the bound: a push out no deeper than the
+// true one.
+ShapeSample projectOntoSurface(const RigidBody& b, const dvec3& p, double bound, double limit) {
+    const double tol = 1e-6 * b.bound;
+    dvec3 x = p, down(0.0, -1.0, 0.0);
+    double f = bound;
+    for (int k = 0; k < kNewtonSteps && std::abs(f) > tol; ++k) {
+        const dvec3 g = fineGradient(b, x);
+        const double g2 = glm::dot(g, g);
+        if (g2 < 1e-12) break;
+        if (k == 0) down = -g / std::sqrt(g2);
+        x -= f * g / g2;
+        f = distanceTo(b, x);
+    }
+    const double gap = glm::length(p - x);
+    if (std::abs(f) <= tol && gap <= kCertified * std::abs(bound) + tol)
+        return {bound, normalAt(b, p)};
+    if (bound <= 0.0) return {bound, normalAt(b, p)};
+    ShapeSample found = searchSurface(b, p, down, limit, tol);
+    if (std::abs(f) <= tol && gap < found.distance) found = {gap, (p - x) / gap};
+    return found;
+}
+
+// The distance to what is drawn where it is under `reach`: exact shapes as they are (the normal
+// left to the caller), bounds projected onto their surface.
+ShapeSample surfaceNear(const RigidBody& b, const dvec3& p, double reach) {
+    const double bound = distanceTo(b, p);
+    if (b.exact || bound >= reach) return {bound, dvec3(0.0)};
+    return projectOntoSurface(b, p, bound, reach);
 }
 
 dvec3 relativeVelocity(const RigidContact& c) {
@@ -265,29 +395,144 @@ dvec3 coreOf(const RigidBody& body, const PairContact& c, double behind) {
     return c.point + behind * (double(body.shape.radius) + 0.5 * c.separation) * c.normal;
 }
 
+// Every object but the solid sphere (the spheres' solver has those) and every group.
+bool rigidObject(const Object& o) {
+    return o.dynamic() && (o.type != ShapeType::Sphere || o.shell > 0.0f);
+}
+
+void setMass(RigidBody& b, const MassProperties& mp) {
+    b.invMass = 1.0 / mp.mass;
+    b.inertia = mp.inertia;
+    b.invInertia = worldInverseInertia(b.orient, b.inertia);
+}
+
+RigidBody objectBody(const Object& o, int index, const World& world) {
+    RigidBody b;
+    const MassProperties mp = massProperties(o);
+    const dquat turn = glm::normalize(dquat(o.orientation()));
+    b.framed = mp.centre != dvec3(0.0);  // a cone: its axes are its own
+    b.centre = mp.centre;
+    b.pos = b.framed ? dvec3(o.pos) + turn * b.centre : dvec3(o.pos);
+    b.vel = dvec3(o.vel);
+    b.spin = dvec3(o.spin);
+    b.orient = turn;
+    setMass(b, mp);
+    b.shape = shapeOf(o);
+    b.bound = double(b.shape.bound) + glm::length(b.centre);
+    b.exact = exactShape(b.shape);
+    b.ellipsoid = o.type == ShapeType::Ellipsoid;
+    b.surface = surfaceOf(o, world);
+    b.object = index;
+    b.probes = probesOf(o);
+    b.rims = rimsOf(o);
+    if (b.framed) {
+        for (Probe& p : b.probes) p.local -= b.centre;
+        for (Rim& r : b.rims) r.centre -= b.centre;
+    }
+    return b;
+}
+
+// The bytes that make a group's shape (not its place, materials or motion): groups of the same
+// shape share their mass properties and probes, found once.
+std::string shapeKey(const GroupShape& shape) {
+    std::string key;
+    auto add = [&key](const auto& value) {
+        key.append(reinterpret_cast<const char*>(&value), sizeof value);
+    };
+    auto addVec = [&add](const glm::vec3& v) { add(v.x), add(v.y), add(v.z); };
+    for (const SdfObject& o : shape.sdf.objects) {
+        add(int(o.type)), add(int(o.op)), add(o.group);
+        addVec(o.pos), addVec(o.size);
+        for (int c = 0; c < 3; ++c) addVec(o.toLocal[c]);
+        for (float v : {o.radius, o.minor, o.height, o.blend, o.top, o.round, o.shell}) add(v);
+    }
+    for (const SdfGroup& g : shape.sdf.groups) {
+        add(g.parent), add(int(g.op)), add(g.first), add(g.last), add(g.blend);
+        addVec(g.pos), addVec(g.spacing);
+        for (int c = 0; c < 3; ++c) addVec(g.toLocal[c]);
+        for (int a = 0; a < 3; ++a) add(int(g.mirror[a])), add(g.repeat[a]);
+    }
+    return key;
+}
+
+struct GroupFound {
+    Moments moments;
+    GroupProbes probes;
+};
+
+Surface surfaceOf(const Group& g, const World& world) {
+    return {double(g.friction.value_or(world.friction)),
+            double(g.restitution.value_or(world.restitution))};
+}
+
+// False for a group with no solid: nothing to move.
+bool groupBody(const Scene& scene, int g, std::map<std::string, GroupFound>& found,
+               RigidBody* out) {
+    const Group& group = scene.groups[size_t(g)];
+    auto shape = std::make_shared<GroupShape>(groupShapeOf(scene, g));
+    if (shape->empty()) return false;
+    const std::string key = shapeKey(*shape);
+    auto it = found.find(key);
+    if (it == found.end())
+        it = found
+                 .emplace(key, GroupFound{rememberedMoments(
+                                              key, [&] { return groupMoments(*shape).moments; }),
+                                          groupProbes(*shape)})
+                 .first;
+    if (it->second.moments.volume <= 0.0) return false;
+    const MassProperties mp = massFromMoments(it->second.moments, double(group.mass));
+    RigidBody& b = *out;
+    const dquat turn = glm::normalize(dquat(group.orientation()));
+    b.framed = true;
+    b.centre = mp.centre;
+    b.axes = mp.axes;
+    b.orient = glm::normalize(turn * b.axes);
+    b.pos = dvec3(group.pos) + turn * b.centre;
+    b.vel = dvec3(group.vel);
+    b.spin = dvec3(group.spin);
+    setMass(b, mp);
+    b.groupShape = shape;
+    b.bound = shape->bound + glm::length(b.centre);
+    b.exact = false;
+    b.surface = surfaceOf(group, scene.world);
+    b.group = g;
+    const dquat toBody = glm::conjugate(b.axes);
+    for (const Probe& p : it->second.probes.probes)
+        b.probes.push_back({toBody * (p.local - b.centre), p.radius});
+    for (const Rim& r : it->second.probes.rims)
+        b.rims.push_back({toBody * (r.centre - b.centre), r.radius, toBody * r.axis, r.tube});
+    return true;
+}
+
 }  // namespace
 
+// The bodies in the scene's tree order: a top-level group where it stands, before
+// objects[first]; StaticCollider ids handed out in the same order, each body's in one run.
 RigidBodies::RigidBodies(const Scene& scene, const PhysicsSettings& settings)
-    : settings_(settings), rolling_(scene.world.rolling), dt_(settings.dt), statics_(scene) {
+    : settings_(settings),
+      rolling_(scene.world.rolling),
+      dt_(settings.dt),
+      statics_(withoutBodyMembers(scene)) {
+    std::map<std::string, GroupFound> found;
+    size_t g = 0;
+    auto groupsBefore = [&](size_t i) {
+        for (; g < scene.groups.size() && size_t(scene.groups[g].first) <= i; ++g) {
+            const Group& group = scene.groups[g];
+            RigidBody b;
+            if (group.dynamic() && groupBody(scene, int(g), found, &b))
+                bodies_.push_back(std::move(b));
+        }
+    };
     for (size_t i = 0; i < scene.objects.size(); ++i) {
+        groupsBefore(i);
         const Object& o = scene.objects[i];
-        if (!o.dynamic() || o.type == ShapeType::Sphere) continue;
-        RigidBody b;
-        const MassProperties mp = massProperties(o);
-        b.pos = dvec3(o.pos);
-        b.vel = dvec3(o.vel);
-        b.spin = dvec3(o.spin);
-        b.orient = glm::normalize(dquat(o.orientation()));
-        b.invMass = 1.0 / mp.mass;
-        b.inertia = mp.inertia;
-        b.invInertia = worldInverseInertia(b.orient, b.inertia);
-        b.shape = shapeOf(o);
-        b.bound = double(b.shape.bound);
-        b.surface = surfaceOf(o, scene.world);
-        b.object = int(i);
-        b.probes = probesOf(o);
-        b.rims = rimsOf(o);
-        bodies_.push_back(std::move(b));
+        if (rigidObject(o)) bodies_.push_back(objectBody(o, int(i), scene.world));
+    }
+    groupsBefore(scene.objects.size());
+    int ids = 0;
+    for (RigidBody& b : bodies_) {
+        b.staticIds = ids;
+        ids += int(b.probes.size() + 2 * b.rims.size()) + 3;  // + an ellipsoid's two, the body
     }
 }
 
@@ -399,7 +644,7 @@ void RigidBodies::collideStatics(int i) {
     for (size_t f = 0; f < byFeature.size(); ++f) {
         if (byFeature[f].empty()) continue;
         candidates_ = byFeature[f];
-        reduceManifold(candidates_);
+        reduceManifold(candidates_, b.groupShape ? kGroupManifold : kMaxManifold);
         const double low = lowest(candidates_);
         for (const Candidate& c : candidates_) {
             RigidContact k = contactFrom(c, low, pairKey(i, -1) | std::uint64_t(f) << 8);
@@ -414,8 +659,9 @@ void RigidBodies::collideStatics(int i) {
 void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFeature) {
     const RigidBody& b = bodies_[size_t(i)];
     const double reach = margins_[size_t(i)];
+    const int rimIds = b.staticIds + int(b.probes.size()), lastId = rimIds + 2 * int(b.rims.size());
     // The sphere about the whole body first: inside a pile most bodies are nowhere near a wall.
-    statics_.query(i * kProbeStride + kProbeStride - 1, b.pos, b.bound, reach, hits_, b.bound);
+    statics_.query(lastId + 2, b.pos, b.bound, reach, hits_, b.bound);
     if (hits_.empty()) return;
     // A rim's support point turns about the rim's centre: that is its probe's centre.
     auto add = [&](const StaticHit& hit, const dvec3& at, double radius, int probe,
@@ -427,26 +673,49 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
     };
     for (size_t k = 0; k < b.probes.size(); ++k) {
         const dvec3 c = b.pos + b.orient * b.probes[k].local;
-        statics_.query(i * kProbeStride + int(k), c, b.probes[k].radius, reach, hits_, b.bound);
+        statics_.query(b.staticIds + int(k), c, b.probes[k].radius, reach, hits_, b.bound);
         for (const StaticHit& hit : hits_) add(hit, c, b.probes[k].radius, int(k), c);
     }
-    const dvec3 axis = b.orient * dvec3(0, 1, 0);
     for (size_t r = 0; r < b.rims.size(); ++r) {
-        const dvec3 c = b.pos + b.orient * b.rims[r].centre;
-        const int id = i * kProbeStride + int(b.probes.size() + 2 * r);
-        statics_.query(id, c, 0.0, b.rims[r].radius + reach, hits_, b.bound);
+        const Rim& rim = b.rims[r];
+        const dvec3 c = b.pos + b.orient * rim.centre, axis = b.orient * rim.axis;
+        const int id = rimIds + int(2 * r);
+        statics_.query(id, c, 0.0, rim.radius + rim.tube + reach, hits_, b.bound);
         const std::vector<StaticHit> near = hits_;
         for (const StaticHit& surface : near) {
-            const std::vector<dvec3> support =
-                rimSupport(c, axis, b.rims[r].radius, surface.normal);
+            const std::vector<dvec3> support = rimSupport(c, axis, rim.radius, surface.normal);
             const bool flat = rimLiesFlat(axis, surface.normal);
             for (size_t k = 0; k < support.size(); ++k) {
-                statics_.query(id + 1, support[k], 0.0, reach, hits_, b.bound);
+                statics_.query(id + 1, support[k], rim.tube, reach, hits_, b.bound);
                 for (const StaticHit& hit : hits_)
                     if (hit.feature == surface.feature)
-                        add(hit, support[k], 0.0, int(b.probes.size() + 4 * r + k),
+                        add(hit, support[k], rim.tube, int(b.probes.size() + 4 * r + k),
                             k == 0 && !flat ? c : support[k]);
             }
+        }
+    }
+    if (!b.ellipsoid) return;
+    // An ellipsoid touches each surface at its support point along that surface's normal: the
+    // normal seen from its centre first, then the one seen from that point (a curved surface's).
+    const dvec3 semi(b.shape.size);
+    const int key = int(b.probes.size() + 4 * b.rims.size());
+    statics_.query(lastId, b.pos, 0.0, std::max({semi.x, semi.y, semi.z}) + reach, hits_, b.bound);
+    const std::vector<StaticHit> near = hits_;
+    for (const StaticHit& surface : near) {
+        dvec3 normal = surface.normal;
+        for (int pass = 0; pass < 2; ++pass) {
+            const dvec3 at =
+                b.pos + b.orient * ellipsoidSupport(semi, glm::conjugate(b.orient) * -normal);
+            statics_.query(lastId + 1, at, 0.0, reach, hits_, b.bound);
+            const auto hit = std::find_if(hits_.begin(), hits_.end(), [&](const StaticHit& h) {
+                return h.feature == surface.feature;
+            });
+            if (hit == hits_.end()) break;
+            if (pass == 1 || glm::dot(hit->normal, normal) > 1.0 - 1e-12) {
+                add(*hit, at, 0.0, key, at);
+                break;
+            }
+            normal = hit->normal;
         }
     }
 }
@@ -466,12 +735,17 @@ void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bo
                              int offset) {
     const double reach = reachOf(prober, shape);
     // Most probes are far from the shape: its bounding sphere, then its distance, and only
-    // then the four more samples of its normal.
+    // then the four more samples of its normal (or, on a bound, the projection onto its surface).
     auto probe = [&](const dvec3& at, double radius, int key, const dvec3& centre) {
         if (glm::length(at - shape.pos) - radius >= shape.bound + reach) return;
-        const double separation = distanceTo(shape, at) - radius;
+        const double bound = distanceTo(shape, at);
+        if (bound - radius >= reach) return;
+        const ShapeSample sample = shape.exact
+                                       ? ShapeSample{bound, normalAt(shape, at)}
+                                       : projectOntoSurface(shape, at, bound, radius + reach);
+        const double separation = sample.distance - radius;
         if (separation >= reach) return;
-        const dvec3 normal = normalAt(shape, at);
+        const dvec3 normal = sample.normal;
         const dvec3 point = at - (radius + 0.5 * separation) * normal;
         candidates_.push_back({point, flip ? -normal : normal, separation, offset + key,
                                flip ? centre : point, flip ? point : centre});
@@ -480,25 +754,52 @@ void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bo
         const dvec3 c = prober.pos + prober.orient * prober.probes[k].local;
         probe(c, prober.probes[k].radius, int(k), c);
     }
-    const dvec3 axis = prober.orient * dvec3(0, 1, 0);
     for (size_t r = 0; r < prober.rims.size(); ++r) {
-        const dvec3 c = prober.pos + prober.orient * prober.rims[r].centre;
+        const Rim& rim = prober.rims[r];
+        const dvec3 c = prober.pos + prober.orient * rim.centre, axis = prober.orient * rim.axis;
         // Every point of the rim lies within its radius of c, and the SDF changes no faster
         // than the distance: a rim whose centre is that far out of reach has nothing to find.
-        const double rimReach = prober.rims[r].radius + reach;
+        const double rimReach = rim.radius + rim.tube + reach;
         if (glm::length(c - shape.pos) >= shape.bound + rimReach) continue;
         if (distanceTo(shape, c) >= rimReach) continue;
-        const std::vector<dvec3> support =
-            rimSupport(c, axis, prober.rims[r].radius, normalAt(shape, c));
+        const std::vector<dvec3> support = rimSupport(c, axis, rim.radius, normalAt(shape, c));
         for (size_t k = 0; k < support.size(); ++k)
-            probe(support[k], 0.0, int(prober.probes.size() + 4 * r + k),
+            probe(support[k], rim.tube, int(prober.probes.size() + 4 * r + k),
                   support.size() == 1 ? c : support[k]);
+        if (!shape.groupShape) continue;
+        // A group's shape can meet the rim in several places, each where the distance along the
+        // rim is least (a rim across another cup's rim touches it where the two edges cross):
+        // sixteen points of the rim, and a parabola through each least one and its neighbours.
+        const int fixed = int(prober.probes.size() + 4 * prober.rims.size() + kRimPoints * r);
+        double f[kRimPoints];
+        for (int k = 0; k < kRimPoints; ++k)
+            f[k] = distanceTo(shape, prober.pos + prober.orient * rimPoint(rim, k));
+        for (int k = 0; k < kRimPoints; ++k) {
+            const double before = f[(k + kRimPoints - 1) % kRimPoints],
+                         after = f[(k + 1) % kRimPoints];
+            if (f[k] > before || f[k] >= after || f[k] - rim.tube >= rimReach) continue;
+            const double bend = before - 2.0 * f[k] + after;
+            const double shift =
+                bend > 0.0 ? std::clamp(0.5 * (before - after) / bend, -0.5, 0.5) : 0.0;
+            const dvec3 at = prober.pos + prober.orient * rimPoint(rim, double(k) + shift);
+            probe(at, rim.tube, fixed + k, at);
+        }
     }
+    if (!prober.ellipsoid) return;
+    // The ellipsoid's point furthest into the shape: its support point along the shape's normal.
+    const dvec3 semi(prober.shape.size);
+    const double longest = std::max({semi.x, semi.y, semi.z});
+    if (glm::length(prober.pos - shape.pos) >= shape.bound + longest + reach) return;
+    if (distanceTo(shape, prober.pos) >= longest + reach) return;
+    const dvec3 down = glm::conjugate(prober.orient) * -normalAt(shape, prober.pos);
+    const dvec3 at = prober.pos + prober.orient * ellipsoidSupport(semi, down);
+    probe(at, 0.0, int(prober.probes.size() + kRimIds * prober.rims.size()), at);
 }
 
 // The pair's contacts in closed form where both are boxes or capsules (box_box.h,
 // capsule_contacts.h), normals from a to b; false for every other pair.
 bool RigidBodies::collideAnalytic(const RigidBody& a, const RigidBody& b) {
+    if (a.groupShape || b.groupShape || a.shape.round > 0.0f || b.shape.round > 0.0f) return false;
     const ShapeType ta = a.shape.type, tb = b.shape.type;
     const bool boxA = ta == ShapeType::Box, boxB = tb == ShapeType::Box;
     if ((!boxA && ta != ShapeType::Capsule) || (!boxB && tb != ShapeType::Capsule)) return false;
@@ -528,17 +829,44 @@ void RigidBodies::collidePair(int i, int j) {
         probeShape(bj, bi, false, 0);
         probeShape(bi, bj, true, 128);
     }
-    reduceManifold(candidates_);
-    const double low = lowest(candidates_);
     RigidBody &a = bodies_[size_t(i)], &b = bodies_[size_t(j)];
-    for (const Candidate& c : candidates_) {
-        RigidContact k = contactFrom(c, low, pairKey(i, j));
-        k.a = sideOf(a, c.point, c.centreA);
-        k.b = sideOf(b, c.point, c.centreB);
-        setSurface(k, combine(a.surface, b.surface));
-        contacts_.push_back(k);
-        touching_[size_t(i)] |= b.awake && glm::length(b.vel) > settings_.sleepSpeed;
-        touching_[size_t(j)] |= a.awake && glm::length(a.vel) > settings_.sleepSpeed;
+    auto add = [&](std::uint64_t manifold) {
+        reduceManifold(candidates_, a.groupShape || b.groupShape ? kGroupManifold : kMaxManifold);
+        const double low = lowest(candidates_);
+        for (const Candidate& c : candidates_) {
+            RigidContact k = contactFrom(c, low, pairKey(i, j) | manifold << 8);
+            k.a = sideOf(a, c.point, c.centreA);
+            k.b = sideOf(b, c.point, c.centreB);
+            setSurface(k, combine(a.surface, b.surface));
+            contacts_.push_back(k);
+            touching_[size_t(i)] |= b.awake && glm::length(b.vel) > settings_.sleepSpeed;
+            touching_[size_t(j)] |= a.awake && glm::length(a.vel) > settings_.sleepSpeed;
+        }
+    };
+    if (!a.groupShape && !b.groupShape) return add(0);
+    // A group may touch another body in several places that face different ways (a cup's rim
+    // in another's mouth, against its wall on both sides): one manifold of four points cannot
+    // hold them, and which four it kept would change from step to step. A manifold for each
+    // way the normals face, in a's frame: the nearest of a cube's 26 face, edge and corner
+    // directions, which stays the same from step to step while the contact does.
+    std::vector<Candidate> all;
+    all.swap(candidates_);
+    std::vector<int> bins(all.size());
+    for (size_t c = 0; c < all.size(); ++c) {
+        const dvec3 n = glm::conjugate(a.orient) * all[c].normal;
+        double best = -2.0;
+        for (int k = 0; k < 27; ++k) {
+            const dvec3 d(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1);
+            if (k == 13) continue;
+            const double along = glm::dot(n, d) / glm::length(d);
+            if (along > best) best = along, bins[c] = k;
+        }
+    }
+    for (int bin = 0; bin < 27; ++bin) {
+        candidates_.clear();
+        for (size_t c = 0; c < all.size(); ++c)
+            if (bins[c] == bin) candidates_.push_back(all[c]);
+        if (!candidates_.empty()) add(std::uint64_t(bin));
     }
 }
 
@@ -546,11 +874,12 @@ void RigidBodies::collidePair(int i, int j) {
 // The body's own probes against the sphere are left out: the sphere's distance is exact.
 void RigidBodies::collideSphere(int i, PhysicsBody& sphere, int sphereIndex) {
     RigidBody& b = bodies_[size_t(i)];
-    const ShapeSample s = sampleShape(b, sphere.pos);
-    const double separation = s.distance - sphere.radius;
     const double reach = 4.0 * settings_.linearSlop + glm::length(sphere.vel - b.vel) * dt_ +
                          glm::length(b.spin) * b.bound * dt_;
+    ShapeSample s = surfaceNear(b, sphere.pos, sphere.radius + reach);
+    const double separation = s.distance - sphere.radius;
     if (separation >= reach) return;
+    if (b.exact) s.normal = normalAt(b, sphere.pos);
     const dvec3 point = sphere.pos - (sphere.radius + 0.5 * separation) * s.normal;
     RigidContact k;
     k.a = sideOf(b, point, point);
@@ -842,14 +1171,21 @@ void RigidBodies::updateSleep() {
     }
 }
 
+// The scene keeps the shape's own origin and turn; vel is the centre of mass's, as the body's.
 void RigidBodies::writeBack(Scene& scene) const {
+    auto write = [](const RigidBody& b, auto& record) {
+        record.pos = glm::vec3(b.origin());
+        record.vel = glm::vec3(b.vel);
+        record.spin = glm::vec3(b.spin);
+        record.orient = glm::quat(b.shapeOrient());
+        record.rot = eulerFromRotation(glm::mat3_cast(*record.orient));  // shown in Edit
+    };
     for (const RigidBody& b : bodies_) {
-        Object& o = scene.objects[size_t(b.object)];
-        o.pos = glm::vec3(b.pos);
-        o.vel = glm::vec3(b.vel);
-        o.spin = glm::vec3(b.spin);
-        o.orient = glm::quat(b.orient);
-        o.rot = eulerFromRotation(glm::mat3_cast(*o.orient));  // shown in Edit
+        if (b.group >= 0) {
+            write(b, scene.groups[size_t(b.group)]);
+        } else {
+            write(b, scene.objects[size_t(b.object)]);
+        }
     }
 }
 

@@ -1,5 +1,11 @@
-// rigid_bodies.h — the dynamic bodies that are not spheres: boxes, capsules, cylinders and tori,
-// turned by unit quaternions, touching through manifolds found on their SDFs.
+// rigid_bodies.h — the dynamic bodies that are not spheres: boxes, capsules, cylinders, tori,
+// cones, ellipsoids, hollow spheres and top-level groups, turned by unit quaternions, touching
+// through manifolds found on their SDFs.
+//
+// A body's frame is its centre of mass in its principal axes. For most shapes that is the
+// shape's own frame; a cone's centre lies towards its base, and a group's centre and axes are
+// wherever its solid puts them (group_body.h). The body keeps the offset (`centre`, `axes`) and
+// turns it back into the scene's own origin and turn when it writes the scene.
 //
 // A body's probes (rigid_probes.h) are tested against the SDF of whatever it may touch: the
 // static scene and the ground, another body (both ways: each one's probes against the other's
@@ -18,6 +24,7 @@
 
 #include "broadphase.h"
 #include "contact_solver.h"
+#include "group_body.h"
 #include "rigid_probes.h"
 #include "static_collider.h"
 #include "warm_starts.h"
@@ -28,6 +35,7 @@
 #include <cstdint>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
+#include <memory>
 #include <vector>
 
 namespace mb {
@@ -43,11 +51,24 @@ struct RigidBody {
     Surface surface;             // the body's own, or the world's
     double sleepTime = 0.0;
     bool awake = true;
-    bool supported = false;  // a contact pushed it this substep
-    int object = -1;         // index in Scene::objects
-    SdfObject shape;         // at the origin, unturned
-    std::vector<Probe> probes;
-    std::vector<Rim> rims;
+    bool supported = false;                        // a contact pushed it this substep
+    int object = -1;                               // index in Scene::objects; -1 for a group
+    int group = -1;                                // index in Scene::groups, for a group
+    SdfObject shape;                               // at the origin, unturned (an object's)
+    std::shared_ptr<const GroupShape> groupShape;  // a group's, in the group's frame
+    // The body's frame in the shape's: x_shape = centre + axes·x_body. `framed` where that is
+    // not the identity (a cone, a group), so every other body computes as it always has.
+    glm::dvec3 centre{0.0};
+    glm::dquat axes{1.0, 0.0, 0.0, 0.0};
+    bool framed = false;
+    bool exact = true;          // its SDF is exact: no projection onto the surface needed
+    bool ellipsoid = false;     // probed at its support point along each surface's normal
+    int staticIds = 0;          // its first StaticCollider id (probes, rims, then the whole body)
+    std::vector<Probe> probes;  // in the body's frame
+    std::vector<Rim> rims;      // in the body's frame
+
+    glm::dquat shapeOrient() const;  // the shape's turn in the world (the scene's orient)
+    glm::dvec3 origin() const;       // the shape's origin in the world (the scene's pos)
 };
 
 // Where a contact's point on one side has gone since the step began.
@@ -142,7 +163,7 @@ public:
     void integratePositions(double h, double gravity);
     void restitute(double threshold, double gravity);
     void finishStep();                   // keeps the impulses; sleep
-    void writeBack(Scene& scene) const;  // pos, orient, vel, spin
+    void writeBack(Scene& scene) const;  // pos, orient, vel, spin (objects' and groups')
     double kineticEnergy() const;
     double potentialEnergy(double gravity) const;
     double deepestOverlap() const;  // m, at the last step's start

@@ -31,17 +31,33 @@ void addCircle(std::vector<Probe>& probes, int count, double r, double y0, doubl
     }
 }
 
+// A cone with every face moved in by r, as sdf.cpp's rounding draws it (its `inset`): the base
+// radius r1 at y0, the top r2 at y1; where the slant passes a pointed top, it ends at its apex.
+struct InsetCone {
+    double y0, y1, r1, r2;
+};
+
+InsetCone insetCone(const SdfObject& o, double r) {
+    const double h = double(o.height), slope = (double(o.radius) - double(o.top)) / h;
+    const double side = r * std::sqrt(1.0 + slope * slope);
+    const double r1 = double(o.radius) - slope * r - side, r2 = double(o.top) + slope * r - side;
+    const double y0 = -0.5 * h + r;
+    if (r2 >= 0.0) return {y0, 0.5 * h - r, r1, r2};
+    return {y0, y0 + (h - 2.0 * r) * r1 / (r1 - r2), r1, 0.0};
+}
+
 }  // namespace
 
-std::vector<Probe> probesOf(const Object& o) {
+std::vector<Probe> probesOf(const SdfObject& o) {
     std::vector<Probe> probes;
-    const double h = 0.5 * double(o.height);
+    const double h = 0.5 * double(o.height), round = double(o.round);
     switch (o.type) {
         case ShapeType::Sphere:
             probes.push_back({dvec3(0.0), double(o.radius)});
             break;
         case ShapeType::Box:
-            probes = boxProbes(dvec3(o.size));
+            probes = boxProbes(dvec3(o.size) - round);
+            for (Probe& p : probes) p.radius = round;
             break;
         case ShapeType::Capsule:  // the segment, every quarter: exact against flat faces at its
                                   // ends
@@ -50,17 +66,49 @@ std::vector<Probe> probesOf(const Object& o) {
             break;
         case ShapeType::Cylinder:  // the rims alone, through rimSupport
             break;
+        case ShapeType::Cone:  // the rims, and a pointed top's apex
+            if (const InsetCone c = insetCone(o, round); c.r2 <= 0.0)
+                probes.push_back({dvec3(0.0, c.y1, 0.0), round});
+            break;
         case ShapeType::Torus:  // the core circle, swept by the tube
             addCircle(probes, 24, double(o.radius), 0.0, double(o.minor));
+            break;
+        case ShapeType::Ellipsoid:  // its support point, against each surface
             break;
     }
     return probes;
 }
 
-std::vector<Rim> rimsOf(const Object& o) {
-    if (o.type != ShapeType::Cylinder) return {};
-    const double h = 0.5 * double(o.height);
-    return {{dvec3(0.0, -h, 0.0), double(o.radius)}, {dvec3(0.0, h, 0.0), double(o.radius)}};
+std::vector<Probe> probesOf(const Object& o) { return probesOf(makeSdfObject(o)); }
+
+std::vector<Rim> rimsOf(const SdfObject& o) {
+    const double round = double(o.round);
+    if (o.type == ShapeType::Cylinder) {
+        const double h = 0.5 * double(o.height) - round, r = double(o.radius) - round;
+        return {{dvec3(0.0, -h, 0.0), r, dvec3(0, 1, 0), round},
+                {dvec3(0.0, h, 0.0), r, dvec3(0, 1, 0), round}};
+    }
+    if (o.type != ShapeType::Cone) return {};
+    const InsetCone c = insetCone(o, round);
+    std::vector<Rim> rims = {{dvec3(0.0, c.y0, 0.0), c.r1, dvec3(0, 1, 0), round}};
+    if (c.r2 > 0.0) rims.push_back({dvec3(0.0, c.y1, 0.0), c.r2, dvec3(0, 1, 0), round});
+    return rims;
+}
+
+std::vector<Rim> rimsOf(const Object& o) { return rimsOf(makeSdfObject(o)); }
+
+dvec3 rimPoint(const Rim& rim, double k) {
+    const dvec3 u = glm::normalize(
+        glm::cross(rim.axis, std::abs(rim.axis.x) < 0.57 ? dvec3(1, 0, 0) : dvec3(0, 1, 0)));
+    const dvec3 v = glm::cross(rim.axis, u);
+    const double phi = 2.0 * M_PI * k / kRimPoints;
+    return rim.centre + rim.radius * (std::cos(phi) * u + std::sin(phi) * v);
+}
+
+dvec3 ellipsoidSupport(const dvec3& a, const dvec3& dir) {
+    const dvec3 scaled = a * dir;
+    const double len = glm::length(scaled);
+    return len > 0.0 ? a * scaled / len : dvec3(0.0);
 }
 
 std::vector<dvec3> rimSupport(const dvec3& centre, const dvec3& axis, double radius,

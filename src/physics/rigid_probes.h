@@ -4,12 +4,16 @@
 // A probe at c with radius ρ meets a surface of signed distance f where f(c) < ρ, at the point
 // c − ρ·∇f(c), with separation f(c) − ρ. That is exact for each shape's own geometry: a box's
 // corners and edge points (ρ = 0), a capsule's segment (ρ = its radius), a torus's core circle
-// (ρ = its tube), a sphere's centre. A cylinder's rims are probed at fixed points and, against
-// each surface, at the rim's lowest point along that surface's normal (rimSupport), so that a
-// rolling cylinder touches exactly where a real one does; a rim lying flat on it, at four.
+// (ρ = its tube), a sphere's centre, a pointed cone's apex. A cylinder's and a cone's rims are
+// probed, against each surface, at the rim's lowest point along that surface's normal
+// (rimSupport), so that a rolling cylinder touches exactly where a real one does; a rim lying
+// flat on it, at four. A rounded shape's corners and rims are its inset shape's, each holding a
+// sphere of the rounding's radius. An ellipsoid has no fixed probes: it touches at its support
+// point along the surface's normal (ellipsoidSupport), found against each surface in turn.
 #pragma once
 
 #include "marchbox/scene/scene.h"
+#include "marchbox/scene/sdf.h"
 
 #include <glm/vec3.hpp>
 #include <vector>
@@ -21,15 +25,32 @@ struct Probe {
     double radius;     // of the sphere about it that the shape holds
 };
 
+// In the shape's own frame (sdObjectLocal's).
+std::vector<Probe> probesOf(const SdfObject& o);
 std::vector<Probe> probesOf(const Object& o);
 
-// A cylinder's rims: centre (local) and the rim circle's radius; none for other shapes. They
-// carry no fixed probes: a rolling rim would meet each as the corner of a polygon.
+// A cylinder's or a cone's rims: centre and axis (the shape's frame), the rim circle's radius,
+// and the radius of the sphere it sweeps (a rounded edge's; 0 for a sharp one); none for other
+// shapes. They carry no fixed probes: a rolling rim would meet each as the corner of a polygon.
 struct Rim {
     glm::dvec3 centre;
     double radius;
+    glm::dvec3 axis{0.0, 1.0, 0.0};  // unit, normal to the rim's plane
+    double tube = 0.0;
 };
+std::vector<Rim> rimsOf(const SdfObject& o);
 std::vector<Rim> rimsOf(const Object& o);
+
+// A rim's contact keys: its four support points (rimSupport) and, against a group's shape, whose
+// concave parts one support point may miss (a rim inside a cup's mouth touches its wall on
+// either side), one for each of sixteen points a sixteenth of a turn apart (rimPoint), where
+// the shape comes nearest.
+constexpr int kRimPoints = 16;
+constexpr int kRimIds = 4 + kRimPoints;
+glm::dvec3 rimPoint(const Rim& rim, double k);  // in the rim's frame, k sixteenths of a turn
+
+// The point of an ellipsoid (semi-axes, its own frame) furthest along unit `dir`: A²·d / |A·d|.
+glm::dvec3 ellipsoidSupport(const glm::dvec3& semiAxes, const glm::dvec3& dir);
 
 // Four points of the rim (world centre, world unit axis) a quarter turn apart. The first is the
 // one furthest along −normal, where the rim first meets a surface facing `normal`; the others

@@ -6,11 +6,12 @@
 // [SECTION] Driving it: simulate() and the frame accumulator
 //
 // The scene's World gives gravity, restitution, friction and rolling resistance; PhysicsSettings
-// holds how the method runs. Dynamic objects (Object::dynamic()) move: spheres through the
+// holds how the method runs. Dynamic objects (Object::dynamic()) move: solid spheres through the
 // solver below, every other shape as a turning rigid body (rigid_bodies.h, in the same
-// substeps). Every other object, and the ground plane, is a static collider seen through its
-// SDF (marchbox/scene/sdf.h). The state is double precision so that a sphere 1e5 m from the
-// origin still resolves millimetres; the scene keeps floats.
+// substeps), and so does each dynamic top-level group (Group::dynamic()), as one rigid body of
+// its combined solid. Every other object, and the ground plane, is a static collider seen
+// through its SDF (marchbox/scene/sdf.h). The state is double precision so that a sphere 1e5 m
+// from the origin still resolves millimetres; the scene keeps floats.
 //
 // One step of dt is split into `substeps` soft steps (Box2D v3's "soft step"), more where a
 // rigid contact joins masses over 100 times apart (a soft row is as stiff as its lighter body):
@@ -88,12 +89,16 @@ struct PhysicsBody {
     double friction = 0.0, restitution = 0.0;  // its own, or the world's
 };
 
-// A dynamic body of any shape but the sphere, turned by a unit quaternion (body to world).
+// A dynamic body of any shape but the solid sphere, or a dynamic group: what writeBack puts in
+// the scene, and where its centre of mass is.
 struct RigidState {
-    glm::dvec3 pos, vel, spin;  // m, m/s, rad/s (world)
-    glm::dquat orient;
+    glm::dvec3 pos, vel, spin;  // the object's or group's origin (m), its centre of mass's
+                                // velocity (m/s), its angular velocity (rad/s), world
+    glm::dquat orient;          // the object's or group's turn, to the world
     bool awake;
-    int object;  // index in Scene::objects
+    int object;              // index in Scene::objects, or -1 for a group
+    int group = -1;          // index in Scene::groups, for a group
+    glm::dvec3 centre{0.0};  // its centre of mass, world: pos but for a cone or a group
 };
 
 struct PhysicsStats {
@@ -117,11 +122,12 @@ public:
 
     void step();                         // advance by one fixed step, settings().dt
     void writeBack(Scene& scene) const;  // pos, vel, spin (and orient) into the dynamic objects
+                                         // and groups
 
     int bodyCount() const { return int(bodies_.size()) - 1; }            // dynamic spheres
     const PhysicsBody& body(int i) const { return bodies_[size_t(i)]; }  // in scene order
-    int rigidCount() const;         // dynamic bodies of the other shapes
-    RigidState rigid(int i) const;  // in scene order
+    int rigidCount() const;         // dynamic bodies of the other shapes, and dynamic groups
+    RigidState rigid(int i) const;  // in scene order (a group where it stands, before its members)
     const PhysicsSettings& settings() const { return settings_; }
     const PhysicsStats& stats() const { return stats_; }
     double kineticEnergy() const;    // J, translation and rotation

@@ -54,5 +54,13 @@ Scene pileScene(int count, std::uint32_t seed, float r = 0.1f);
 // The same bin with boxes, capsules, cylinders and spheres of about r in turn, each turned.
 Scene mixedPileScene(int count, std::uint32_t seed, float r = 0.2f);
 Scene gasScene(int count, std::uint32_t seed);  // elastic, frictionless, in a closed box
+// A dynamic cup (a group, named "cupN" for the Nth group) standing at pos, turned by rot: a
+// cylinder of `radius`, 1.6·radius tall, less a cylinder of 0.88·radius from 0.12·radius above
+// its bottom to 0.12·radius above its rim. Its inner floor is 0.12·radius above its bottom.
+void addCup(Scene& scene, glm::vec3 pos, float radius, float mass, glm::vec3 rot = glm::vec3(0.0f));
+// A walled bin, as pileScene's, with `cups` cups of radius r, each turned at random, and above
+// them `balls` balls of 0.4·r: dropped cups and balls, layer by layer (version 3 groups).
+// `walls` false: the same heap on the open ground, with no static object.
+Scene cupPileScene(int cups, int balls, std::uint32_t seed, float r = 0.25f, bool walls = true);
 
 }  // namespace mb

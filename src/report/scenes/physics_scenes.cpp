@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <string>
 
 namespace mb {
 
@@ -290,6 +291,60 @@ Scene gasScene(int count, std::uint32_t seed) {
         const glm::vec3 pos = -glm::vec3(inner) + spacing * (cell + 0.5f);
         const glm::vec3 vel(rng.range(-5, 5), rng.range(-5, 5), rng.range(-5, 5));
         s.objects.push_back(dynamicSphere(pos, r, 1.0f, vel));
+    }
+    return s;
+}
+
+void addCup(Scene& scene, glm::vec3 pos, float radius, float mass, glm::vec3 rot) {
+    Group g;
+    g.name = "cup" + std::to_string(scene.groups.size());
+    g.first = int(scene.objects.size());
+    g.pos = pos;
+    g.rot = rot;
+    g.mass = mass;
+    scene.groups.push_back(g);
+    Object outer;
+    outer.type = ShapeType::Cylinder;
+    outer.radius = radius;
+    outer.height = 1.6f * radius;
+    outer.group = int(scene.groups.size()) - 1;
+    Object inner = outer;
+    inner.radius = 0.88f * radius;
+    inner.pos = {0.0f, 0.12f * radius, 0.0f};
+    inner.op = CsgOp::Subtract;
+    scene.objects.push_back(outer);
+    scene.objects.push_back(inner);
+}
+
+// Cups 2.6·r apart, their bounding spheres' (1.28·r) width whatever their turn, and balls
+// half as far apart above them.
+Scene cupPileScene(int cups, int balls, std::uint32_t seed, float r, bool walls) {
+    Scene s = physicsWorld(9.81f, 0.3f, 0.5f, true);
+    Lcg rng{seed};
+    const float spacing = 2.6f * r, lift = 1.3f * r;
+    const int side = std::max(2, int(std::ceil(std::sqrt((cups + balls / 8) / 4.0f))));
+    const float inner = 0.5f * spacing * float(side) + 0.3f * r;
+    const int cupLayers = (cups + side * side - 1) / (side * side);
+    const int ballLayers = (balls + 4 * side * side - 1) / (4 * side * side);
+    if (walls) addWalls(s, inner, spacing * float(cupLayers + ballLayers + 1), 0.1f);
+    for (int i = 0; i < cups; ++i) {
+        const int layer = i / (side * side), row = (i / side) % side, col = i % side;
+        const glm::vec3 pos(spacing * (float(col) - 0.5f * float(side - 1)),
+                            lift + spacing * float(layer),
+                            spacing * (float(row) - 0.5f * float(side - 1)));
+        const glm::vec3 rot(rng.range(-30.0f, 30.0f), rng.range(0.0f, 180.0f),
+                            rng.range(-30.0f, 30.0f));
+        addCup(s, pos, r, 0.5f, rot);
+    }
+    const float ball = 0.4f * r, top = lift + spacing * float(cupLayers);
+    for (int i = 0; i < balls; ++i) {
+        const int perLayer = 4 * side * side;
+        const int layer = i / perLayer, row = (i / (2 * side)) % (2 * side), col = i % (2 * side);
+        s.objects.push_back(
+            dynamicSphere({0.5f * spacing * (float(col) - 0.5f * float(2 * side - 1)),
+                           top + 2.5f * ball * float(layer),
+                           0.5f * spacing * (float(row) - 0.5f * float(2 * side - 1))},
+                          ball * rng.range(0.9f, 1.0f), sphereMass(ball)));
     }
     return s;
 }
