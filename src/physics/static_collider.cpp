@@ -30,29 +30,110 @@ bool sharpUnion(const SdfObject& o) { return o.op == CsgOp::Union && o.blend <= 
 
 }  // namespace
 
+// The static scene: top-level objects and groups that do not move, with every member of a
+// static group, in tree order; a group's indices move to sdfGroups_.
 StaticCollider::StaticCollider(const Scene& scene)
     : ground_(scene.world.ground), floor_(scene.world.floor) {
-    for (const Object& o : scene.objects)
-        if (!o.dynamic()) statics_.push_back(makeSdfObject(o));
-    std::vector<Surface> own;
-    for (const Object& o : scene.objects)
-        if (!o.dynamic()) own.push_back(surfaceOf(o, scene.world));
-    const int n = int(statics_.size());
-    int chainEnd = 0;  // one past the last object that is not a sharp union
-    for (int i = 0; i < n; ++i)
-        if (!sharpUnion(statics_[i])) chainEnd = i + 1;
-    if (chainEnd > 0) groups_.push_back({0, chainEnd});
-    for (int i = chainEnd; i < n; ++i) groups_.push_back({i, i + 1});
+    const SceneSdf all = makeSceneSdf(scene);
+    auto still = [&](int top, bool dynamic) {
+        return top < 0 ? !dynamic : !scene.groups[size_t(top)].dynamic();
+    };
+    std::vector<int> index(scene.groups.size(), -1);
+    std::vector<int> before(scene.objects.size() + 1, 0);  // static objects before each one
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& o = scene.objects[i];
+        before[i + 1] = before[i] + int(still(topGroupOf(scene, o), o.dynamic()));
+    }
+    for (size_t g = 0; g < scene.groups.size(); ++g) {
+        int top = int(g);
+        while (scene.groups[size_t(top)].parent >= 0) top = scene.groups[size_t(top)].parent;
+        if (!still(top, true)) continue;
+        SdfGroup s = all.groups[g];
+        s.parent = s.parent < 0 ? -1 : index[size_t(s.parent)];
+        s.first = before[size_t(s.first)];
+        s.last = before[size_t(s.last)];
+        index[g] = int(sdfGroups_.size());
+        sdfGroups_.push_back(s);
+    }
+    std::vector<Surface> own;  // per static object: its top-level object's or group's
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& o = scene.objects[i];
+        const int top = topGroupOf(scene, o);
+        if (!still(top, o.dynamic())) continue;
+        SdfObject s = all.objects[i];
+        s.group = o.group < 0 ? -1 : index[size_t(o.group)];
+        statics_.push_back(s);
+        if (top < 0) {
+            own.push_back(surfaceOf(o, scene.world));
+        } else {
+            const mb::Group& g = scene.groups[size_t(top)];
+            own.push_back({double(g.friction.value_or(scene.world.friction)),
+                           double(g.restitution.value_or(scene.world.restitution))});
+        }
+    }
+    chainGroups(scene.world, own);
+    local_.ground = false;
+    path_.ground = false;
+}
+
+// The chain is split into groups whose union is the whole: the records up to the last one that
+// is not a sharp union, then each later one on its own, a scene group being one record.
+void StaticCollider::chainGroups(const World& world, const std::vector<Surface>& own) {
+    struct Record {
+        int first, last;
+        bool sharp;
+    };
+    std::vector<Record> records;
+    for (int i = 0; i < int(statics_.size());) {
+        const SdfObject& o = statics_[size_t(i)];
+        if (o.group < 0) {
+            records.push_back({i, i + 1, sharpUnion(o)});
+            ++i;
+            continue;
+        }
+        int top = o.group;
+        while (sdfGroups_[size_t(top)].parent >= 0) top = sdfGroups_[size_t(top)].parent;
+        const SdfGroup& g = sdfGroups_[size_t(top)];
+        records.push_back({g.first, g.last, g.op == CsgOp::Union && g.blend <= 0.0f});
+        i = g.last;
+    }
+    int chainEnd = 0;  // one past the last record that is not a sharp union
+    for (const Record& r : records)
+        if (!r.sharp) chainEnd = r.last;
+    if (chainEnd > 0) groups_.push_back({0, chainEnd, 0.0, false, {}});
+    for (const Record& r : records)
+        if (r.first >= chainEnd) groups_.push_back({r.first, r.last, 0.0, false, {}});
+    slot_.assign(sdfGroups_.size(), -1);
     for (Group& g : groups_) {
         for (int i = g.first; i < g.last; ++i) g.size = std::max(g.size, double(statics_[i].bound));
         g.loose = g.last - g.first > 1 || !exactShape(statics_[size_t(g.first)]);
+        for (size_t s = 0; s < sdfGroups_.size(); ++s) {
+            const SdfGroup& sg = sdfGroups_[s];
+            if (sg.first < g.first || sg.last > g.last || sg.first == sg.last) continue;
+            slot_[s] = int(g.sdfGroups.size());
+            g.sdfGroups.push_back(int(s));
+            g.size = std::max(g.size, double(sg.bound));
+            g.loose = g.loose || glm::any(sg.mirror);
+        }
     }
-    for (const SdfObject& o : statics_) bounds_.push_back(boundOf(o));
-    surfaces_.push_back({scene.world.friction, scene.world.restitution});
+    // A top-level object adds material by its own op; a group's first member carries its top
+    // group's op and bounding sphere for them all, and the others add nothing of their own.
+    for (size_t i = 0; i < statics_.size(); ++i) {
+        int top = statics_[i].group;
+        if (top < 0) {
+            bounds_.push_back(boundOf(statics_[i]));
+            adds_.push_back(statics_[i].op == CsgOp::Union);
+            continue;
+        }
+        while (sdfGroups_[size_t(top)].parent >= 0) top = sdfGroups_[size_t(top)].parent;
+        const SdfGroup& g = sdfGroups_[size_t(top)];
+        bounds_.push_back({glm::dvec3(g.pos), glm::dmat3(1.0), glm::dvec3(0.0), double(g.bound),
+                           0.25 * g.blend, false, false});
+        adds_.push_back(g.first == int(i) && g.op == CsgOp::Union);
+    }
+    surfaces_.push_back({world.friction, world.restitution});
     for (int end = 0; end <= kKeptEnds; ++end)  // a group's own, then its ends' (StaticHit)
         for (const Group& g : groups_) surfaces_.push_back(own[size_t(g.first)]);
-    local_.ground = false;
-    path_.ground = false;
 }
 
 // Subtract and intersect only remove material and a smooth union of radius k adds at most k/4,
@@ -76,7 +157,7 @@ double StaticCollider::lowerBound(const Group& g, const glm::dvec3& p) const {
     double bound = kInf;
     for (int i = g.first; i < g.last; ++i) {
         const Bound& b = bounds_[size_t(i)];
-        if (statics_[size_t(i)].op != CsgOp::Union) continue;
+        if (!adds_[size_t(i)]) continue;
         const glm::dvec3 d = p - b.centre;
         const glm::dvec3 local = b.rotated ? b.toLocal * d : d;  // the same |components| either way
         // glm::abs and glm::max branch per axis; std::abs and std::max are an instruction each.
@@ -96,10 +177,21 @@ void StaticCollider::localise(const Group& g, const glm::dvec3& origin, SceneSdf
         localGroup_ = int(&g - groups_.data());
         localOrigin_ = origin;
     }
+    if (!append) into.groups.clear();
+    const int objects = int(into.objects.size()), groups = int(into.groups.size());
     for (int i = g.first; i < g.last; ++i) {
         SdfObject o = statics_[i];
         o.pos = glm::vec3(glm::dvec3(o.pos) - origin);
+        if (o.group >= 0) o.group = groups + slot_[size_t(o.group)];
         into.objects.push_back(o);
+    }
+    for (int s : g.sdfGroups) {
+        SdfGroup sg = sdfGroups_[size_t(s)];
+        sg.pos = glm::vec3(glm::dvec3(sg.pos) - origin);
+        if (sg.parent >= 0) sg.parent = groups + slot_[size_t(sg.parent)];
+        sg.first += objects - g.first;
+        sg.last += objects - g.first;
+        into.groups.push_back(sg);
     }
 }
 

@@ -78,6 +78,7 @@ private:
         int first, last;     // objects [first, last) of statics_
         double size = 0.0;   // largest bounding radius of its objects, m
         bool loose = false;  // its SDF is a bound, not a distance (CSG, a blend, a bound shape)
+        std::vector<int> sdfGroups;  // the scene groups that shape it, indices in sdfGroups_
     };
     struct Bound {  // an object's shape lies within `less` of its box or centre
         glm::dvec3 centre;
@@ -152,8 +153,12 @@ private:
         double distance = -1.0;  // none yet
     };
     std::vector<Clearance> clearance_;  // per body given to query()
-    std::vector<SdfObject> statics_;
-    std::vector<Bound> bounds_;  // per static object
+    std::vector<SdfObject> statics_;  // `group`: an index in sdfGroups_
+    std::vector<SdfGroup> sdfGroups_;  // the static top-level groups and their subgroups
+    std::vector<int> slot_;            // per sdfGroups_: its place in its Group's sdfGroups
+    std::vector<Bound> bounds_;        // per static object; a member's is its top group's
+    std::vector<char> adds_;           // per static object: whether lowerBound counts it
+    void chainGroups(const World& world, const std::vector<Surface>& own);
     std::vector<Group> groups_;
     std::vector<Surface> surfaces_;  // per feature: the ground, then each group, again per k
     int groupOf(int feature) const { return (feature - 1) % int(groups_.size()); }
