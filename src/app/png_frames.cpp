@@ -1,15 +1,18 @@
-// png_frames.cpp — a frame sequence as numbered PNG files, encoded and written by a pool of
-// workers, one per core, while the next frames are drawn.
+// png_frames.cpp — a frame sequence as numbered PNG files, encoded by a pool of workers, one per
+// core, while the next frames are drawn, and written in frame order.
 //
 // Encoding a 1920x1080 frame takes about twice as long as llvmpipe takes to draw an empty sky,
 // and a GPU draws it in milliseconds: one thread that drew, read back and encoded in turn left
-// the other cores idle. The queue holds at most one frame per worker, so memory stays bounded
-// (two frames per core in all) and a slow disk slows the drawing rather than filling memory.
+// the other cores idle. At most two frames per worker are in hand (waiting, being encoded, or
+// encoded and waiting for their turn), so memory stays bounded and a slow disk slows the
+// drawing rather than filling memory. Files are written in frame order, so a run that fails or
+// stops leaves the frames before that point and none after, as a run on one thread did.
 #include "frame_output.h"
 
 #include <algorithm>
 #include <condition_variable>
 #include <deque>
+#include <map>
 #include <mutex>
 #include <sys/stat.h>
 #include <thread>
@@ -34,9 +37,10 @@ public:
     // Hands the frame to a worker; false with the first failed frame's error, once one has.
     bool write(int frame, const Image& img, std::string* error) override {
         std::unique_lock<std::mutex> lock(mutex_);
-        room_.wait(lock, [&] { return queue_.size() < workers_.size() || !error_.empty(); });
+        room_.wait(lock, [&] { return order_.size() < 2 * workers_.size() || !error_.empty(); });
         if (!error_.empty()) return *error = error_, false;
         queue_.push_back({frame, img});
+        order_.push_back(frame);
         ready_.notify_one();
         return true;
     }
@@ -45,7 +49,8 @@ public:
         if (!error_.empty()) *error = error_;
         return error_.empty();
     }
-    // Frames not yet begun are dropped; each one begun is finished, so every file is whole.
+    // Frames not yet written are dropped; the one being written is finished, so every file is
+    // whole.
     void abandon() override { stop(true); }
 
 private:
@@ -54,30 +59,45 @@ private:
         Image image;
     };
 
-    // savePng writes a temporary file and renames it, and finishes even when Ctrl-C comes
-    // meanwhile (catchInterrupts only notes it): a frame's file is whole or absent.
     void work() {
+        std::unique_lock<std::mutex> lock(mutex_);
         for (;;) {
-            Job job;
-            {
-                std::unique_lock<std::mutex> lock(mutex_);
-                ready_.wait(lock, [&] { return !queue_.empty() || closing_; });
-                if (queue_.empty()) return;
-                job = std::move(queue_.front());
-                queue_.pop_front();
-                room_.notify_one();
-            }
-            std::string error;
-            if (savePng(pattern_.name(job.frame), job.image, &error)) continue;
-            std::lock_guard<std::mutex> lock(mutex_);
-            if (error_.empty()) error_ = error;
-            room_.notify_all();
+            ready_.wait(lock, [&] { return !queue_.empty() || closing_; });
+            if (queue_.empty()) return;
+            Job job = std::move(queue_.front());
+            queue_.pop_front();
+            lock.unlock();
+            std::string png = encodePng(job.image);
+            lock.lock();
+            encoded_[job.frame] = std::move(png);
+            writeInOrder(lock);
         }
     }
-    void stop(bool dropQueued) {
+    // Writes the encoded frames whose turn has come, one worker at a time. savePngBytes writes
+    // a temporary file and renames it, and finishes even when Ctrl-C comes meanwhile
+    // (catchInterrupts only notes it): a frame's file is whole or absent.
+    void writeInOrder(std::unique_lock<std::mutex>& lock) {
+        if (writing_) return;  // the writer takes this frame too when its turn comes
+        writing_ = true;
+        while (!order_.empty() && encoded_.count(order_.front()) && error_.empty() && !dropping_) {
+            const int frame = order_.front();
+            const std::string png = std::move(encoded_[frame]);
+            encoded_.erase(frame);
+            lock.unlock();
+            std::string error;
+            const bool ok = savePngBytes(pattern_.name(frame), png, &error);
+            lock.lock();
+            order_.pop_front();
+            if (!ok) error_ = error;
+            room_.notify_all();
+        }
+        writing_ = false;
+    }
+    void stop(bool dropUnwritten) {
         {
             std::lock_guard<std::mutex> lock(mutex_);
-            if (dropQueued) queue_.clear();
+            if (dropUnwritten) queue_.clear();
+            dropping_ = dropUnwritten;
             closing_ = true;
         }
         ready_.notify_all();
@@ -88,9 +108,13 @@ private:
     FramePattern pattern_;
     bool skipExisting_;
     std::mutex mutex_;
-    std::condition_variable ready_, room_;  // a frame to encode; room in the queue
-    std::deque<Job> queue_;
-    std::string error_;  // the first frame that failed
+    std::condition_variable ready_, room_;  // a frame to encode; room for another
+    std::deque<Job> queue_;                 // handed in, not yet being encoded
+    std::deque<int> order_;                 // handed in, not yet written, in frame order
+    std::map<int, std::string> encoded_;    // encoded, waiting for their turn
+    bool writing_ = false;                  // a worker is writing frames in order
+    bool dropping_ = false;                 // abandoned: nothing more is written
+    std::string error_;                     // the first frame that failed
     bool closing_ = false;
     std::vector<std::thread> workers_;
 };

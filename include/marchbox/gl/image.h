@@ -18,6 +18,10 @@ struct Image {
 
 Image makeImage(int width, int height);
 bool savePng(const std::string& path, const Image& img, std::string* error);
+// The two halves of savePng, for encoding on one thread and writing on another: the PNG's
+// bytes ("" where it cannot be encoded), and those bytes written to `path` as savePng does.
+std::string encodePng(const Image& img);
+bool savePngBytes(const std::string& path, const std::string& png, std::string* error);
 // Whether savePng could write `path` (checkReplaceFile), *error in its words: before a long render.
 bool checkSavePng(const std::string& path, std::string* error);
 bool loadPng(const std::string& path, Image* out, std::string* error);
