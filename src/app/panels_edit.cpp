@@ -13,7 +13,8 @@
 
 namespace mb {
 
-static const char* const kShapeNames[] = {"sphere", "box", "torus", "capsule", "cylinder"};
+static const char* const kShapeNames[kShapeTypeCount] = {
+    "sphere", "box", "torus", "capsule", "cylinder", "cone", "ellipsoid"};
 static const char* const kOpNames[] = {"union", "subtract", "intersect"};
 static const char* const kLightKinds[] = {"point", "directional"};
 static const char* kObjectPopup = "object popup";

@@ -82,7 +82,8 @@ static void fileMenu(UiContext& c) {
     if (menuItem("File", "Exit", "Ctrl+Q")) request(c, Leave::Exit);
 }
 
-static const char* const kShapeMenuNames[] = {"Sphere", "Box", "Torus", "Capsule", "Cylinder"};
+static const char* const kShapeMenuNames[kShapeTypeCount] = {
+    "Sphere", "Box", "Torus", "Capsule", "Cylinder", "Cone", "Ellipsoid"};
 
 static void editMenu(UiContext& c) {
     Editor& e = c.editor;

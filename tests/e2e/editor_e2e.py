@@ -929,7 +929,7 @@ def check_typed_parts(app, scene):
     app.save()
     typed = {'pos': scene_values(scene, 'object', 'pos')[0],
              'rot': scene_values(scene, 'object', 'rot')[-1],  # the box's: spheres save orient
-             'size': scene_values(scene, 'object', 'size')[2],
+             'size': scene_values(scene, 'object', 'size')[-1],  # only boxes save a size
              'colour': [scene_values(scene, 'material', k)[0][0] for k in 'rgb']}
     want = {'pos': [0.2, 0.9, 0.1], 'rot': [10, 20, 30], 'size': [0.3, 0.4, 0.6],
             'colour': [0.2, 0.4, 0.6]}
