@@ -394,10 +394,10 @@ std::string compileShapeSwitch(unsigned shapes, bool round, bool shell) {
     for (int t = 0; t < kShapeTypeCount; ++t) {
         if (!(shapes >> t & 1u)) continue;
         const ShapeType type = ShapeType(t);
-        s << "    if (type == " << t << ") return ";
-        if (round && kRoundedCall[t])
-            s << "o.detail.y > 0.0 ? " << shapeCall(type, true, false, "o", "q") << "\n        : ";
-        s << shapeCall(type, false, false, "o", "q") << ";\n";
+        // A rounded form with no rounding (round 0) is its shape to the bit: one call, where
+        // a choice of two would run both for a SIMD group whose objects differ.
+        s << "    if (type == " << t << ") return "
+          << shapeCall(type, round && kRoundedCall[t], false, "o", "q") << ";\n";
     }
     s << "    return 1e10;\n}\n";
     if (shell)
