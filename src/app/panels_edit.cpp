@@ -1,13 +1,15 @@
 // panels_edit.cpp — Edit > Objects, Materials, Lights: lists with add, duplicate, delete and
-// clear, the selected item's every field, and the viewport's right-click popup.
+// clear, the active item's every field, and the viewport's right-click popup. Objects lists
+// the scene's tree: groups open and close, their members under them.
 //
-// Fields edit a copy of the item; a changed copy goes back through Editor::edit as one undo
+// Fields edit a copy of the item; a changed copy goes back through the editor as one undo
 // step, keyed by the widget so that one drag is one step.
 #include "ui.h"
 #include "widgets.h"
 
 #include "marchbox/editor/events.h"
 
+#include <algorithm>
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -28,14 +30,24 @@ static void swatch(const Material& m, float size = 0.0f) {
                        ImVec2(size, size));
 }
 
+// Whether a top-level record moves, as its row says it; a member moves with its group.
+template <class R>
+static std::string motionWord(const R& r, int parent) {
+    if (parent >= 0) return "";
+    return r.dynamic() ? ", dynamic" : ", static";
+}
+
 static std::string itemName(const Scene& s, ItemKind k, int i) {
     std::string n = std::to_string(i) + " ";
     switch (k) {
-        case ItemKind::Object: {  // "3 lid: box, subtract, static"
+        case ItemKind::Object: {  // "3 lid: box, subtract, static"; a member's without a motion
             const Object& o = s.objects[size_t(i)];
             if (!o.name.empty()) n += o.name + ": ";
-            return n + shapeTypeName(o.type) + ", " + csgOpName(o.op) +
-                   (o.dynamic() ? ", dynamic" : ", static");
+            return n + shapeTypeName(o.type) + ", " + csgOpName(o.op) + motionWord(o, o.group);
+        }
+        case ItemKind::Group: {  // "cup: group, union, dynamic": names are unique
+            const Group& g = s.groups[size_t(i)];
+            return g.name + ": group, " + csgOpName(g.op) + motionWord(g, g.parent);
         }
         case ItemKind::Material:
             return n + s.materials[size_t(i)].name;
@@ -68,11 +80,15 @@ static void materialCombo(const Scene& s, int* material, FieldEdit& e) {
     ImGui::EndCombo();
 }
 
-// A name, taken on Return when validateName() allows it; `optional`: an empty one clears it.
-static void nameField(std::string* name, bool optional, FieldEdit& e, const char* tooltip) {
+// A name, taken on Return when validateName() allows it and `taken` does not refuse it (a
+// group's name is its own); `optional`: an empty one clears it.
+template <typename Taken>
+static void nameField(std::string* name, bool optional, FieldEdit& e, const char* tooltip,
+                      Taken taken) {
     std::string typed = *name, why;
     if (ImGui::InputText("name", &typed, ImGuiInputTextFlags_EnterReturnsTrue)) {
-        if ((optional && typed.empty()) || validateName(typed, &why)) {
+        if (typed != *name && taken(typed)) why = "another group is named '" + typed + "'";
+        if (why.empty() && ((optional && typed.empty()) || validateName(typed, &why))) {
             *name = typed;
             e.changed = true;
             e.key = 0;  // a name typed is its own undo step
@@ -87,26 +103,50 @@ static void nameField(std::string* name, bool optional, FieldEdit& e, const char
     itemTooltip(itemPath("name"), tooltip);
 }
 
-static void shapeFields(Object& o, FieldEdit& e) {
+static void nameField(std::string* name, bool optional, FieldEdit& e, const char* tooltip) {
+    nameField(name, optional, e, tooltip, [](const std::string&) { return false; });
+}
+
+// pos, rot, op and blend: what objects and groups share. A member's pos and rot are in its
+// group's frame (memberNote says so).
+template <class R>
+static void posField(R& r, FieldEdit& e) {
+    fieldVec3("pos", Field::Position, &r.pos, e);
+}
+
+template <class R>
+static void turnFields(R& r, FieldEdit& e) {
+    const glm::vec3 rot = r.rot;
+    fieldVec3("rot", Field::Rotation, &r.rot, e);
+    if (r.rot != rot) r.orient.reset();  // typed angles replace the exact turn
+    int op = int(r.op);
+    fieldCombo("op", &op, kOpNames, kCsgOpCount, e,
+               "How it joins what comes before it in its chain (its group's, or the top level's):\n"
+               "union, subtract (carve it out) or intersect (keep only the overlap).");
+    r.op = CsgOp(op);
+    fieldFloat("blend", Field::Blend, &r.blend, e);
+}
+
+static void sizeFields(Object& o, FieldEdit& e) {
+    const ShapeType t = o.type;
+    if (t == ShapeType::Box || t == ShapeType::Ellipsoid)
+        fieldVec3("size", Field::HalfExtent, &o.size, e);
+    else fieldFloat("radius", Field::Radius, &o.radius, e);
+    if (t == ShapeType::Torus) fieldFloat("minor", Field::Minor, &o.minor, e);
+    if (t == ShapeType::Capsule || t == ShapeType::Cylinder || t == ShapeType::Cone)
+        fieldFloat("height", Field::Height, &o.height, e);
+    if (t == ShapeType::Cone) fieldFloat("top", Field::Top, &o.top, e);
+    fitShape(o);  // a cone's top below its radius, rounds and walls within the shape
+}
+
+static void shapeFields(const Scene& s, int i, Object& o, FieldEdit& e) {
     int type = int(o.type);
     fieldCombo("type", &type, kShapeNames, kShapeTypeCount, e,
                "The shape; its size fields follow.");
-    if (ShapeType(type) != o.type) o = retyped(o, ShapeType(type));  // resting where it stood
-    fieldVec3("pos", Field::Position, &o.pos, e);
-    if (o.type == ShapeType::Box) fieldVec3("size", Field::HalfExtent, &o.size, e);
-    else fieldFloat("radius", Field::Radius, &o.radius, e);
-    if (o.type == ShapeType::Torus) fieldFloat("minor", Field::Minor, &o.minor, e);
-    if (o.type == ShapeType::Capsule || o.type == ShapeType::Cylinder)
-        fieldFloat("height", Field::Height, &o.height, e);
-    const glm::vec3 rot = o.rot;
-    fieldVec3("rot", Field::Rotation, &o.rot, e);
-    if (o.rot != rot) o.orient.reset();  // typed angles replace the exact turn
-    int op = int(o.op);
-    fieldCombo("op", &op, kOpNames, kCsgOpCount, e,
-               "How it joins the objects before it in the list: union, subtract (carve it out)\n"
-               "or intersect (keep only the overlap).");
-    o.op = CsgOp(op);
-    fieldFloat("blend", Field::Blend, &o.blend, e);
+    if (ShapeType(type) != o.type) o = retypedIn(s, i, ShapeType(type));  // resting where it stood
+    posField(o, e);
+    sizeFields(o, e);
+    turnFields(o, e);
 }
 
 // Friction and restitution show the world's value until the object is given its own.
@@ -117,36 +157,65 @@ static void ownFloat(const char* label, Field f, std::optional<float>* own, floa
     if (value != own->value_or(world)) *own = value;
 }
 
-static void motionFields(Object& o, const World& w, FieldEdit& e) {
-    bool dynamic = !o.isStatic;
+// A top-level object's or group's motion; a member has none (it moves with its group).
+template <class R>
+static void motionFields(R& r, const char* what, const World& w, FieldEdit& e) {
+    bool dynamic = !r.isStatic;
     fieldFlag("dynamic", &dynamic, e,
-              "A dynamic object (with a mass) falls, tumbles and collides as a rigid body of its\n"
-              "shape; a static one never moves.");
-    o.isStatic = !dynamic;
-    fieldFloat("mass", Field::Mass, &o.mass, e);
-    ownFloat("friction", Field::Friction, &o.friction, w.friction, e);
-    ownFloat("restitution", Field::Restitution, &o.restitution, w.restitution, e);
-    fieldVec3("vel", Field::Velocity, &o.vel, e);
-    fieldVec3("spin", Field::Spin, &o.spin, e);
-    if (!o.dynamic()) ImGui::TextDisabled("static collider: tick dynamic, with a mass, to move it");
+              "Dynamic (with a mass): falls, tumbles and collides as one rigid body of its\n"
+              "shape, a group's as its members make it; static: never moves.");
+    r.isStatic = !dynamic;
+    fieldFloat("mass", Field::Mass, &r.mass, e);
+    ownFloat("friction", Field::Friction, &r.friction, w.friction, e);
+    ownFloat("restitution", Field::Restitution, &r.restitution, w.restitution, e);
+    fieldVec3("vel", Field::Velocity, &r.vel, e);
+    fieldVec3("spin", Field::Spin, &r.spin, e);
+    if (!r.dynamic()) ImGui::TextDisabled("static %s: tick dynamic, with a mass, to move it", what);
+}
+
+static void memberNote(const Scene& s, int group) {
+    ImGui::TextDisabled("in group %s: moves with it; pos and rot are in its frame",
+                        s.groups[size_t(group)].name.c_str());
 }
 
 // place: the Objects panel or the object popup, whichever shows the fields.
 static void objectFields(UiContext& c, int i, Place place) {
     const Scene& s = c.editor.scene();
-    Object o = s.objects[size_t(i)];
+    const Object before = s.objects[size_t(i)];
+    Object o = before;
     FieldEdit e{false, 0, c.ui.messages.at(place)};
     ImGui::PushID(i);
     nameField(&o.name, true, e,
               "The object's name in the list and the file: letters, digits, '_', '.' or '-';\n"
               "empty for none. Return takes it.");
-    shapeFields(o, e);
+    shapeFields(s, i, o, e);
     materialCombo(s, &o.material, e);
-    motionFields(o, s.world, e);
+    if (o.group < 0) motionFields(o, "collider", s.world, e);
+    else memberNote(s, o.group);
     ImGui::PopID();
-    if (e.changed)
-        c.editor.edit(
-            "Edit object", [&](Scene& sc) { sc.objects[size_t(i)] = o; }, e.key);
+    if (e.changed) c.editor.editObjects(before, o, e.key);
+}
+
+static void groupFields(UiContext& c, int g) {
+    const Scene& s = c.editor.scene();
+    const Group before = s.groups[size_t(g)];
+    Group r = before;
+    FieldEdit e{false, 0, c.ui.messages.at(Place::Objects)};
+    ImGui::PushID(g);
+    nameField(&r.name, false, e,
+              "The group's name, its own among groups: letters, digits, '_', '.' or '-'.\n"
+              "Return takes it.",
+              [&](const std::string& name) {
+                  for (const Group& other : s.groups)
+                      if (other.name == name) return true;
+                  return false;
+              });
+    posField(r, e);
+    turnFields(r, e);
+    if (r.parent < 0) motionFields(r, "group", s.world, e);
+    else memberNote(s, r.parent);
+    ImGui::PopID();
+    if (e.changed) c.editor.editGroups(before, r, e.key);
 }
 
 static void materialFields(UiContext& c, int i) {
@@ -193,6 +262,8 @@ static void itemFields(UiContext& c, ItemKind k, int i) {
     switch (k) {
         case ItemKind::Object:
             return objectFields(c, i, Place::Objects);
+        case ItemKind::Group:
+            return groupFields(c, i);
         case ItemKind::Material:
             return materialFields(c, i);
         case ItemKind::Light:
@@ -203,22 +274,50 @@ static void itemFields(UiContext& c, ItemKind k, int i) {
 //-----------------------------------------------------------------------------
 // Lists
 //-----------------------------------------------------------------------------
-// Up and down the list: the CSG chain joins objects in list order.
-static void moveButtons(UiContext& c, int chosen, std::string* why) {
-    ImGui::BeginDisabled(chosen < 0);
+// The active object or group, for the arrows; -1 for none.
+static Item activeTreeItem(const Selection& sel) {
+    const bool tree = sel.kind == ItemKind::Object || sel.kind == ItemKind::Group;
+    return {sel.kind, tree ? sel.index : -1};
+}
+
+// Up and down among its siblings: a chain joins its objects and groups in list order.
+static void moveButtons(UiContext& c, Item chosen, std::string* why) {
+    ImGui::BeginDisabled(chosen.index < 0);
     for (int by : {-1, 1}) {
         const char* name = by < 0 ? "up" : "down";
         ImGui::SameLine();
         if (ImGui::ArrowButton(name, by < 0 ? ImGuiDir_Up : ImGuiDir_Down))
             c.editor.reorder(chosen, by, why);
         markItem(itemPath(name));
-        itemTooltip(itemPath(name), std::string("Moves the selected object ") + name +
-                                        " the list: the CSG chain joins objects in list order.");
+        itemTooltip(itemPath(name), std::string("Moves the selected object or group ") + name +
+                                        " among its group's:\nthe CSG chain joins them in list "
+                                        "order.");
     }
     ImGui::EndDisabled();
 }
 
+// Objects: Duplicate and Delete act on the active object or group.
+static void objectButtons(UiContext& c) {
+    Editor& e = c.editor;
+    std::string* why = c.ui.messages.at(Place::Objects);
+    const Item chosen = activeTreeItem(e.selection());
+    if (ImGui::Button("Add")) e.add(ItemKind::Object, why);
+    markItem(itemPath("Add"));
+    ImGui::SameLine();
+    ImGui::BeginDisabled(chosen.index < 0);
+    if (ImGui::Button("Duplicate")) e.duplicate(chosen.kind, chosen.index, why);
+    ImGui::SameLine();
+    if (ImGui::Button("Delete")) e.remove(chosen.kind, chosen.index, why);
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(e.scene().objects.empty() && e.scene().groups.empty());
+    if (ImGui::Button("Clear")) e.clear(ItemKind::Object);
+    ImGui::EndDisabled();
+    moveButtons(c, chosen, why);
+}
+
 static void listButtons(UiContext& c, ItemKind k) {
+    if (k == ItemKind::Object) return objectButtons(c);
     Editor& e = c.editor;
     const Selection& sel = e.selection();
     const int chosen = sel.kind == k ? sel.index : -1;
@@ -235,45 +334,110 @@ static void listButtons(UiContext& c, ItemKind k) {
     ImGui::BeginDisabled(itemCount(e.scene(), k) == 0);
     if (ImGui::Button("Clear")) e.clear(k);
     ImGui::EndDisabled();
-    if (k == ItemKind::Object) moveButtons(c, chosen, why);
 }
 
-// A row of the Objects list dragged onto another moves there, one undo step, as Move up and
-// Move down do one place at a time.
-static void dragToReorder(UiContext& c, int row, const std::string& name) {
-    static const char* kPayload = "object row";
+//-----------------------------------------------------------------------------
+// The outliner
+//-----------------------------------------------------------------------------
+static const char* kRowPayload = "tree row";
+
+// Where a row dropped on a sibling `target` goes: to that row's place, the ones between
+// closing up behind it, as Move up and down do.
+static TreeSpot dropSpot(const Scene& s, Item dragged, Item target) {
+    const TreeSpot at = spotOf(s, target), from = spotOf(s, dragged);
+    return {at.parent, at.at + (from.at < at.at ? 1 : 0)};
+}
+
+static void dragRow(UiContext& c, Item row, const std::string& name) {
     if (ImGui::BeginDragDropSource()) {
-        ImGui::SetDragDropPayload(kPayload, &row, sizeof row);
+        ImGui::SetDragDropPayload(kRowPayload, &row, sizeof row);
         ImGui::TextUnformatted(name.c_str());
         ImGui::EndDragDropSource();
     }
     if (!ImGui::BeginDragDropTarget()) return;
-    if (const ImGuiPayload* p = ImGui::AcceptDragDropPayload(kPayload)) {
-        const int from = *static_cast<const int*>(p->Data);
-        if (from != row) c.editor.reorder(from, row - from, c.ui.messages.at(Place::Objects));
+    if (const ImGuiPayload* p = ImGui::AcceptDragDropPayload(kRowPayload)) {
+        const Scene& s = c.editor.scene();
+        const Item from = *static_cast<const Item*>(p->Data);
+        if (from != row && parentOf(s, from) == parentOf(s, row))
+            c.editor.moveTo(from, dropSpot(s, from, row), c.ui.messages.at(Place::Objects));
     }
     ImGui::EndDragDropTarget();
 }
 
+// A click selects the row.
+static void clickRow(UiContext& c, Item row) {
+    if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) c.editor.select(row.kind, row.index);
+}
+
+// One row; for a group, whether it is open (its members' rows follow, pushed one level in).
+static bool treeRow(UiContext& c, Item row) {
+    const Scene& s = c.editor.scene();
+    ImGui::PushID(row.kind == ItemKind::Group ? -1 - row.index : row.index);
+    const float swatchSide = ImGui::GetFrameHeight();
+    if (row.kind == ItemKind::Object &&
+        s.objects[size_t(row.index)].material < int(s.materials.size()))
+        swatch(s.materials[size_t(s.objects[size_t(row.index)].material)]);
+    else ImGui::Dummy(ImVec2(swatchSide, swatchSide));
+    ImGui::SameLine();
+    const std::string name = itemName(s, row.kind, row.index);
+    ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_SpanAvailWidth;
+    if (c.editor.selection().has(row.kind, row.index)) flags |= ImGuiTreeNodeFlags_Selected;
+    if (row.kind == ItemKind::Object)
+        flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
+    else flags |= ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_DefaultOpen;
+    const bool open = ImGui::TreeNodeEx("##row", flags, "%s", name.c_str());
+    markItem("Objects/" + name);
+    clickRow(c, row);
+    dragRow(c, row, name);
+    ImGui::PopID();
+    return row.kind == ItemKind::Group && open;
+}
+
+// The list's height: 150 px, or for more rows up to a third of a tall window's height; a small
+// window keeps its room for the fields.
+static float outlinerHeight(size_t rows) {
+    const float row = ImGui::GetFrameHeightWithSpacing();
+    const float wanted = float(rows) * row + 2.0f * ImGui::GetStyle().WindowPadding.y;
+    const float most = std::max(150.0f, ImGui::GetIO().DisplaySize.y / 3.0f);
+    return std::clamp(wanted, 150.0f, most);
+}
+
+// Every object and group in tree order; a closed group's members are left out.
+static void outliner(UiContext& c) {
+    const std::vector<TreeRow> rows = treeRows(c.editor.scene());
+    ImGui::BeginChild("list", ImVec2(0, outlinerHeight(rows.size())), true);
+    int shown = 0, pushed = 0;  // rows deeper than `shown` are inside a closed group
+    for (const TreeRow& row : rows) {
+        if (row.depth > shown) continue;
+        for (; pushed > row.depth; --pushed) ImGui::TreePop();
+        shown = row.depth;
+        if (treeRow(c, row.item)) shown = ++pushed;
+    }
+    for (; pushed > 0; --pushed) ImGui::TreePop();
+    ImGui::EndChild();
+}
+
 static void itemList(UiContext& c, ItemKind k, const char* title) {
+    if (k == ItemKind::Object) return outliner(c);
     const Scene& s = c.editor.scene();
     ImGui::BeginChild("list", ImVec2(0, 150), true);
     for (int i = 0; i < itemCount(s, k); ++i) {
         ImGui::PushID(i);
-        int m = k == ItemKind::Material ? i
-                : k == ItemKind::Object ? s.objects[size_t(i)].material
-                                        : -1;
-        if (m >= 0 && m < int(s.materials.size())) {
-            swatch(s.materials[size_t(m)]);
+        if (k == ItemKind::Material) {
+            swatch(s.materials[size_t(i)]);
             ImGui::SameLine();
         }
         const std::string name = itemName(s, k, i);
         if (ImGui::Selectable(name.c_str(), c.editor.selection().is(k, i))) c.editor.select(k, i);
         markItem(std::string(title) + "/" + name);
-        if (k == ItemKind::Object) dragToReorder(c, i, name);
         ImGui::PopID();
     }
     ImGui::EndChild();
+}
+
+// The Objects panel shows the active object's or group's fields.
+static bool shows(ItemKind panel, ItemKind active) {
+    return panel == active || (panel == ItemKind::Object && active == ItemKind::Group);
 }
 
 static void itemWindow(UiContext& c, ItemKind k, Panel p, const char* title, bool* open) {
@@ -282,7 +446,7 @@ static void itemWindow(UiContext& c, ItemKind k, Panel p, const char* title, boo
         listButtons(c, k);
         itemList(c, k, title);
         const Selection& sel = c.editor.selection();
-        if (sel.kind == k && !sel.empty()) itemFields(c, k, sel.index);
+        if (shows(k, sel.kind) && sel.index >= 0) itemFields(c, sel.kind, sel.index);
         messageLine(c, itemPlace(k));
     }
     ImGui::End();

@@ -73,9 +73,8 @@ bool ViewportInput::grabGizmo(UiContext& c, glm::vec2 at) {
     const GizmoHandle h = handleAt(c, at, &f);
     if (h.kind == HandleKind::None || !gizmo_.begin(s.camera, f, h, at, view_)) return false;
     held_ = c.editor.selection();
-    // A light is held as an object at its place: only its centre moves.
-    heldObject_ = held_.kind == ItemKind::Object ? s.objects[size_t(held_.index)] : Object{};
-    if (held_.kind == ItemKind::Light) heldObject_.pos = s.lights[size_t(held_.index)].vec;
+    if (held_.kind == ItemKind::Light) heldLight_ = s.lights[size_t(held_.index)].vec;
+    else hold_ = holdSelection(s, held_);
     drag_ = Drag::Gizmo;
     ++moves_;
     return true;
@@ -116,7 +115,7 @@ void ViewportInput::follow(UiContext& c, glm::vec2 delta) {
             glm::vec3 pos;
             if (ground_.follow(c.editor.scene().camera, pixel({io.MousePos.x, io.MousePos.y}),
                                view_, &pos))
-                c.editor.moveObject(ground_.object, pos, dragKey());
+                c.editor.placeItem(ground_.item, pos, dragKey());
             break;
         }
         case Drag::Gizmo:
@@ -127,17 +126,23 @@ void ViewportInput::follow(UiContext& c, glm::vec2 delta) {
     }
 }
 
-// Each frame applies the whole drag so far to the item as it was at the press.
+// "Move object", "Rotate group": what the drag does to what it holds.
+static std::string dragLabel(HandleKind k, const GizmoHold& h) {
+    const char* verb = k == HandleKind::Ring    ? "Rotate "
+                       : k == HandleKind::Scale ? "Scale "
+                                                : "Move ";
+    if (h.items.size() == 1) return verb + std::string(itemKindName(h.items[0].kind));
+    return verb + std::to_string(h.items.size()) + " items";
+}
+
+// Each frame applies the whole drag so far to the items as they were at the press: a member
+// moves in the world, its place converted to its group's frame.
 void ViewportInput::dragGizmo(UiContext& c, glm::vec2 at) {
     GizmoDelta d;
     if (!gizmo_.follow(c.editor.scene().camera, at, view_, ImGui::GetIO().KeyCtrl, &d)) return;
-    const Object o = applyGizmo(heldObject_, d);
-    if (held_.kind == ItemKind::Light) return c.editor.moveLight(held_.index, o.pos, dragKey());
-    const HandleKind k = gizmo_.handle.kind;
-    const char* label = k == HandleKind::Ring    ? "Rotate object"
-                        : k == HandleKind::Scale ? "Scale object"
-                                                 : "Move object";
-    c.editor.setObject(held_.index, o, label, dragKey());
+    if (held_.kind == ItemKind::Light)
+        return c.editor.moveLight(held_.index, heldLight_ + d.move, dragKey());
+    c.editor.dragSelection(hold_, d, dragLabel(gizmo_.handle.kind, hold_), dragKey());
 }
 
 void ViewportInput::release(UiContext& c) {

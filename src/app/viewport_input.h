@@ -38,7 +38,8 @@ private:
     GroundDrag ground_;
     GizmoDrag gizmo_;
     Selection held_;      // what the gizmo drag acts on
-    Object heldObject_;   // as it was at the press: each frame applies the whole drag to it
+    GizmoHold hold_;      // its objects and groups at the press: each frame applies the whole
+    glm::vec3 heldLight_{0.0f};  // drag to them, or to a light's place
     uint64_t moves_ = 0;  // numbers each drag that edits: one undo step per drag
     glm::vec2 view_{0.0f}, scale_{1.0f};
     CameraControls controls_;

@@ -160,9 +160,19 @@ void fieldFlag(const char* label, bool* v, FieldEdit& e, const char* tooltip) {
 
 void fieldCombo(const char* label, int* v, const char* const names[], int count, FieldEdit& e,
                 const char* tooltip) {
-    if (ImGui::Combo(label, v, names, count)) take(label, e);
-    markItem(itemPath(label));
-    itemTooltip(itemPath(label), tooltip);
+    const std::string path = itemPath(label);
+    if (ImGui::BeginCombo(label, *v >= 0 && *v < count ? names[*v] : "")) {
+        for (int i = 0; i < count; ++i) {
+            if (ImGui::Selectable(names[i], i == *v) && i != *v) {
+                *v = i;
+                take(label, e);
+            }
+            markItem(path + "/" + names[i]);  // "Objects/op/subtract", where the list shows it
+        }
+        ImGui::EndCombo();
+    }
+    markItem(path);
+    itemTooltip(path, tooltip);
 }
 
 void itemTooltip(const std::string& name, const std::string& text) {

@@ -29,6 +29,7 @@ void fieldInt(const char* label, Field f, int* v, FieldEdit& e);
 void fieldVec3(const char* label, Field f, glm::vec3* v, FieldEdit& e);
 void fieldColor(const char* label, Field f, glm::vec3* v, FieldEdit& e);  // picker, HDR allowed
 void fieldFlag(const char* label, bool* v, FieldEdit& e, const char* tooltip);
+// A combo's choices are marked too while its list is open: "WINDOW/LABEL/CHOICE".
 void fieldCombo(const char* label, int* v, const char* const names[], int count, FieldEdit& e,
                 const char* tooltip);
 

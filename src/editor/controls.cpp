@@ -16,7 +16,7 @@ static const Control kControls[] = {
     {"Ctrl, dragging a handle", "snap: 0.1 m, 15 degrees, a tenth of the size"},
     {"Click a light's marker", "select the light and show Lights; drag its handles to move it"},
     {"Ctrl drag", "move the object under the mouse over the ground"},
-    {"Delete", "delete the selection"},
+    {"Delete", "delete the selection, a group with everything in it"},
     {"J", "random velocities for the dynamic bodies"},
     {"Space", "play or pause the simulation"},
     {"Shift+Left; Home over the timeline", "back to t = 0, keeping the run to scrub forward again"},

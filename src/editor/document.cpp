@@ -60,17 +60,19 @@ Scene Document::start() const {
     return s;
 }
 
+// The objects and the groups they make: an edit of either is an event of the run.
 static bool sameObjects(const Scene& a, const Scene& b) {
     Scene probe = a;
     probe.objects = b.objects;
+    probe.groups = b.groups;
     return probe == a;
 }
 
 // What the simulator reads: the rest (camera, looks, keys) leaves the run as it was.
 static bool sameMotion(const Scene& a, const Scene& b) {
     Scene pa, pb;
-    pa.objects = a.objects, pa.world = a.world;
-    pb.objects = b.objects, pb.world = b.world;
+    pa.objects = a.objects, pa.groups = a.groups, pa.world = a.world;
+    pb.objects = b.objects, pb.groups = b.groups, pb.world = b.world;
     return pa == pb;
 }
 
@@ -104,9 +106,10 @@ void Document::edited(double t, bool objects) {
     const bool replaces = at && at->from == t;
     std::shared_ptr<const RunPiece> before = replaces ? at->before : at;
     auto now = std::make_shared<const std::vector<Object>>(scene_.objects);
+    auto groups = std::make_shared<const std::vector<Group>>(scene_.groups);
     objects = objects || (replaces && at->objectsEdited);
-    run_ =
-        std::make_shared<const RunPiece>(RunPiece{t, std::move(now), std::move(before), objects});
+    run_ = std::make_shared<const RunPiece>(
+        RunPiece{t, std::move(now), std::move(before), objects, std::move(groups)});
 }
 
 // A world edit at t > 0 is made to the start too (apply): only the objects' edits are lost.

@@ -160,16 +160,41 @@ static bool tryEdit(Editor& e, const std::string& label, Command command, uint64
     if (!command(trial)) return false;
     Scene probe = e.scene();  // the scene shown with the trial's objects: unchanged if they are
     probe.objects = trial.objects;
+    probe.groups = trial.groups;
     const bool objectsKept = probe == e.scene();
     e.edit(
         label,
         [&](Scene& s) {
             std::vector<Object> own = std::move(s.objects);
+            std::vector<Group> groups = std::move(s.groups);
             s = trial;
-            if (objectsKept) s.objects = std::move(own);
+            if (!objectsKept) return;
+            s.objects = std::move(own);
+            s.groups = std::move(groups);
         },
         mergeKey);
     return true;
+}
+
+// An edit of the tree: `command` changes a trial scene and says how items moved (Renumbering),
+// or refuses. The selection follows its items before the edit is made, whose clamp would
+// otherwise drop them.
+template <typename Command>
+bool Editor::treeEdit(const std::string& label, Command command) {
+    const Selection before = sel_;
+    const bool ok = tryEdit(*this, label, [&](Scene& s) {
+        Renumbering r;
+        if (!command(s, &r)) return false;
+        selectionRenumber(sel_, r);
+        return true;
+    });
+    told(before);
+    return ok;
+}
+
+static std::string itemsLabel(const std::string& verb, const std::vector<Item>& items) {
+    if (items.size() == 1) return verb + " " + itemKindName(items[0].kind);
+    return verb + " " + std::to_string(items.size()) + " items";
 }
 
 bool Editor::add(ItemKind k, std::string* why, ShapeType shape) {
@@ -189,6 +214,13 @@ bool Editor::add(ItemKind k, std::string* why, ShapeType shape) {
 }
 
 bool Editor::duplicate(ItemKind k, int index, std::string* why) {
+    if (k == ItemKind::Object || k == ItemKind::Group) {
+        const Selection was = sel_;
+        selectOnly(sel_, {k, index});
+        const bool ok = duplicateSelected(why);
+        if (!ok) sel_ = was;
+        return ok;
+    }
     int copy = -1;
     bool ok = tryEdit(*this, std::string("Duplicate ") + itemKindName(k),
                       [&](Scene& s) { return (copy = duplicateItem(s, k, index, why)) >= 0; });
@@ -197,6 +229,14 @@ bool Editor::duplicate(ItemKind k, int index, std::string* why) {
 }
 
 bool Editor::remove(ItemKind k, int index, std::string* why) {
+    if (k == ItemKind::Object || k == ItemKind::Group) {
+        if (!validItem(scene(), {k, index}))
+            return *why = std::string("no ") + itemKindName(k) + " " + std::to_string(index), false;
+        return treeEdit(std::string("Delete ") + itemKindName(k), [&](Scene& s, Renumbering* r) {
+            *r = eraseItems(s, {{k, index}});
+            return true;
+        });
+    }
     // The selection moves before the edit, whose clamp would otherwise drop it.
     return tryEdit(*this, std::string("Delete ") + itemKindName(k), [&](Scene& s) {
         if (!deleteItem(s, k, index, why)) return false;
@@ -206,11 +246,118 @@ bool Editor::remove(ItemKind k, int index, std::string* why) {
 }
 
 bool Editor::reorder(int object, int by, std::string* why) {
-    int to = -1;
-    bool ok = tryEdit(*this, by < 0 ? "Move object up" : "Move object down",
-                      [&](Scene& s) { return (to = reorderObject(s, object, by, why)) >= 0; });
-    if (ok) select(ItemKind::Object, to);
+    return reorder(Item{ItemKind::Object, object}, by, why);
+}
+
+bool Editor::reorder(Item it, int by, std::string* why) {
+    const std::string label =
+        std::string("Move ") + itemKindName(it.kind) + (by < 0 ? " up" : " down");
+    Item to;
+    const bool ok = treeEdit(label, [&](Scene& s, Renumbering* r) {
+        if (!shiftItem(s, it, by, r, why)) return false;
+        to = (*r)(it);
+        return true;
+    });
+    if (ok) select(to.kind, to.index);
     return ok;
+}
+
+// Within its parent a move is a reorder, as the arrows make; else into or out of a group.
+static std::string moveLabel(const Scene& s, Item it, TreeSpot spot) {
+    const std::string what = std::string("Move ") + itemKindName(it.kind);
+    const TreeSpot from = spotOf(s, it);
+    if (from.parent == spot.parent)
+        return what + (spot.at >= 0 && spot.at <= from.at ? " up" : " down");
+    return what + (spot.parent >= 0 ? " into group" : " out of group");
+}
+
+bool Editor::moveTo(Item it, TreeSpot spot, std::string* why) {
+    if (!validItem(scene(), it)) return *why = "nothing to move", false;
+    Item to;
+    const bool ok = treeEdit(moveLabel(scene(), it, spot), [&](Scene& s, Renumbering* r) {
+        if (!moveItem(s, it, spot, r, why)) return false;
+        to = (*r)(it);
+        return true;
+    });
+    if (ok) select(to.kind, to.index);
+    return ok;
+}
+
+bool Editor::groupSelected(std::string* why) {
+    int g = -1;
+    const bool ok = treeEdit("Group", [&](Scene& s, Renumbering* r) {
+        return (g = groupItems(s, treeItems(sel_), r, why)) >= 0;
+    });
+    if (ok) select(ItemKind::Group, g);
+    return ok;
+}
+
+// `then` after `first`: where each item of the scene before both ends up.
+static Renumbering chain(const Renumbering& first, const Renumbering& then) {
+    Renumbering r = first;
+    for (int& o : r.objects) o = o < 0 ? -1 : then.objects[size_t(o)];
+    for (int& g : r.groups) g = g < 0 ? -1 : then.groups[size_t(g)];
+    return r;
+}
+
+static Renumbering unchanged(const Scene& s) {
+    Renumbering r;
+    for (size_t i = 0; i < s.objects.size(); ++i) r.objects.push_back(int(i));
+    for (size_t g = 0; g < s.groups.size(); ++g) r.groups.push_back(int(g));
+    return r;
+}
+
+bool Editor::ungroupSelected(std::string* why) {
+    std::vector<int> groups;  // the last first: those before keep their index as it goes
+    for (Item it : treeItems(sel_))
+        if (it.kind == ItemKind::Group) groups.insert(groups.begin(), it.index);
+    if (groups.empty()) return *why = "select a group to ungroup", false;
+    std::vector<Item> freed;  // the groups' children, as each ungroup renumbers them
+    const bool ok = treeEdit("Ungroup", [&](Scene& s, Renumbering* r) {
+        *r = unchanged(s);
+        for (int g : groups) {
+            const std::vector<Item> kids = children(s, g);
+            freed.insert(freed.end(), kids.begin(), kids.end());
+            Renumbering step;
+            if (!ungroup(s, g, &step, why)) return false;
+            for (Item& it : freed) it = step(it);
+            *r = chain(*r, step);
+        }
+        return true;
+    });
+    if (ok) selectItems(freed, false);
+    return ok;
+}
+
+void Editor::editObjects(const Object& before, const Object& after, uint64_t mergeKey) {
+    const int active = sel_.object();
+    if (active < 0) return;
+    std::vector<int> others;
+    for (Item it : treeItems(sel_))
+        if (it.kind == ItemKind::Object && it.index != active) others.push_back(it.index);
+    // Copies: `before` may be the scene's own record, which the first line below changes.
+    edit(
+        "Edit object",
+        [&, before, after](Scene& s) {
+            s.objects[size_t(active)] = after;
+            applyObjectEdit(s, others, before, after);
+        },
+        mergeKey);
+}
+
+void Editor::editGroups(const Group& before, const Group& after, uint64_t mergeKey) {
+    const int active = sel_.kind == ItemKind::Group ? sel_.index : -1;
+    if (active < 0 || active >= int(scene().groups.size())) return;
+    std::vector<int> others;
+    for (Item it : treeItems(sel_))
+        if (it.kind == ItemKind::Group && it.index != active) others.push_back(it.index);
+    edit(
+        "Edit group",
+        [&, before, after](Scene& s) {
+            s.groups[size_t(active)] = after;
+            applyGroupEdit(s, others, before, after);
+        },
+        mergeKey);
 }
 
 void Editor::clear(ItemKind k) {
@@ -228,36 +375,105 @@ int Editor::kick() {
 //-----------------------------------------------------------------------------
 // [SECTION] Selection
 //-----------------------------------------------------------------------------
-void Editor::select(ItemKind k, int index) {
-    if (index >= itemCount(doc_.scene(), k)) index = -1;
-    if (sel_.kind == k && sel_.index == index) return;
-    sel_.kind = k;
-    sel_.index = index;
-    if (index < 0) emitEvent("select none");
-    else emitEvent(std::string("select ") + itemKindName(k) + " " + std::to_string(index));
+void Editor::told(const Selection& before) {
+    if (before.kind == sel_.kind && before.index == sel_.index && before.items == sel_.items)
+        return;
+    emitEvent("select " + describe(sel_));
 }
 
-int Editor::pick(glm::vec2 pixel, glm::vec2 viewSize) {
-    int hit = pickObject(doc_.scene(), pixel, viewSize);
-    select(ItemKind::Object, hit);
+void Editor::select(ItemKind k, int index) {
+    if (index >= itemCount(doc_.scene(), k)) index = -1;
+    const Selection before = sel_;
+    selectOnly(sel_, {k, index});
+    told(before);
+}
+
+void Editor::toggle(Item it) {
+    if (!validItem(scene(), it)) return;
+    const Selection before = sel_;
+    toggleSelected(sel_, it);
+    told(before);
+}
+
+void Editor::selectItems(const std::vector<Item>& items, bool extend) {
+    std::vector<Item> valid;
+    for (Item it : items)
+        if (validItem(scene(), it)) valid.push_back(it);
+    const Selection before = sel_;
+    mb::selectItems(sel_, valid, extend);
+    told(before);
+}
+
+void Editor::selectAll() { selectItems(everyTopItem(scene()), false); }
+
+bool Editor::selectParent() {
+    const Item active{sel_.kind, sel_.index};
+    if (!validItem(scene(), active) || parentOf(scene(), active) < 0) return false;
+    select(ItemKind::Group, parentOf(scene(), active));
+    return true;
+}
+
+int Editor::pick(glm::vec2 pixel, glm::vec2 viewSize, Pick how) {
+    const int hit = pickObject(doc_.scene(), pixel, viewSize);
+    if (how == Pick::Toggle) {
+        if (hit >= 0) toggle({ItemKind::Object, hit});
+        return hit;
+    }
+    const Item target =
+        how == Pick::Climb ? clickTarget(scene(), sel_, hit) : Item{ItemKind::Object, hit};
+    select(target.kind, target.index);
     return hit;
 }
 
 bool Editor::removeSelected(std::string* why) {
     if (sel_.empty()) return false;
-    return remove(sel_.kind, sel_.index, why);
+    const std::vector<Item> items = roots(scene(), treeItems(sel_));
+    if (items.empty()) return remove(sel_.kind, sel_.index, why);
+    return treeEdit(itemsLabel("Delete", items), [&](Scene& s, Renumbering* r) {
+        *r = eraseItems(s, items);
+        return true;
+    });
+}
+
+bool Editor::duplicateSelected(std::string* why) {
+    const std::vector<Item> items = roots(scene(), treeItems(sel_));
+    if (items.empty()) return sel_.index >= 0 && duplicate(sel_.kind, sel_.index, why);
+    std::vector<Item> copies;
+    const bool ok = treeEdit(itemsLabel("Duplicate", items), [&](Scene& s, Renumbering* r) {
+        return duplicateItems(s, items, glm::vec3(1.0f, 0.0f, 0.0f), &copies, r, why);
+    });
+    if (ok) selectItems(copies, false);
+    return ok;
+}
+
+void Editor::placeItem(Item it, glm::vec3 pos, uint64_t mergeKey) {
+    if (!validItem(scene(), it)) return;
+    const std::string label = std::string("Move ") + itemKindName(it.kind);
+    edit(
+        label,
+        [&](Scene& s) {
+            const Placement frame = groupPose(s, parentOf(s, it));
+            const glm::vec3 local = glm::inverse(frame.turn) * (pos - frame.pos);
+            if (it.kind == ItemKind::Object) s.objects[size_t(it.index)].pos = local;
+            else s.groups[size_t(it.index)].pos = local;
+        },
+        mergeKey);
 }
 
 void Editor::moveObject(int index, glm::vec3 pos, uint64_t mergeKey) {
-    if (index < 0 || index >= int(doc_.scene().objects.size())) return;
-    edit(
-        "Move object", [&](Scene& s) { s.objects[size_t(index)].pos = pos; }, mergeKey);
+    placeItem({ItemKind::Object, index}, pos, mergeKey);
 }
 
 void Editor::setObject(int index, const Object& o, const std::string& label, uint64_t mergeKey) {
     if (index < 0 || index >= int(doc_.scene().objects.size())) return;
     edit(
         label, [&](Scene& s) { s.objects[size_t(index)] = o; }, mergeKey);
+}
+
+void Editor::dragSelection(const GizmoHold& hold, const GizmoDelta& d, const std::string& label,
+                           uint64_t mergeKey) {
+    edit(
+        label, [&](Scene& s) { applyGizmo(s, hold, d); }, mergeKey);
 }
 
 void Editor::moveLight(int index, glm::vec3 pos, uint64_t mergeKey) {
@@ -311,13 +527,26 @@ bool Editor::followsPath() const {
 // A point light's ball: big enough that framing it alone shows a little of around it.
 static constexpr float kLightFrameRadius = 0.5f;
 
-static Ball objectBall(const Object& o) { return {o.pos, boundingRadius(o)}; }
+// Each item's ball in the world: an object's about its centre, a group's about its origin,
+// holding every copy of its members.
+static std::vector<Ball> itemBalls(const Scene& s, const std::vector<Item>& items) {
+    const SceneSdf sdf = makeSceneSdf(s);
+    std::vector<Ball> balls;
+    for (Item it : items) {
+        if (it.kind == ItemKind::Object) {
+            const SdfObject& o = sdf.objects[size_t(it.index)];
+            balls.push_back({o.pos, o.bound});
+        } else {
+            const SdfGroup& g = sdf.groups[size_t(it.index)];
+            balls.push_back({g.pos, g.bound});
+        }
+    }
+    return balls;
+}
 
 bool Editor::frameSelected(float aspect) {
-    std::vector<Ball> balls;
     const Scene& s = scene();
-    if (sel_.kind == ItemKind::Object && sel_.index >= 0)
-        balls.push_back(objectBall(s.objects[size_t(sel_.index)]));
+    std::vector<Ball> balls = itemBalls(s, roots(s, treeItems(sel_)));
     const bool pointLight = sel_.kind == ItemKind::Light && sel_.index >= 0 &&
                             !s.lights[size_t(sel_.index)].directional;
     if (pointLight) balls.push_back({s.lights[size_t(sel_.index)].vec, kLightFrameRadius});
@@ -326,8 +555,9 @@ bool Editor::frameSelected(float aspect) {
 }
 
 bool Editor::frameAll(float aspect) {
-    std::vector<Ball> balls;
-    for (const Object& o : scene().objects) balls.push_back(objectBall(o));
+    std::vector<Item> all;
+    for (size_t i = 0; i < scene().objects.size(); ++i) all.push_back({ItemKind::Object, int(i)});
+    const std::vector<Ball> balls = itemBalls(scene(), all);
     frameBalls(view(), balls, aspect);
     return !balls.empty();
 }

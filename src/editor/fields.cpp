@@ -56,12 +56,12 @@ static const FieldSpec kSpecs[] = {
      "The way the light shines; its length does not matter."},
     {"pos", -kFar, kFar, false, -20, 20, false, false, "%.3f", "m", "Centre."},
     {"radius", 0, kFar, true, 0.01f, 5, false, false, "%.3f", "m",
-     "Radius of a sphere, torus ring, capsule or cylinder."},
+     "Radius of a sphere, torus ring, capsule or cylinder, or a cone's base."},
     {"size", 0, kFar, true, 0.01f, 5, false, false, "%.3f", "m",
-     "Half the box's extent along each local axis."},
+     "Half the box's extent, or the ellipsoid's semi-axis, along each local axis."},
     {"minor", 0, kFar, true, 0.01f, 2, false, false, "%.3f", "m", "Radius of the torus tube."},
     {"height", 0, kFar, true, 0.01f, 10, false, false, "%.3f", "m",
-     "Length along local y of a capsule's segment or a cylinder."},
+     "Length along local y of a capsule's segment, a cylinder or a cone."},
     {"rot", -360, 360, false, -180, 180, false, false, "%.1f", "degrees",
      "Turns about x, then y, then z."},
     {"mass", 0, 1e6, false, 0, 20, false, false, "%.2f", "kg", "0 keeps a sphere still."},
@@ -71,6 +71,8 @@ static const FieldSpec kSpecs[] = {
      "Angular velocity of a dynamic body."},
     {"blend", 0, kFar, false, 0, 1, false, false, "%.3f", "m",
      "Smooth-blend radius with the objects before; 0 is sharp."},
+    {"top", 0, kFar, false, 0, 5, false, false, "%.3f", "m",
+     "A cone's top radius: 0 for a point; kept below its base radius."},
 };
 static_assert(sizeof kSpecs / sizeof kSpecs[0] == size_t(Field::Count), "one row per Field");
 

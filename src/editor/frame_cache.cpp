@@ -27,6 +27,10 @@ void FrameCache::record(const std::shared_ptr<const RunPiece>& run, double t, co
         const Object& o = scene.objects[i];
         if (o.dynamic()) f.bodies.push_back({int(i), o.pos, o.vel, o.spin, o.orient});
     }
+    for (size_t g = 0; g < scene.groups.size(); ++g) {
+        const Group& b = scene.groups[g];
+        if (b.dynamic()) f.bodies.push_back({int(g), b.pos, b.vel, b.spin, b.orient, true});
+    }
     frames_.push_back(std::move(f));
     if (bytes() > budget_) thin();
 }
@@ -61,15 +65,22 @@ const BakedFrame* FrameCache::at(double t) const {
 
 double FrameCache::end() const { return frames_.empty() ? 0.0 : frames_.back().t; }
 
+template <class R>
+static void putBody(const BodyState& b, std::vector<R>& bodies) {
+    if (b.object >= int(bodies.size())) return;
+    R& r = bodies[size_t(b.object)];
+    r.pos = b.pos;
+    r.vel = b.vel;
+    r.spin = b.spin;
+    r.orient = b.orient;
+}
+
 void applyFrame(const BakedFrame& frame, Scene& scene) {
     if (frame.piece && frame.piece->objects) scene.objects = *frame.piece->objects;
+    if (frame.piece && frame.piece->groups) scene.groups = *frame.piece->groups;
     for (const BodyState& b : frame.bodies) {
-        if (b.object >= int(scene.objects.size())) continue;
-        Object& o = scene.objects[size_t(b.object)];
-        o.pos = b.pos;
-        o.vel = b.vel;
-        o.spin = b.spin;
-        o.orient = b.orient;
+        if (b.group) putBody(b, scene.groups);
+        else putBody(b, scene.objects);
     }
 }
 

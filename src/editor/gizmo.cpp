@@ -1,6 +1,7 @@
 // gizmo.cpp — the view's move, turn and size handles: projection, hit testing and drags.
 #include "marchbox/editor/gizmo.h"
 
+#include "marchbox/editor/scene_tree.h"
 #include "marchbox/scene/camera.h"
 #include "marchbox/scene/sdf.h"
 
@@ -257,9 +258,20 @@ static float* sizedLength(Object& o, int axis) {
             return axis == 1 ? &o.minor : &o.radius;
         case ShapeType::Capsule:
         case ShapeType::Cylinder:
+        case ShapeType::Cone:
             return axis == 1 ? &o.height : &o.radius;
+        case ShapeType::Ellipsoid:
+            return &o.size[axis];
     }
     return &o.radius;
+}
+
+static void sizeAlongAxis(Object& o, int axis, float factor, const GizmoSettings& k) {
+    float* length = sizedLength(o, axis);
+    const float was = *length;
+    *length = std::max(was * factor, k.minSize);
+    if (o.type == ShapeType::Cone && length == &o.radius) o.top *= *length / was;  // its shape
+    fitShape(o);
 }
 
 Object applyGizmo(Object o, const GizmoDelta& d, const GizmoSettings& k) {
@@ -269,11 +281,144 @@ Object applyGizmo(Object o, const GizmoDelta& d, const GizmoSettings& k) {
         if (o.orient || o.dynamic()) o.orient = q;
         o.rot = eulerFromRotation(glm::mat3_cast(q));
     }
-    if (d.scaleAxis >= 0) {
-        float* length = sizedLength(o, d.scaleAxis);
-        *length = std::max(*length * d.scale, k.minSize);
-    }
+    if (d.scaleAxis >= 0) sizeAlongAxis(o, d.scaleAxis, d.scale, k);
     return o;
+}
+
+// The lengths the object's type uses, which sizing it changes (the file keeps no others).
+static std::vector<float*> lengthsOf(Object& o) {
+    switch (o.type) {
+        case ShapeType::Sphere:
+            return {&o.radius};
+        case ShapeType::Box:
+        case ShapeType::Ellipsoid:
+            return {&o.size.x, &o.size.y, &o.size.z};
+        case ShapeType::Torus:
+            return {&o.radius, &o.minor};
+        case ShapeType::Capsule:
+        case ShapeType::Cylinder:
+        case ShapeType::Cone:
+            return {&o.radius, &o.height};
+    }
+    return {&o.radius};
+}
+
+// The least factor that keeps each of the object's lengths at minSize or more.
+static float leastFactor(Object o, const GizmoSettings& k) {
+    float least = INFINITY;
+    for (float* length : lengthsOf(o)) least = std::min(least, *length);
+    return k.minSize / least;
+}
+
+void scaleObject(Object& o, float f, const GizmoSettings& k) {
+    f = std::max(f, leastFactor(o, k));
+    for (float* length : lengthsOf(o)) *length *= f;
+    o.top *= f, o.round *= f, o.shell *= f, o.blend *= f;
+    fitShape(o);
+}
+
+// Groups g holds, below it.
+static bool inside(const Scene& s, size_t h, int g) {
+    return int(h) > g && within(s, {ItemKind::Group, int(h)}, g);
+}
+
+void scaleGroup(Scene& s, int g, float f, const GizmoSettings& k) {
+    const int first = s.groups[size_t(g)].first, end = groupEnd(s, g);
+    for (int i = first; i < end; ++i) f = std::max(f, leastFactor(s.objects[size_t(i)], k));
+    for (int i = first; i < end; ++i) {
+        s.objects[size_t(i)].pos *= f;
+        scaleObject(s.objects[size_t(i)], f, k);
+    }
+    s.groups[size_t(g)].spacing *= f;
+    for (size_t h = size_t(g) + 1; h < s.groups.size(); ++h) {
+        if (!inside(s, h, g)) continue;
+        s.groups[h].pos *= f;
+        s.groups[h].spacing *= f;
+        s.groups[h].blend *= f;
+    }
+}
+
+namespace {
+
+// The records of `it` and of everything in it, back as the hold has them.
+void restore(Scene& s, const GizmoHold& h, Item it) {
+    if (it.kind == ItemKind::Object) {
+        s.objects[size_t(it.index)] = h.objects[size_t(it.index)];
+        return;
+    }
+    for (int i = s.groups[size_t(it.index)].first; i < groupEnd(s, it.index); ++i)
+        s.objects[size_t(i)] = h.objects[size_t(i)];
+    s.groups[size_t(it.index)] = h.groups[size_t(it.index)];
+    for (size_t g = size_t(it.index) + 1; g < s.groups.size(); ++g)
+        if (inside(s, g, it.index)) s.groups[g] = h.groups[g];
+}
+
+// The least uniform factor that keeps every length the items hold at minSize or more.
+float leastFactor(const Scene& s, const std::vector<Item>& items, const GizmoSettings& k) {
+    float least = 0.0f;
+    for (Item it : items) {
+        const bool object = it.kind == ItemKind::Object;
+        const int first = object ? it.index : s.groups[size_t(it.index)].first;
+        const int end = object ? it.index + 1 : groupEnd(s, it.index);
+        for (int i = first; i < end; ++i)
+            least = std::max(least, leastFactor(s.objects[size_t(i)], k));
+    }
+    return least;
+}
+
+glm::vec3& ownPos(Scene& s, Item it) {
+    return it.kind == ItemKind::Object ? s.objects[size_t(it.index)].pos
+                                       : s.groups[size_t(it.index)].pos;
+}
+
+// One held item: moved by the drag in its parent's frame (exact where that frame does not
+// turn), then turned and sized about the centre in the world.
+void applyToItem(Scene& s, const GizmoHold& h, Item it, const GizmoDelta& d,
+                 const GizmoSettings& k) {
+    restore(s, h, it);
+    const Placement frame = groupPose(s, parentOf(s, it));
+    ownPos(s, it) += glm::inverse(frame.turn) * d.move;
+    Placement world = itemPose(s, it);
+    const bool turns = d.turn != glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+    if (turns) {
+        world.pos = h.centre + d.turn * (world.pos - h.centre);
+        world.turn = glm::normalize(d.turn * world.turn);
+    }
+    if (d.scaleAxis >= 0 && h.alone && it.kind == ItemKind::Object) {
+        sizeAlongAxis(s.objects[size_t(it.index)], d.scaleAxis, d.scale, k);
+    } else if (d.scaleAxis >= 0) {
+        world.pos = h.centre + d.scale * (world.pos - h.centre);
+        if (it.kind == ItemKind::Object) scaleObject(s.objects[size_t(it.index)], d.scale, k);
+        else scaleGroup(s, it.index, d.scale, k);
+    }
+    if (turns || (d.scaleAxis >= 0 && !h.alone)) setItemPose(s, it, world);
+}
+
+}  // namespace
+
+// The mean of the items' places in the world.
+static glm::vec3 centreOf(const Scene& s, const std::vector<Item>& items) {
+    glm::vec3 sum(0.0f);
+    for (Item it : items) sum += itemPose(s, it).pos;
+    return items.empty() ? sum : sum / float(items.size());
+}
+
+GizmoHold holdSelection(const Scene& s, const Selection& sel, const GizmoSettings& k) {
+    GizmoHold h;
+    h.items = roots(s, treeItems(sel));
+    h.objects = s.objects;
+    h.groups = s.groups;
+    h.centre = centreOf(s, h.items);
+    h.alone = h.items.size() == 1 && h.items[0].kind == ItemKind::Object;
+    h.leastScale = leastFactor(s, h.items, k);
+    return h;
+}
+
+void applyGizmo(Scene& s, const GizmoHold& h, const GizmoDelta& d, const GizmoSettings& k) {
+    if (s.objects.size() != h.objects.size() || s.groups.size() != h.groups.size()) return;
+    GizmoDelta uniform = d;
+    if (d.scaleAxis >= 0 && !h.alone) uniform.scale = std::max(d.scale, h.leastScale);
+    for (Item it : h.items) applyToItem(s, h, it, uniform, k);
 }
 
 //-----------------------------------------------------------------------------
@@ -283,10 +428,11 @@ bool selectionGizmo(const Scene& s, const Selection& sel, GizmoMode mode, glm::v
                     GizmoFrame* f, GizmoMode* shown, const GizmoSettings& k) {
     glm::vec3 centre;
     glm::mat3 axes(1.0f);
-    if (sel.kind == ItemKind::Object && sel.index >= 0 && sel.index < int(s.objects.size())) {
-        const Object& o = s.objects[size_t(sel.index)];
-        centre = o.pos;
-        if (mode == GizmoMode::Scale) axes = glm::mat3_cast(o.orientation());
+    const std::vector<Item> items = roots(s, treeItems(sel));
+    if (!items.empty()) {
+        centre = centreOf(s, items);
+        if (mode == GizmoMode::Scale && items.size() == 1)
+            axes = glm::mat3_cast(itemPose(s, items[0]).turn);
         *shown = mode;
     } else if (sel.kind == ItemKind::Light && sel.index >= 0 && sel.index < int(s.lights.size()) &&
                !s.lights[size_t(sel.index)].directional) {

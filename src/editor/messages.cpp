@@ -6,6 +6,7 @@ namespace mb {
 Place itemPlace(ItemKind k) {
     switch (k) {
         case ItemKind::Object:
+        case ItemKind::Group:  // groups are listed with the objects
             return Place::Objects;
         case ItemKind::Material:
             return Place::Materials;

@@ -2,6 +2,8 @@
 // new ones.
 #include "marchbox/editor/picking.h"
 
+#include "marchbox/editor/gizmo.h"
+#include "marchbox/editor/scene_tree.h"
 #include "marchbox/scene/camera.h"
 #include "marchbox/scene/sdf.h"
 
@@ -26,6 +28,19 @@ int pickObject(const Scene& scene, glm::vec2 pixel, glm::vec2 viewSize) {
     RayHit hit = castRay(sdf, scene.camera.pos, dir, scene.render.steps, scene.render.epsilon,
                          reach(scene, sdf));
     return hit.hit && hit.object >= 0 ? hit.object : -1;
+}
+
+std::vector<Item> objectsInBox(const Scene& scene, glm::vec2 a, glm::vec2 b, glm::vec2 viewSize) {
+    const glm::vec2 lo = glm::min(a, b), hi = glm::max(a, b);
+    std::vector<Item> inside;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        glm::vec2 at;
+        const glm::vec3 centre = worldPose(scene, scene.objects[i]).pos;
+        if (projectToPixel(scene.camera, centre, viewSize, &at) &&
+            glm::all(glm::greaterThanEqual(at, lo)) && glm::all(glm::lessThanEqual(at, hi)))
+            inside.push_back({ItemKind::Object, int(i)});
+    }
+    return inside;
 }
 
 bool pixelOnPlane(const Camera& camera, glm::vec2 pixel, glm::vec2 viewSize, float height,
@@ -91,14 +106,14 @@ glm::vec3 placeNewObject(const Scene& scene, const Object& o) {
     return {centre.x, top, centre.z};
 }
 
-bool GroundDrag::begin(const Scene& scene, int index, glm::vec2 pixel, glm::vec2 viewSize) {
-    if (index < 0 || index >= int(scene.objects.size())) return false;
-    const Object& o = scene.objects[size_t(index)];
+bool GroundDrag::begin(const Scene& scene, Item what, glm::vec2 pixel, glm::vec2 viewSize) {
+    if (!validItem(scene, what)) return false;
+    const glm::vec3 centre = itemPose(scene, what).pos;
     glm::vec3 grabbed;
-    if (!pixelOnPlane(scene.camera, pixel, viewSize, o.pos.y, &grabbed)) return false;
-    object = index;
-    height = o.pos.y;
-    offset = o.pos - grabbed;
+    if (!pixelOnPlane(scene.camera, pixel, viewSize, centre.y, &grabbed)) return false;
+    item = what;
+    height = centre.y;
+    offset = centre - grabbed;
     return true;
 }
 

@@ -1,15 +1,17 @@
-// scene_edit.cpp — add, duplicate, delete and clear for objects, materials and lights.
+// scene_edit.cpp — add, duplicate, delete and clear for objects, groups, materials and lights.
 #include "marchbox/editor/scene_edit.h"
 
+#include "marchbox/editor/scene_tree.h"
 #include "marchbox/scene/sdf.h"
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 namespace mb {
 
 const char* itemKindName(ItemKind k) {
-    static const char* names[] = {"object", "material", "light"};
+    static const char* names[kItemKindCount] = {"object", "material", "light", "group"};
     return names[int(k)];
 }
 
@@ -21,6 +23,8 @@ int itemCount(const Scene& s, ItemKind k) {
             return int(s.materials.size());
         case ItemKind::Light:
             return int(s.lights.size());
+        case ItemKind::Group:
+            return int(s.groups.size());
     }
     return 0;
 }
@@ -33,6 +37,8 @@ int itemLimit(ItemKind k) {
             return kMaxMaterials;
         case ItemKind::Light:
             return kMaxLights;
+        case ItemKind::Group:
+            return kMaxGroups;
     }
     return 0;
 }
@@ -56,11 +62,58 @@ Light defaultLight() {
     return l;
 }
 
+// Half the shape's smallest extent, as the loader measures it: what `round` and `shell` must
+// stay under.
+static float halfThinnest(const Object& o) {
+    switch (o.type) {
+        case ShapeType::Sphere:
+        case ShapeType::Capsule:
+            return o.radius;
+        case ShapeType::Box:
+        case ShapeType::Ellipsoid:
+            return std::min(o.size.x, std::min(o.size.y, o.size.z));
+        case ShapeType::Torus:
+            return o.minor;
+        case ShapeType::Cylinder:
+        case ShapeType::Cone:
+            return std::min(o.radius, 0.5f * o.height);
+    }
+    return 0.0f;
+}
+
+// The largest float below v: "less than" in the file's rules.
+static float justBelow(float v) { return std::nextafter(v, 0.0f); }
+
+void fitShape(Object& o) {
+    const bool edged =
+        o.type == ShapeType::Box || o.type == ShapeType::Cylinder || o.type == ShapeType::Cone;
+    if (!edged) o.round = 0.0f;
+    const float limit = halfThinnest(o);
+    if (o.round >= limit) o.round = justBelow(limit);
+    if (o.shell >= limit) o.shell = justBelow(limit);
+    if (o.top >= o.radius) o.top = justBelow(o.radius);
+}
+
 Object retyped(Object o, ShapeType t) {
     const float lowest = o.pos.y - depthBelowCentre(o);
     o.type = t;
+    fitShape(o);
     o.pos.y = lowest + depthBelowCentre(o);
     return o;
+}
+
+Object retypedIn(const Scene& s, int index, ShapeType t) {
+    const Object& o = s.objects[size_t(index)];
+    if (o.group < 0) return retyped(o, t);
+    // Its lowest point in the world: the object as the world sees it, retyped, moved back.
+    const Placement frame = groupPose(s, o.group), world = worldPose(s, o);
+    Object seen = o;
+    seen.pos = world.pos;
+    seen.orient = world.turn;
+    const glm::vec3 rise = retyped(seen, t).pos - seen.pos;
+    Object out = retyped(o, t);
+    out.pos = o.pos + glm::inverse(frame.turn) * rise;
+    return out;
 }
 
 // Names like the loader's: "materialN" for the N-th material, so names stay distinct.
@@ -83,6 +136,10 @@ static bool inRange(const Scene& s, ItemKind k, int index, std::string* why) {
 }
 
 int addItem(Scene& s, ItemKind k, std::string* why) {
+    if (k == ItemKind::Group) {
+        *why = "a group is made of objects: select them and use Group";
+        return -1;
+    }
     bool needMaterial = k == ItemKind::Object && s.materials.empty();
     if (!hasRoom(s, k, 1, why)) return -1;
     if (needMaterial) s.materials.push_back(numberedMaterial(s));
@@ -96,6 +153,8 @@ int addItem(Scene& s, ItemKind k, std::string* why) {
         case ItemKind::Light:
             s.lights.push_back(defaultLight());
             break;
+        case ItemKind::Group:
+            break;
     }
     return itemCount(s, k) - 1;
 }
@@ -104,12 +163,12 @@ int duplicateItem(Scene& s, ItemKind k, int index, std::string* why) {
     if (!inRange(s, k, index, why) || !hasRoom(s, k, 1, why)) return -1;
     const glm::vec3 aside(1.0f, 0.0f, 0.0f);
     switch (k) {
-        case ItemKind::Object: {
-            Object o = s.objects[size_t(index)];
-            o.pos += aside;
-            o.comment.clear();
-            s.objects.push_back(o);
-            break;
+        case ItemKind::Object:
+        case ItemKind::Group: {
+            std::vector<Item> copies;
+            Renumbering r;
+            if (!duplicateItems(s, {{k, index}}, aside, &copies, &r, why)) return -1;
+            return copies.front().index;
         }
         case ItemKind::Material: {
             Material m = s.materials[size_t(index)];
@@ -146,7 +205,8 @@ bool deleteItem(Scene& s, ItemKind k, int index, std::string* why) {
     if (!inRange(s, k, index, why)) return false;
     switch (k) {
         case ItemKind::Object:
-            s.objects.erase(s.objects.begin() + index);
+        case ItemKind::Group:
+            eraseItems(s, {{k, index}});
             return true;
         case ItemKind::Material:
             return deleteMaterial(s, index, why);
@@ -159,26 +219,100 @@ bool deleteItem(Scene& s, ItemKind k, int index, std::string* why) {
 
 int reorderObject(Scene& s, int index, int by, std::string* why) {
     if (!inRange(s, ItemKind::Object, index, why)) return -1;
-    const int to = index + by;
-    if (to < 0 || to >= int(s.objects.size())) {
-        *why = "object " + std::to_string(index) + " is already " + (by < 0 ? "first" : "last");
-        return -1;
+    Renumbering r;
+    if (!shiftItem(s, {ItemKind::Object, index}, by, &r, why)) return -1;
+    return r.objects[size_t(index)];
+}
+
+namespace {
+
+template <class T>
+void take(const T& before, const T& after, T& target) {
+    if (!(before == after)) target = after;
+}
+
+template <class V>
+void takeParts(const V& before, const V& after, V& target) {
+    for (int i = 0; i < 3; ++i)
+        if (before[i] != after[i]) target[i] = after[i];
+}
+
+// A turn typed into `rot` replaces the exact one; the gizmo's turns come another way.
+template <class R>
+void takeTurn(const R& before, const R& after, R& target) {
+    if (before.rot == after.rot) return;
+    takeParts(before.rot, after.rot, target.rot);
+    target.orient.reset();
+}
+
+template <class R>
+void takeMotion(const R& before, const R& after, R& target) {
+    take(before.mass, after.mass, target.mass);
+    takeParts(before.vel, after.vel, target.vel);
+    takeParts(before.spin, after.spin, target.spin);
+    take(before.isStatic, after.isStatic, target.isStatic);
+    take(before.friction, after.friction, target.friction);
+    take(before.restitution, after.restitution, target.restitution);
+}
+
+void takeShape(const Object& before, const Object& after, Object& t) {
+    take(before.radius, after.radius, t.radius);
+    takeParts(before.size, after.size, t.size);
+    take(before.minor, after.minor, t.minor);
+    take(before.height, after.height, t.height);
+    take(before.top, after.top, t.top);
+    take(before.round, after.round, t.round);
+    take(before.shell, after.shell, t.shell);
+}
+
+}  // namespace
+
+void applyObjectEdit(Scene& s, const std::vector<int>& targets, const Object& before,
+                     const Object& after) {
+    for (int i : targets) {
+        if (i < 0 || i >= int(s.objects.size())) continue;
+        if (before.type != after.type) s.objects[size_t(i)] = retypedIn(s, i, after.type);
+        Object& t = s.objects[size_t(i)];
+        take(before.name, after.name, t.name);
+        takeParts(before.pos, after.pos, t.pos);
+        take(before.material, after.material, t.material);
+        takeShape(before, after, t);
+        takeTurn(before, after, t);
+        take(before.op, after.op, t.op);
+        take(before.blend, after.blend, t.blend);
+        if (t.group < 0) takeMotion(before, after, t);
+        fitShape(t);
     }
-    // The ones between shift one place towards where it was: a drag from 0 onto 3 gives 1 2 3 0.
-    auto at = [&](int i) { return s.objects.begin() + i; };
-    if (by < 0) std::rotate(at(to), at(index), at(index + 1));
-    else std::rotate(at(index), at(index + 1), at(to + 1));
-    return to;
+}
+
+void applyGroupEdit(Scene& s, const std::vector<int>& targets, const Group& before,
+                    const Group& after) {
+    for (int g : targets) {
+        if (g < 0 || g >= int(s.groups.size())) continue;
+        Group& t = s.groups[size_t(g)];
+        takeParts(before.pos, after.pos, t.pos);
+        takeTurn(before, after, t);
+        take(before.op, after.op, t.op);
+        take(before.blend, after.blend, t.blend);
+        if (t.parent < 0) takeMotion(before, after, t);
+    }
 }
 
 void clearItems(Scene& s, ItemKind k) {
     switch (k) {
         case ItemKind::Object:
             s.objects.clear();
+            s.groups.clear();
             break;
         case ItemKind::Light:
             s.lights.clear();
             break;
+        case ItemKind::Group: {  // the objects stay, where they stand
+            Renumbering r;
+            std::string unused;
+            while (!s.groups.empty()) ungroup(s, 0, &r, &unused);
+            break;
+        }
         case ItemKind::Material:
             s.materials.clear();
             if (s.objects.empty()) break;
@@ -209,6 +343,11 @@ int randomizeVelocities(Scene& s, uint32_t seed) {
     for (Object& o : s.objects) {
         if (!o.dynamic()) continue;
         o.vel = {side(rng), up(rng), side(rng)};
+        ++n;
+    }
+    for (Group& g : s.groups) {
+        if (!g.dynamic()) continue;
+        g.vel = {side(rng), up(rng), side(rng)};
         ++n;
     }
     return n;

@@ -44,7 +44,7 @@ TEST(Fields, NonFiniteIsRefusedEverywhere) {
         EXPECT_FALSE(validateField(Field(f), inf, &why)) << fieldSpec(Field(f)).name;
         EXPECT_FALSE(validateField(Field(f), -inf, &why)) << fieldSpec(Field(f)).name;
     }
-    EXPECT_EQ(why, "blend must be between 0 and 10000 m");
+    EXPECT_EQ(why, "top must be between 0 and 10000 m");       // the last field
     EXPECT_FALSE(validateField(Field::Position, 1e39, &why));  // finite double, infinite float
     EXPECT_FALSE(validateField(Field::Radius, nan, &why));
     EXPECT_EQ(why, "radius must be a number");
@@ -100,7 +100,7 @@ TEST(Fields, EveryTooltipGivesTheUnitAndTheRange) {
             << tip;
     }
     EXPECT_EQ(fieldTooltip(Field::Radius),
-              "Radius of a sphere, torus ring, capsule or cylinder.\n"
+              "Radius of a sphere, torus ring, capsule or cylinder, or a cone's base.\n"
               "Unit: m. Range: above 0 and at most 10000 m.\n"
               "Drag, or Ctrl+click to type a value.");
 }

@@ -10,7 +10,9 @@
 #pragma once
 
 #include "marchbox/editor/document.h"
+#include "marchbox/editor/gizmo.h"
 #include "marchbox/editor/scene_edit.h"
+#include "marchbox/editor/scene_tree.h"
 #include "marchbox/editor/selection.h"
 #include "marchbox/editor/simulation.h"
 
@@ -62,19 +64,47 @@ public:
     bool duplicate(ItemKind k, int index, std::string* why);  // selects the copy
     bool remove(ItemKind k, int index, std::string* why);
     bool reorder(int object, int by, std::string* why);  // reorderObject(); the selection follows
+    bool reorder(Item it, int by, std::string* why);     // shiftItem(): among its siblings
+    // The Objects panel's drag: `it` to `spot` (scene_tree.h), where it stands in the world.
+    bool moveTo(Item it, TreeSpot spot, std::string* why);
     void clear(ItemKind k);
     int kick();  // J: random velocities for the dynamic bodies; returns how many
+
+    // Ctrl+G: a group of the selected objects and groups (groupItems()), selected; one step.
+    bool groupSelected(std::string* why);
+    // Ungroup: dissolves each selected group, its children selected in its place; one step.
+    bool ungroupSelected(std::string* why);
+    // A field of the active object or group edited while more are selected: the active one
+    // becomes `after`; each other selected item of its kind takes the fields that changed from
+    // `before` to `after` (applyObjectEdit()), one undo step per mergeKey.
+    void editObjects(const Object& before, const Object& after, uint64_t mergeKey);
+    void editGroups(const Group& before, const Group& after, uint64_t mergeKey);
 
     //-------------------------------------------------------------------------
     // [SECTION] Selection
     //-------------------------------------------------------------------------
+    // Each change of the selection is told to the event log as "select " + describe().
     const Selection& selection() const { return sel_; }
-    void select(ItemKind k, int index);
-    int pick(glm::vec2 pixel, glm::vec2 viewSize);  // selects the object there, or nothing
-    bool removeSelected(std::string* why);
-    void moveObject(int index, glm::vec3 pos, uint64_t mergeKey);  // a drag: one undo step
+    void select(ItemKind k, int index);                             // that item alone (-1: nothing)
+    void toggle(Item it);                                           // Shift+click: toggleSelected()
+    void selectItems(const std::vector<Item>& items, bool extend);  // a box
+    void selectAll();     // Ctrl+A: every top-level object and group
+    bool selectParent();  // [: the group that holds the active item; false at the top level
+    // A click in the view: Replace selects the object there, or nothing; Climb does too, but
+    // a click on the active object, or inside the active group, goes up to its group
+    // (clickTarget()); Toggle (Shift) adds or removes it. Returns the object hit, or -1.
+    enum class Pick { Replace, Climb, Toggle };
+    int pick(glm::vec2 pixel, glm::vec2 viewSize, Pick how = Pick::Replace);
+    bool removeSelected(std::string* why);     // everything selected, one step
+    bool duplicateSelected(std::string* why);  // selects the copies
+    // A Ctrl drag over the ground: the item's centre to `pos` in the world, one undo step.
+    void placeItem(Item it, glm::vec3 pos, uint64_t mergeKey);
+    void moveObject(int index, glm::vec3 pos, uint64_t mergeKey);  // placeItem() of an object
     // A gizmo's drag: object `index` becomes `o` ("Rotate object", ...), one undo step per key.
     void setObject(int index, const Object& o, const std::string& label, uint64_t mergeKey);
+    // A gizmo's drag of the selection held at its press (applyGizmo()), one undo step per key.
+    void dragSelection(const GizmoHold& hold, const GizmoDelta& d, const std::string& label,
+                       uint64_t mergeKey);
     void moveLight(int index, glm::vec3 pos, uint64_t mergeKey);  // a point light's marker
 
     //-------------------------------------------------------------------------
@@ -95,9 +125,10 @@ public:
 
     // The camera moves as a view, not an edit: no undo step, no unsaved change.
     Camera& view() { return doc_.live().camera; }
-    // Numpad . and Home: the camera looks at the selection (an object or a point light), or at
-    // every object, as they stand now, from where it looks, as close as lets them fit a view
-    // `aspect` times as wide as tall. False, the camera unmoved, when there is nothing to frame.
+    // Numpad . and Home: the camera looks at the selection (its objects and groups, or a point
+    // light), or at every object, as they stand now, from where it looks, as close as lets them fit
+    // a view `aspect` times as wide as tall. False, the camera unmoved, when there is nothing to
+    // frame.
     bool frameSelected(float aspect);
     bool frameAll(float aspect);
     // What the view shows: while playing a scene with keyframes, their path at the simulated
@@ -117,6 +148,10 @@ private:
     void leaveNow(Leave what, const std::string& path);
     void replace(const Scene& scene, const std::string& path);  // New or Open
     void edited();  // after any change of the scene outside the simulator
+    void told(const Selection& before);  // the event log hears of a changed selection
+    // A change of the object tree as one undo step; the selection follows its items.
+    template <typename Command>
+    bool treeEdit(const std::string& label, Command command);
 
     Document doc_;
     Selection sel_;

@@ -51,6 +51,7 @@ enum class Field : int {
     Velocity,
     Spin,
     Blend,
+    Top,
     Count
 };
 

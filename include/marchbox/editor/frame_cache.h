@@ -24,6 +24,7 @@ struct RunPiece {
     std::shared_ptr<const std::vector<Object>> objects;  // as edited at `from`; null: the start's
     std::shared_ptr<const RunPiece> before;              // the piece it goes on from; null: none
     bool objectsEdited = false;  // the edit at `from` changed the objects, which the start lacks
+    std::shared_ptr<const std::vector<Group>> groups;  // with `objects`: the groups as edited
 };
 
 // The piece of `run` that holds time t: the last to begin at or before it (an edit at t
@@ -32,9 +33,10 @@ const std::shared_ptr<const RunPiece>& pieceAt(const std::shared_ptr<const RunPi
                                                double t);
 
 struct BodyState {
-    int object = 0;
+    int object = 0;  // its index in Scene::objects, or in Scene::groups for a group
     glm::vec3 pos{0.0f}, vel{0.0f}, spin{0.0f};
     std::optional<glm::quat> orient;
+    bool group = false;  // a dynamic group, moved as one body
 };
 
 struct BakedFrame {
@@ -70,8 +72,8 @@ private:
     std::vector<BakedFrame> frames_;  // in order of t
 };
 
-// The bodies back where they were: the frame's piece's objects where an edit made them, then
-// each dynamic body's state. `scene` holds the start's objects before.
+// The bodies back where they were: the frame's piece's objects and groups where an edit made
+// them, then each dynamic body's state. `scene` holds the start's objects before.
 void applyFrame(const BakedFrame& frame, Scene& scene);
 
 }  // namespace mb

@@ -18,6 +18,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <vector>
 
 namespace mb {
 
@@ -135,19 +136,43 @@ struct GizmoDrag {
 };
 
 // `start` with the drag applied: moved, turned about its centre, or sized along one of its
-// own axes as its shape allows (see docs/editor.md: a sphere's radius, a box's half-extent, a
-// torus's radius or tube, a capsule's or cylinder's radius or height). A turned body keeps its
-// turn exactly in `orient` where it had one or moves (the file writes orient for those), and
-// `rot` shows the same turn in degrees.
+// own axes as its shape allows (see docs/editor.md: a sphere's radius, a box's or ellipsoid's
+// half-extent, a torus's radius or tube, a capsule's, cylinder's or cone's radius or height; a
+// cone's top with its radius). A turned body keeps its turn exactly in `orient` where it had
+// one or moves (the file writes orient for those), and `rot` shows the same turn in degrees.
 Object applyGizmo(Object start, const GizmoDelta& d, const GizmoSettings& k = {});
+
+// Object o, or everything group g holds, sized by `factor` in every direction: lengths, the
+// places of members in their groups, blends and spacings. No length shrinks below minSize.
+void scaleObject(Object& o, float factor, const GizmoSettings& k = {});
+void scaleGroup(Scene& s, int g, float factor, const GizmoSettings& k = {});
+
+// The selection's objects and groups as the press found them: each frame applies the whole
+// drag to these, so rounding never builds up over a drag.
+struct GizmoHold {
+    std::vector<Item> items;      // roots() of the selection: each moves once, with its members
+    std::vector<Object> objects;  // the scene's, at the press
+    std::vector<Group> groups;
+    glm::vec3 centre{0.0f};   // the handles' centre: turns and uniform sizes go about it
+    bool alone = false;       // one object: sized along its own axes, not uniformly
+    float leastScale = 0.0f;  // no uniform size below this: every length stays >= minSize
+};
+GizmoHold holdSelection(const Scene& s, const Selection& sel, const GizmoSettings& k = {});
+
+// The held items with the drag applied, in the world: moved, turned about the centre, and
+// sized, one object alone along its own axis (as applyGizmo above), a group or several items
+// uniformly by the drag's factor about the centre. A member's place converts to its group's
+// frame. Nothing happens where the scene's lists no longer match the hold's.
+void applyGizmo(Scene& s, const GizmoHold& h, const GizmoDelta& d, const GizmoSettings& k = {});
 
 //-----------------------------------------------------------------------------
 // [SECTION] Selection
 //-----------------------------------------------------------------------------
-// The handles of the selection in the view of the scene's camera: an object's at its centre
-// in `mode` (*shown = mode); a point light's always move it (*shown = Move: a point has no
-// turn or size). False for nothing selected, a material, a directional light (it has no
-// place) or a centre behind the camera.
+// The handles of the selection in the view of the scene's camera, in `mode` (*shown = mode): an
+// object's at its centre in the world, a group's at its origin, along its own axes for Scale;
+// several items' at the mean of their centres, along the world's axes. A point light's always
+// move it (*shown = Move: a point has no turn or size). False for nothing selected, a
+// material, a directional light (it has no place) or a centre behind the camera.
 bool selectionGizmo(const Scene& s, const Selection& sel, GizmoMode mode, glm::vec2 viewSize,
                     GizmoFrame* f, GizmoMode* shown, const GizmoSettings& k = {});
 

@@ -24,7 +24,7 @@ enum class Place : int {
 };
 constexpr int kPlaceCount = 8;
 
-Place itemPlace(ItemKind k);  // the list panel of k: Objects, Materials or Lights
+Place itemPlace(ItemKind k);  // the list panel of k: Objects (groups too), Materials or Lights
 
 class Messages {
 public:

@@ -5,15 +5,23 @@
 // the mouse's y.
 #pragma once
 
+#include "marchbox/editor/scene_edit.h"
 #include "marchbox/scene/scene.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <vector>
 
 namespace mb {
 
 // Index of the object seen at `pixel` of a view of viewSize, or -1 for the ground or the sky.
+// A group's member is picked as itself, where the world sees it (every copy of a repeated or
+// mirrored group picks the member it copies).
 int pickObject(const Scene& scene, glm::vec2 pixel, glm::vec2 viewSize);
+
+// The objects whose centres, in the world, show inside the box with corners `a` and `b`: what a
+// box drag selects. In the order of the list.
+std::vector<Item> objectsInBox(const Scene& scene, glm::vec2 a, glm::vec2 b, glm::vec2 viewSize);
 
 // Where the ray through `pixel` meets the horizontal plane y = height. False when the ray runs
 // parallel to it or away from it.
@@ -26,18 +34,22 @@ bool pixelOnPlane(const Camera& camera, glm::vec2 pixel, glm::vec2 viewSize, flo
 // round, it goes above them to fall into place.
 glm::vec3 placeNewObject(const Scene& scene, const Object& o);
 
-// A modifier-drag in the view: the object slides over the horizontal plane through its centre,
-// keeping the point first grabbed under the mouse.
+// A modifier-drag in the view: an object or a group slides over the horizontal plane through
+// its centre in the world, keeping the point first grabbed under the mouse.
 struct GroundDrag {
-    int object = -1;         // -1: no drag
-    float height = 0.0f;     // of the plane, the object's centre height
-    glm::vec3 offset{0.0f};  // object centre minus the grabbed point
+    Item item{ItemKind::Object, -1};  // what moves; index -1: no drag
+    float height = 0.0f;              // of the plane, the item's centre height
+    glm::vec3 offset{0.0f};           // item centre minus the grabbed point
 
-    bool begin(const Scene& scene, int object, glm::vec2 pixel, glm::vec2 viewSize);
-    // Where the object's centre goes for the mouse at `pixel`; false when the ray misses.
+    bool begin(const Scene& scene, Item what, glm::vec2 pixel, glm::vec2 viewSize);
+    bool begin(const Scene& scene, int object, glm::vec2 pixel, glm::vec2 viewSize) {
+        return begin(scene, Item{ItemKind::Object, object}, pixel, viewSize);
+    }
+    // Where the item's centre goes, in the world, for the mouse at `pixel`; false when the ray
+    // misses.
     bool follow(const Camera& camera, glm::vec2 pixel, glm::vec2 viewSize, glm::vec3* pos) const;
-    bool active() const { return object >= 0; }
-    void end() { object = -1; }
+    bool active() const { return item.index >= 0; }
+    void end() { item.index = -1; }
 };
 
 }  // namespace mb
