@@ -3,7 +3,8 @@
 // the scene's tree: groups open and close, their members under them.
 //
 // Fields edit a copy of the item; a changed copy goes back through the editor as one undo
-// step, keyed by the widget so that one drag is one step.
+// step, keyed by the widget so that one drag is one step, and with several objects or groups
+// selected the fields that changed go to each of them.
 #include "ui.h"
 #include "widgets.h"
 
@@ -178,6 +179,12 @@ static void memberNote(const Scene& s, int group) {
                         s.groups[size_t(group)].name.c_str());
 }
 
+// With more than the active item selected, a field edited goes to each of them.
+static void selectionNote(UiContext& c) {
+    const size_t n = treeItems(c.editor.selection()).size();
+    if (n > 1) ImGui::TextDisabled("%zu selected: a field edited is set on each", n);
+}
+
 // place: the Objects panel or the object popup, whichever shows the fields.
 static void objectFields(UiContext& c, int i, Place place) {
     const Scene& s = c.editor.scene();
@@ -261,8 +268,10 @@ static void lightFields(UiContext& c, int i) {
 static void itemFields(UiContext& c, ItemKind k, int i) {
     switch (k) {
         case ItemKind::Object:
+            selectionNote(c);
             return objectFields(c, i, Place::Objects);
         case ItemKind::Group:
+            selectionNote(c);
             return groupFields(c, i);
         case ItemKind::Material:
             return materialFields(c, i);
@@ -296,24 +305,23 @@ static void moveButtons(UiContext& c, Item chosen, std::string* why) {
     ImGui::EndDisabled();
 }
 
-// Objects: Duplicate and Delete act on the active object or group.
+// Objects: Duplicate and Delete act on the whole selection.
 static void objectButtons(UiContext& c) {
     Editor& e = c.editor;
     std::string* why = c.ui.messages.at(Place::Objects);
-    const Item chosen = activeTreeItem(e.selection());
     if (ImGui::Button("Add")) e.add(ItemKind::Object, why);
     markItem(itemPath("Add"));
     ImGui::SameLine();
-    ImGui::BeginDisabled(chosen.index < 0);
-    if (ImGui::Button("Duplicate")) e.duplicate(chosen.kind, chosen.index, why);
+    ImGui::BeginDisabled(treeItems(e.selection()).empty());
+    if (ImGui::Button("Duplicate")) e.duplicateSelected(why);
     ImGui::SameLine();
-    if (ImGui::Button("Delete")) e.remove(chosen.kind, chosen.index, why);
+    if (ImGui::Button("Delete")) e.removeSelected(why);
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::BeginDisabled(e.scene().objects.empty() && e.scene().groups.empty());
     if (ImGui::Button("Clear")) e.clear(ItemKind::Object);
     ImGui::EndDisabled();
-    moveButtons(c, chosen, why);
+    moveButtons(c, activeTreeItem(e.selection()), why);  // Group and Ungroup: Edit and Ctrl+G
 }
 
 static void listButtons(UiContext& c, ItemKind k) {
@@ -364,9 +372,12 @@ static void dragRow(UiContext& c, Item row, const std::string& name) {
     ImGui::EndDragDropTarget();
 }
 
-// A click selects the row.
+// A click selects the row alone; Shift+click or Ctrl+click adds or removes it.
 static void clickRow(UiContext& c, Item row) {
-    if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) c.editor.select(row.kind, row.index);
+    if (!ImGui::IsItemClicked() || ImGui::IsItemToggledOpen()) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.KeyShift || io.KeyCtrl) c.editor.toggle(row);
+    else c.editor.select(row.kind, row.index);
 }
 
 // One row; for a group, whether it is open (its members' rows follow, pushed one level in).

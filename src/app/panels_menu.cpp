@@ -106,8 +106,12 @@ static void editMenu(UiContext& c) {
     } else {
         markItem("Edit/Add");
     }
+    if (menuItem("Edit", "Duplicate selected", nullptr, false, !e.selection().empty()))
+        e.duplicateSelected(deleteMessage(c));
     if (menuItem("Edit", "Delete selected", "Del", false, !e.selection().empty()))
         e.removeSelected(deleteMessage(c));
+    if (menuItem("Edit", "Select all", "Ctrl+A")) e.selectAll();
+    ImGui::Separator();
     if (menuItem("Edit", "Random velocities", "J")) e.kick();
 }
 
@@ -288,6 +292,9 @@ void drawMenuBar(UiContext& c) {
 static void ctrlShortcut(UiContext& c, const KeyPress& k) {
     const bool shift = k.mods & GLFW_MOD_SHIFT;
     switch (k.key) {
+        case GLFW_KEY_A:
+            c.editor.selectAll();
+            break;
         case GLFW_KEY_N:
             request(c, Leave::NewScene);
             break;

@@ -1,6 +1,9 @@
-// viewport_input.cpp — orbit, pan, zoom, fly; click to select; right click to edit; drag a
-// gizmo handle to move, turn or size the selection; Ctrl drag to move over the ground.
+// viewport_input.cpp — orbit, pan, zoom, fly; click to select, Shift+click to add or remove,
+// Ctrl drag in empty space to select a box; right click to edit; drag a gizmo handle to move,
+// turn or size the selection; Ctrl drag an object to move it over the ground.
 #include "viewport_input.h"
+
+#include "marchbox/scene/sdf.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -45,12 +48,26 @@ void ViewportInput::press(UiContext& c) {
     button_ = ImGuiMouseButton_Left;
     if (!io.KeyShift && grabGizmo(c, at)) return;
     drag_ = io.KeyShift ? Drag::Pan : Drag::Orbit;
-    if (io.KeyCtrl) {
-        int hit = c.editor.pick(at, view_);
-        if (hit >= 0 && ground_.begin(c.editor.scene(), hit, at, view_)) {
-            drag_ = Drag::Move;
-            ++moves_;
-        }
+    if (io.KeyCtrl) pressCtrl(c, at);
+}
+
+// On an object, what a Ctrl drag moves (the selected group holding it, or the object, selected
+// if it was not); in empty space, a box.
+void ViewportInput::pressCtrl(UiContext& c, glm::vec2 at) {
+    const Scene& s = c.editor.scene();
+    const int hit = pickObject(s, at, view_);
+    if (hit < 0) {
+        drag_ = Drag::Box;
+        boxFrom_ = at;
+        boxExtends_ = ImGui::GetIO().KeyShift;
+        return;
+    }
+    const Item target = dragTarget(s, c.editor.selection(), hit);
+    if (!c.editor.selection().has(target.kind, target.index))
+        c.editor.select(target.kind, target.index);
+    if (ground_.begin(c.editor.scene(), target, at, view_)) {
+        drag_ = Drag::Move;
+        ++moves_;
     }
 }
 
@@ -121,12 +138,13 @@ void ViewportInput::follow(UiContext& c, glm::vec2 delta) {
         case Drag::Gizmo:
             dragGizmo(c, pixel({io.MousePos.x, io.MousePos.y}));
             break;
+        case Drag::Box:  // drawn from the mouse; selects at the release
         case Drag::None:
             break;
     }
 }
 
-// "Move object", "Rotate group": what the drag does to what it holds.
+// "Move object", "Rotate group", "Scale 3 items": what the drag does to what it holds.
 static std::string dragLabel(HandleKind k, const GizmoHold& h) {
     const char* verb = k == HandleKind::Ring    ? "Rotate "
                        : k == HandleKind::Scale ? "Scale "
@@ -135,8 +153,7 @@ static std::string dragLabel(HandleKind k, const GizmoHold& h) {
     return verb + std::to_string(h.items.size()) + " items";
 }
 
-// Each frame applies the whole drag so far to the items as they were at the press: a member
-// moves in the world, its place converted to its group's frame.
+// Each frame applies the whole drag so far to the items as they were at the press.
 void ViewportInput::dragGizmo(UiContext& c, glm::vec2 at) {
     GizmoDelta d;
     if (!gizmo_.follow(c.editor.scene().camera, at, view_, ImGui::GetIO().KeyCtrl, &d)) return;
@@ -145,24 +162,66 @@ void ViewportInput::dragGizmo(UiContext& c, glm::vec2 at) {
     c.editor.dragSelection(hold_, d, dragLabel(gizmo_.handle.kind, hold_), dragKey());
 }
 
-void ViewportInput::release(UiContext& c) {
-    // A left press that never became a drag is a click: select the light marker or the object
-    // under it (a marker is drawn over the scene, so it comes first).
-    if (drag_ == Drag::Orbit && !moved_) {
-        ImGuiIO& io = ImGui::GetIO();
-        const glm::vec2 at = pixel({io.MousePos.x, io.MousePos.y});
-        const int light =
-            pickLightMarker(c.editor.scene(), at, view_, GizmoSettings{}.markerPixels);
-        if (light >= 0) {
-            c.editor.select(ItemKind::Light, light);
-            c.ui.showLights = true;  // its fields, as the Objects panel shows a clicked object's
-        } else {
-            c.editor.pick(at, view_);
-        }
+// Select the light marker or the object under the click (a marker is drawn over the scene, so
+// it comes first).
+void ViewportInput::click(UiContext& c, glm::vec2 at, bool shift) {
+    const int light = pickLightMarker(c.editor.scene(), at, view_, GizmoSettings{}.markerPixels);
+    if (light >= 0) {
+        c.editor.select(ItemKind::Light, light);
+        c.ui.showLights = true;  // its fields, as the Objects panel shows a clicked object's
+        return;
     }
+    c.editor.pick(at, view_, shift ? Editor::Pick::Toggle : Editor::Pick::Replace);
+}
+
+void ViewportInput::release(UiContext& c) {
+    ImGuiIO& io = ImGui::GetIO();
+    const glm::vec2 at = pixel({io.MousePos.x, io.MousePos.y});
+    // A left press that never became a drag is a click; with Shift (a pan's start) it adds or
+    // removes what it hits.
+    const bool clicked = button_ == ImGuiMouseButton_Left && !moved_;
+    if (clicked && (drag_ == Drag::Orbit || drag_ == Drag::Box || drag_ == Drag::Pan))
+        click(c, at, drag_ == Drag::Pan);
+    if (drag_ == Drag::Box && !clicked)
+        c.editor.selectItems(objectsInBox(c.editor.scene(), boxFrom_, at, view_), boxExtends_);
     if (drag_ == Drag::Move || drag_ == Drag::Gizmo) c.editor.endEdit();
     ground_.end();
     drag_ = Drag::None;
+}
+
+// View pixels (from the bottom, framebuffer) to ImGui's window coordinates.
+static ImVec2 toWindow(glm::vec2 px, glm::vec2 view, glm::vec2 scale) {
+    return ImVec2(px.x / scale.x, (view.y - px.y) / scale.y);
+}
+
+void ViewportInput::drawSelection(const UiContext& c) const {
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    const ImU32 orange = IM_COL32(255, 153, 25, 255);  // the outline's colour
+    if (drag_ == Drag::Box && moved_) {
+        const ImVec2 to = ImGui::GetIO().MousePos;
+        const ImVec2 from = toWindow(boxFrom_, view_, scale_);
+        dl->AddRectFilled(from, to, IM_COL32(255, 153, 25, 40));
+        dl->AddRect(from, to, orange, 0.0f, 0, 1.5f);
+    }
+    const Selection& sel = c.editor.selection();
+    const std::vector<Item> items = treeItems(sel);
+    const bool outlined = items.size() == 1 && sel.is(ItemKind::Object, items[0].index);
+    if (c.editor.followsPath() || items.empty() || outlined) return;
+    const Scene& s = c.editor.scene();
+    const SceneSdf sdf = makeSceneSdf(s);
+    for (Item it : items) {
+        if (sel.is(it.kind, it.index) && it.kind == ItemKind::Object) continue;  // outlined
+        const bool object = it.kind == ItemKind::Object;
+        const glm::vec3 centre =
+            object ? sdf.objects[size_t(it.index)].pos : sdf.groups[size_t(it.index)].pos;
+        const float bound =
+            object ? sdf.objects[size_t(it.index)].bound : sdf.groups[size_t(it.index)].bound;
+        glm::vec2 at;
+        if (!projectToPixel(s.camera, centre, view_, &at)) continue;
+        const float r = bound / metresPerPixel(s.camera, centre, view_.y) / scale_.y;
+        dl->AddCircle(toWindow(at, view_, scale_), std::max(r, 4.0f), orange, 0,
+                      sel.is(it.kind, it.index) ? 2.5f : 1.5f);
+    }
 }
 
 void ViewportInput::keys(UiContext& c, float seconds) {

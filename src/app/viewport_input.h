@@ -1,4 +1,5 @@
-// viewport_input.h — the mouse and the fly keys over the scene: camera, picking, dragging.
+// viewport_input.h — the mouse and the fly keys over the scene: camera, picking, box selection,
+// dragging.
 // ImGui's WantCaptureMouse and WantCaptureKeyboard keep input it uses away from here.
 #pragma once
 
@@ -18,17 +19,22 @@ public:
     bool dragging() const { return drag_ != Drag::None; }
     // The gizmo handle held, or under the mouse while nothing is dragged: the one drawn lit.
     GizmoHandle hotHandle(const UiContext& c) const;
+    // Over the scene, under the panels: the box of a box selection being dragged, and a ring
+    // about each selected object but the active one (the picture outlines that one).
+    void drawSelection(const UiContext& c) const;
 
 private:
-    enum class Drag { None, Orbit, Pan, Move, Gizmo };
+    enum class Drag { None, Orbit, Pan, Move, Gizmo, Box };
     glm::vec2 pixel(glm::vec2 mouse) const;  // window coordinates to a bottom-up view pixel
     void press(UiContext& c);
     GizmoHandle handleAt(const UiContext& c, glm::vec2 at, GizmoFrame* f) const;
     bool grabGizmo(UiContext& c, glm::vec2 at);  // a press on a handle of the selection
+    void pressCtrl(UiContext& c, glm::vec2 at);  // a move over the ground, or a box
     void hold(UiContext& c);
     void follow(UiContext& c, glm::vec2 delta);  // the drag moved the mouse by delta
     void dragGizmo(UiContext& c, glm::vec2 at);
     void release(UiContext& c);
+    void click(UiContext& c, glm::vec2 at, bool shift);  // a press that never became a drag
     void keys(UiContext& c, float seconds);
     uint64_t dragKey() const { return 0x4d6f7665ull << 32 | moves_; }  // "Move": its undo step
 
@@ -40,6 +46,8 @@ private:
     Selection held_;      // what the gizmo drag acts on
     GizmoHold hold_;      // its objects and groups at the press: each frame applies the whole
     glm::vec3 heldLight_{0.0f};  // drag to them, or to a light's place
+    glm::vec2 boxFrom_{0.0f};    // a box selection's first corner, in view pixels
+    bool boxExtends_ = false;    // Shift held: the box adds to the selection
     uint64_t moves_ = 0;  // numbers each drag that edits: one undo step per drag
     glm::vec2 view_{0.0f}, scale_{1.0f};
     CameraControls controls_;

@@ -58,4 +58,7 @@ TEST(Controls, EveryKeyTheWindowHandlesIsListed) {
          {"1", "F", "P", "J", "Space", "Delete", "F12", "Esc", "Ctrl+Z", "Ctrl+Y", "Ctrl+N",
           "Ctrl+O", "Ctrl+S", "Ctrl+Shift+S", "W A S D, Q E", "G", "R", "T"})
         EXPECT_NE(all.find(std::string(key) + ","), std::string::npos) << key;
+    // Selecting and grouping, as in Blender.
+    for (const char* key : {"Shift+click", "Ctrl drag in empty space", "Ctrl+A"})
+        EXPECT_NE(all.find(std::string(key) + ","), std::string::npos) << key;
 }
