@@ -1,6 +1,6 @@
 // panels_edit.cpp — Edit > Objects, Materials, Lights: lists with add, duplicate, delete and
-// clear, the active item's every field, and the viewport's right-click popup. Objects lists
-// the scene's tree: groups open and close, their members under them.
+// clear, the active item's every field, and the viewport's right-click popup. Objects is an
+// outliner: groups open and close, rows drag into, out of and along groups.
 //
 // Fields edit a copy of the item; a changed copy goes back through the editor as one undo
 // step, keyed by the widget so that one drag is one step, and with several objects or groups
@@ -349,11 +349,15 @@ static void listButtons(UiContext& c, ItemKind k) {
 //-----------------------------------------------------------------------------
 static const char* kRowPayload = "tree row";
 
-// Where a row dropped on a sibling `target` goes: to that row's place, the ones between
-// closing up behind it, as Move up and down do.
-static TreeSpot dropSpot(const Scene& s, Item dragged, Item target) {
-    const TreeSpot at = spotOf(s, target), from = spotOf(s, dragged);
-    return {at.parent, at.at + (from.at < at.at ? 1 : 0)};
+// Where a row dropped on `target` goes: onto a sibling it takes that row's place (the ones
+// between close up behind it, as Move up and down do); onto a row of another group, just
+// before it; onto a group's row, last inside it, but for the row's top quarter, before it.
+static TreeSpot dropSpot(const Scene& s, Item dragged, Item target, bool upperQuarter) {
+    const TreeSpot at = spotOf(s, target);
+    if (target.kind == ItemKind::Group && !upperQuarter) return {target.index, -1};
+    const TreeSpot from = spotOf(s, dragged);
+    const bool later = from.parent == at.parent && from.at < at.at;
+    return {at.parent, at.at + (later ? 1 : 0)};
 }
 
 static void dragRow(UiContext& c, Item row, const std::string& name) {
@@ -364,10 +368,11 @@ static void dragRow(UiContext& c, Item row, const std::string& name) {
     }
     if (!ImGui::BeginDragDropTarget()) return;
     if (const ImGuiPayload* p = ImGui::AcceptDragDropPayload(kRowPayload)) {
-        const Scene& s = c.editor.scene();
         const Item from = *static_cast<const Item*>(p->Data);
-        if (from != row && parentOf(s, from) == parentOf(s, row))
-            c.editor.moveTo(from, dropSpot(s, from, row), c.ui.messages.at(Place::Objects));
+        const float top = ImGui::GetItemRectMin().y, height = ImGui::GetItemRectSize().y;
+        const bool upper = ImGui::GetIO().MousePos.y < top + 0.25f * height;
+        const TreeSpot spot = dropSpot(c.editor.scene(), from, row, upper);
+        if (from != row) c.editor.moveTo(from, spot, c.ui.messages.at(Place::Objects));
     }
     ImGui::EndDragDropTarget();
 }
@@ -404,11 +409,24 @@ static bool treeRow(UiContext& c, Item row) {
     return row.kind == ItemKind::Group && open;
 }
 
-// The list's height: 150 px, or for more rows up to a third of a tall window's height; a small
-// window keeps its room for the fields.
+// Below the rows: a row dropped there goes to the top level, last.
+static void topLevelDrop(UiContext& c) {
+    const float room = std::max(ImGui::GetContentRegionAvail().y, ImGui::GetFrameHeight());
+    ImGui::InvisibleButton("##top level",
+                           ImVec2(std::max(ImGui::GetContentRegionAvail().x, 1.0f), room));
+    markItem("Objects/top level");
+    if (!ImGui::BeginDragDropTarget()) return;
+    if (const ImGuiPayload* p = ImGui::AcceptDragDropPayload(kRowPayload))
+        c.editor.moveTo(*static_cast<const Item*>(p->Data), {-1, -1},
+                        c.ui.messages.at(Place::Objects));
+    ImGui::EndDragDropTarget();
+}
+
+// The list's height: 150 px, or for more rows (and one row's room to drop on) up to a third of
+// a tall window's height; a small window keeps its room for the fields.
 static float outlinerHeight(size_t rows) {
     const float row = ImGui::GetFrameHeightWithSpacing();
-    const float wanted = float(rows) * row + 2.0f * ImGui::GetStyle().WindowPadding.y;
+    const float wanted = float(rows + 1) * row + 2.0f * ImGui::GetStyle().WindowPadding.y;
     const float most = std::max(150.0f, ImGui::GetIO().DisplaySize.y / 3.0f);
     return std::clamp(wanted, 150.0f, most);
 }
@@ -425,6 +443,7 @@ static void outliner(UiContext& c) {
         if (treeRow(c, row.item)) shown = ++pushed;
     }
     for (; pushed > 0; --pushed) ImGui::TreePop();
+    topLevelDrop(c);
     ImGui::EndChild();
 }
 

@@ -85,6 +85,26 @@ static void fileMenu(UiContext& c) {
 static const char* const kShapeMenuNames[kShapeTypeCount] = {
     "Sphere", "Box", "Torus", "Capsule", "Cylinder", "Cone", "Ellipsoid"};
 
+// Why Group or Ungroup refused: in Objects when it is open, else on the status line.
+static std::string* objectsMessage(UiContext& c) {
+    return c.ui.messages.at(c.ui.messages.onScreen(Place::Objects) ? Place::Objects
+                                                                   : Place::Status);
+}
+
+// Select all, Group, Ungroup and Select parent group: the selection's items and their groups.
+static void groupItems(UiContext& c) {
+    Editor& e = c.editor;
+    const std::vector<Item> items = treeItems(e.selection());
+    const bool group =
+        std::any_of(items.begin(), items.end(), [](Item it) { return it.kind == ItemKind::Group; });
+    if (menuItem("Edit", "Select all", "Ctrl+A")) e.selectAll();
+    if (menuItem("Edit", "Select parent group", "[", false, !items.empty())) e.selectParent();
+    if (menuItem("Edit", "Group", "Ctrl+G", false, !items.empty()))
+        e.groupSelected(objectsMessage(c));
+    if (menuItem("Edit", "Ungroup", "Ctrl+Alt+G", false, group))
+        e.ungroupSelected(objectsMessage(c));
+}
+
 static void editMenu(UiContext& c) {
     Editor& e = c.editor;
     const History& h = e.document().history();
@@ -110,7 +130,8 @@ static void editMenu(UiContext& c) {
         e.duplicateSelected(deleteMessage(c));
     if (menuItem("Edit", "Delete selected", "Del", false, !e.selection().empty()))
         e.removeSelected(deleteMessage(c));
-    if (menuItem("Edit", "Select all", "Ctrl+A")) e.selectAll();
+    ImGui::Separator();
+    groupItems(c);
     ImGui::Separator();
     if (menuItem("Edit", "Random velocities", "J")) e.kick();
 }
@@ -295,6 +316,10 @@ static void ctrlShortcut(UiContext& c, const KeyPress& k) {
         case GLFW_KEY_A:
             c.editor.selectAll();
             break;
+        case GLFW_KEY_G:  // Blender's: Ctrl+G a new collection, Ctrl+Alt+G out of it
+            if (k.mods & GLFW_MOD_ALT) c.editor.ungroupSelected(objectsMessage(c));
+            else c.editor.groupSelected(objectsMessage(c));
+            break;
         case GLFW_KEY_N:
             request(c, Leave::NewScene);
             break;
@@ -335,6 +360,9 @@ static void plainShortcut(UiContext& c, const KeyPress& k) {
             break;
         case GLFW_KEY_KP_DECIMAL:
             frameView(c, false);
+            break;
+        case GLFW_KEY_LEFT_BRACKET:  // Blender's Select Hierarchy: parent
+            e.selectParent();
             break;
         case GLFW_KEY_LEFT:  // as Blender's Shift+Left: to the start
             if (k.mods & GLFW_MOD_SHIFT) e.seek(0);

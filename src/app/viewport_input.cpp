@@ -163,7 +163,7 @@ void ViewportInput::dragGizmo(UiContext& c, glm::vec2 at) {
 }
 
 // Select the light marker or the object under the click (a marker is drawn over the scene, so
-// it comes first).
+// it comes first). A second click on the active object climbs to its group (Editor::pick).
 void ViewportInput::click(UiContext& c, glm::vec2 at, bool shift) {
     const int light = pickLightMarker(c.editor.scene(), at, view_, GizmoSettings{}.markerPixels);
     if (light >= 0) {
@@ -171,7 +171,7 @@ void ViewportInput::click(UiContext& c, glm::vec2 at, bool shift) {
         c.ui.showLights = true;  // its fields, as the Objects panel shows a clicked object's
         return;
     }
-    c.editor.pick(at, view_, shift ? Editor::Pick::Toggle : Editor::Pick::Replace);
+    c.editor.pick(at, view_, shift ? Editor::Pick::Toggle : Editor::Pick::Climb);
 }
 
 void ViewportInput::release(UiContext& c) {

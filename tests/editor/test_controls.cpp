@@ -59,6 +59,7 @@ TEST(Controls, EveryKeyTheWindowHandlesIsListed) {
           "Ctrl+O", "Ctrl+S", "Ctrl+Shift+S", "W A S D, Q E", "G", "R", "T"})
         EXPECT_NE(all.find(std::string(key) + ","), std::string::npos) << key;
     // Selecting and grouping, as in Blender.
-    for (const char* key : {"Shift+click", "Ctrl drag in empty space", "Ctrl+A"})
+    for (const char* key :
+         {"Shift+click", "Ctrl drag in empty space", "Ctrl+A", "[", "Ctrl+G", "Ctrl+Alt+G"})
         EXPECT_NE(all.find(std::string(key) + ","), std::string::npos) << key;
 }
