@@ -24,7 +24,8 @@ WINDOW = (640, 400)  # small: a software renderer draws it a few times a second
 HOLD = 0.4           # s a key or button stays down: longer than a slow frame
 # Cases that need another window or scene than the small default (paths from the source tree).
 # render: its dialog's fields and message all in sight above the timeline.
-SIZES = {'live': (1280, 720), 'panels': (960, 600), 'guide': (960, 540), 'render': (640, 440)}
+SIZES = {'live': (1280, 720), 'panels': (960, 600), 'guide': (960, 540), 'render': (640, 440),
+         'cup': (1280, 720)}
 SCENES = {'live': 'tests/e2e/live_scene.txt', 'slow_input': 'tests/e2e/slow_scene.txt'}
 UNTITLED = {'new_save_as'}  # cases that start the editor with no file named
 SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..')
@@ -156,7 +157,7 @@ class Editor:
         time.sleep(0.05)
 
     def type(self, text):
-        xdotool('type', '--delay', 40, text)
+        xdotool('type', '--delay', 40, '--', text)  # '--': a text such as -0.5 is no option
 
     def ctrl_click(self, x, y):
         self.move(x, y)
@@ -1487,6 +1488,199 @@ def case_timeline(app, scene):
 def is_key_mark(rgb):  # a camera key's diamond on the timeline, (255, 210, 60)
     r, g, b = rgb[:3]
     return r > 230 and 180 < g < 235 and b < 100
+
+
+# [groups] ---------------------------------------------------------------------
+def records(path, kind):
+    """Each `kind` record of a scene file as a dict of its keys, in file order."""
+    return [dict(f.partition(':')[::2] for f in line.split()[1:])
+            for line in open(path) if line.split()[:1] == [kind]]
+
+
+def vec(text):
+    return [float(v) for v in text.split(',')]
+
+
+def add_shape(app, shape):
+    """Edit > Add > shape; returns the new object's index from the selection it makes."""
+    app.click_widget('Edit', fresh=False)
+    app.wait('popup menu Edit open')
+    app.move(*app.widget('Edit/Add'))
+    app.click_widget('Add/' + shape.capitalize())
+    app.wait('edit Add ' + shape)
+    return int(app.wait('select object ').split()[-1])
+
+
+def shift_click(app, x, y):
+    app.move(x, y)
+    xdotool('keydown', 'shift')
+    xdotool('mousedown', 1)
+    time.sleep(HOLD)
+    xdotool('mouseup', 1)
+    xdotool('keyup', 'shift')
+
+
+def type_pos(app, path, index, pos, kind='object', field='Objects/pos'):
+    """Types each part of the selected object's (or light's) pos on its own, Return after each:
+    at 1280x720 a frame can take longer than the keys after a Tab. Checks the saved file's
+    `kind` record `index` has it."""
+    typed = ['%.6g' % v for v in pos]
+    for i, text in enumerate(typed):
+        app.ctrl_click(*scroll_into(app, '%s[%d]' % (field, i), panel(app, field.split('/')[0])))
+        app.wait('typing ' + field)
+        app.type(text)
+        app.key('Return')
+        time.sleep(0.3)
+    app.save()
+    saved = vec(records(path, kind)[index]['pos'])
+    check(saved == [float(t) for t in typed], '%s %d at %s, typed %s' % (kind, index, saved, typed))
+
+
+def in_cup(ball, cup):
+    """A ball's centre in the frame of the cup group (pos, orient w,x,y,z as saved)."""
+    w, x, y, z = vec(cup.get('orient', '1,0,0,0'))
+    d = [b - c for b, c in zip(vec(ball['pos']), vec(cup['pos']))]
+    # The inverse turn of a unit quaternion q applied to d: q* d q.
+    qv, s = [-x, -y, -z], w
+    t = [2 * (qv[1] * d[2] - qv[2] * d[1]), 2 * (qv[2] * d[0] - qv[0] * d[2]),
+         2 * (qv[0] * d[1] - qv[1] * d[0])]
+    return [d[i] + s * t[i] + (qv[(i + 1) % 3] * t[(i + 2) % 3] - qv[(i + 2) % 3] * t[(i + 1) % 3])
+            for i in range(3)]
+
+
+def check_selecting(app, path, x, z):
+    """Over the cup and its balls: a Ctrl drag in empty space boxes the three balls; a click on
+    the cup selects its outer cylinder, a second click the group; a ball's row dragged onto the
+    group's row goes into it, and Ctrl+Z takes it out again."""
+    app.click(1000, 150)  # the sky: no handles where the box starts
+    app.wait('select none')
+    balls = [project(path, vec(b['pos'])) for b in records(path, 'object')[2:]]
+    lo = (min(p[0] for p in balls) - 40, min(p[1] for p in balls) - 40)
+    hi = (max(p[0] for p in balls) + 40, max(p[1] for p in balls) + 40)
+    drag(app, lo, hi, ctrl=True)
+    check(app.wait('select ') == 'select 3 items: object 2, object 3, object 4',
+          'the box did not select the three balls')
+    wall = project(path, [x, 0.4, z - 0.45])  # the outer cylinder's near side
+    app.click(*wall)
+    check(app.wait('select ') == 'select object 0', 'a click did not select the outer cylinder')
+    app.click(*wall)
+    check(app.wait('select ') == 'select group 0', 'a second click did not select the group')
+    drag(app, app.widget('Objects/4 sphere, union, dynamic', fresh=False),
+         app.widget('Objects/cup: group, union, dynamic', fresh=False))
+    app.wait('edit Move object into group')
+    app.save()
+    members = [o for o in records(path, 'object') if o.get('in') == 'cup']
+    check(len(members) == 3 and members[2]['type'] == 'sphere', 'the ball did not go into the cup')
+    app.key('ctrl+z')
+    app.wait('undo Move object into group')
+    app.save()
+    check(sum(1 for o in records(path, 'object') if o.get('in')) == 2 and
+          'in' not in records(path, 'object')[4], 'Ctrl+Z did not take the ball out')
+
+
+def case_cup(app, scene):
+    """From File > New at 1280x720: a cylinder, and a taller, narrower one carving it, make a
+    cup; both selected, Ctrl+G groups them where they stand and the group is ticked dynamic;
+    three balls above it fall into it when Space plays. Each step is read back from the saved
+    file; the screenshots show the outliner and the balls in the cup."""
+    cup_file = os.path.join(app.workdir, 'cup.txt')
+    app.key('ctrl+n')
+    app.wait('new')
+    app.key('ctrl+s')
+    app.wait('typing Save scene as/path')
+    app.type(cup_file)
+    app.key('Return')
+    check(app.wait('save ') == 'save ' + cup_file, 'Save As did not save the new scene')
+    app.click_widget('Objects/0 sphere, union, dynamic', fresh=False)  # New's ball goes
+    app.wait('select object 0')
+    app.key('Delete')
+    app.wait('edit Delete object')
+
+    outer = add_shape(app, 'cylinder')  # radius 0.5, height 1, on the ground
+    app.save()
+    x, _, z = vec(records(cup_file, 'object')[outer]['pos'])
+    inner = add_shape(app, 'cylinder')  # put aside by Add: into the first, 0.1 above its floor
+    app.type_into('Objects/radius', '0.4', fresh=False)
+    app.wait('edit Edit object')
+    app.type_into('Objects/height', '1.2', fresh=False)
+    app.wait('edit Edit object')
+    app.save()
+    check(records(cup_file, 'object')[inner]['radius'] == '0.4' and
+          records(cup_file, 'object')[inner]['height'] == '1.2', 'the inner cylinder\'s size')
+    type_pos(app, cup_file, inner, [x, 0.7, z])
+    app.click_widget('Objects/op', fresh=False)
+    app.click_widget('Objects/op/subtract')
+    app.wait('edit Edit object')
+
+    app.click_widget('Objects/%d cylinder, union, dynamic' % outer, fresh=False)
+    app.wait('select object %d' % outer)
+    shift_click(app, *app.widget('Objects/%d cylinder, subtract, dynamic' % inner, fresh=False))
+    check(app.wait('select ') == 'select 2 items: object 0, object 1', 'not both cylinders')
+    app.key('ctrl+g')
+    app.wait('edit Group')
+    check(app.wait('select ') == 'select group 0', 'the new group is not selected')
+    app.type_into('Objects/name', 'cup', fresh=False)
+    app.wait('edit Edit group')
+    app.click_widget('Objects/dynamic', fresh=False)
+    app.wait('edit Edit group')
+    app.save()
+    group = records(cup_file, 'group')
+    members = records(cup_file, 'object')
+    check(len(group) == 1 and group[0]['name'] == 'cup' and group[0].get('static') == '0',
+          'no dynamic group cup: %s' % group)
+    check([m.get('in') for m in members] == ['cup', 'cup'] and members[1]['op'] == 'subtract',
+          'the cylinders are not the cup: %s' % members)
+    centre = vec(group[0]['pos'])
+    check(abs(centre[0] - x) < 1e-5 and abs(centre[2] - z) < 1e-5 and abs(centre[1] - 0.6) < 1e-5,
+          'the group is not at the cylinders\' centre: %s' % centre)
+    for m, want in zip(members, ([x, 0.5, z], [x, 0.7, z])):  # where they stood, in the world
+        at = [a + b for a, b in zip(vec(m['pos']), centre)]
+        check(max(abs(a - b) for a, b in zip(at, want)) < 1e-5, 'a cylinder moved: %s' % at)
+    app.settle()
+    app.key('F12')
+    app.wait('screenshot ')
+
+    for i in range(3):  # three balls over the cup's mouth, one above another
+        ball = add_shape(app, 'sphere')
+        app.type_into('Objects/radius', '0.15', fresh=False)
+        app.wait('edit Edit object')
+        type_pos(app, cup_file, ball, [x + 0.08 * (i - 1), 1.8 + 0.5 * i, z + 0.05 * (1 - i)])
+    check_selecting(app, cup_file, x, z)
+    app.menu('Edit', 'Lights')  # the light overhead, for a picture of the cup's inside
+    app.click_widget('Lights/0 point')
+    app.wait('select light 0')
+    type_pos(app, cup_file, 0, [x + 0.2, 6, z - 0.3], 'light', 'Lights/pos')
+    app.menu('Edit', 'Lights')
+    app.key('space')
+    app.wait('play')
+    time.sleep(6)
+    app.key('space')
+    app.wait('pause')
+    app.click(1000, 150)  # the sky: nothing selected, no handles in the way
+    app.wait('select none')
+    drag(app, (1000, 150), (1000, 400))  # orbit up, to look down into the cup
+    for _ in range(4):
+        xdotool('click', 4)  # the wheel, up: closer
+        time.sleep(0.1)
+    time.sleep(0.5)
+    app.settle()
+    app.key('F12')
+    app.wait('screenshot ')
+    app.menu('Simulation', 'Keep simulated poses')
+    app.save()
+    cup = records(cup_file, 'group')[0]
+    balls = [b for b in records(cup_file, 'object') if 'in' not in b]
+    check(len(balls) == 3, '%d balls saved' % len(balls))
+    # The cavity, in the cup's frame (its origin halfway between the cylinders' centres): a
+    # ball's centre within the inner radius less its own of the axis, above the floor (y -0.5)
+    # by its radius and below the rim (y 0.4). 0.02 m is room for the contacts' overlap.
+    for b in balls:
+        local = in_cup(b, cup)
+        across = math.hypot(local[0], local[2])
+        check(across < 0.4 - 0.15 + 0.02 and -0.5 + 0.15 - 0.02 < local[1] < 0.4,
+              'a ball is not in the cup: %s in the cup\'s frame (cup at %s)' % (local, cup['pos']))
+    app.key('ctrl+q')
+    check(app.finish() == 0, 'exit status not 0')
 
 
 CASES = {name[5:]: fn for name, fn in globals().items() if name.startswith('case_')}
