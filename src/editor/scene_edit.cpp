@@ -62,31 +62,11 @@ Light defaultLight() {
     return l;
 }
 
-// Half the shape's smallest extent, as the loader measures it: what `round` and `shell` must
-// stay under.
-static float halfThinnest(const Object& o) {
-    switch (o.type) {
-        case ShapeType::Sphere:
-        case ShapeType::Capsule:
-            return o.radius;
-        case ShapeType::Box:
-        case ShapeType::Ellipsoid:
-            return std::min(o.size.x, std::min(o.size.y, o.size.z));
-        case ShapeType::Torus:
-            return o.minor;
-        case ShapeType::Cylinder:
-        case ShapeType::Cone:
-            return std::min(o.radius, 0.5f * o.height);
-    }
-    return 0.0f;
-}
-
 // The largest float below v: "less than" in the file's rules.
 static float justBelow(float v) { return std::nextafter(v, 0.0f); }
 
 void fitShape(Object& o) {
-    const bool edged =
-        o.type == ShapeType::Box || o.type == ShapeType::Cylinder || o.type == ShapeType::Cone;
+    const bool edged = hasEdges(o.type);
     if (!edged) o.round = 0.0f;
     const float limit = halfThinnest(o);
     if (o.round >= limit) o.round = justBelow(limit);

@@ -3,6 +3,7 @@
 
 #include "marchbox/scene/sdf.h"
 
+#include <algorithm>
 #include <glm/gtc/quaternion.hpp>
 
 namespace mb {
@@ -16,6 +17,27 @@ const char* shapeTypeName(ShapeType t) {
 const char* csgOpName(CsgOp op) {
     static const char* names[kCsgOpCount] = {"union", "subtract", "intersect"};
     return names[int(op)];
+}
+
+bool hasEdges(ShapeType t) {
+    return t == ShapeType::Box || t == ShapeType::Cylinder || t == ShapeType::Cone;
+}
+
+float halfThinnest(const Object& o) {
+    switch (o.type) {
+        case ShapeType::Sphere:
+        case ShapeType::Capsule:
+            return o.radius;
+        case ShapeType::Box:
+        case ShapeType::Ellipsoid:
+            return std::min(o.size.x, std::min(o.size.y, o.size.z));
+        case ShapeType::Torus:
+            return o.minor;
+        case ShapeType::Cylinder:
+        case ShapeType::Cone:
+            return std::min(o.radius, 0.5f * o.height);
+    }
+    return 0.0f;
 }
 
 glm::quat Object::orientation() const {

@@ -407,27 +407,8 @@ void Parser::object(Fields& fields, std::string comment) {
     tree_.push_back({false, int(scene.objects.size()) - 1});
 }
 
-// Half the shape's smallest extent: what a rounding or a wall must stay under.
-float halfThinnest(const Object& o) {
-    switch (o.type) {
-        case ShapeType::Sphere:
-        case ShapeType::Capsule:
-            return o.radius;
-        case ShapeType::Box:
-        case ShapeType::Ellipsoid:
-            return std::min(o.size.x, std::min(o.size.y, o.size.z));
-        case ShapeType::Torus:
-            return o.minor;
-        case ShapeType::Cylinder:
-        case ShapeType::Cone:
-            return std::min(o.radius, 0.5f * o.height);
-    }
-    return 0.0f;
-}
-
 void Parser::checkShape(const Object& o) {
-    const bool edged = o.type == ShapeType::Box || o.type == ShapeType::Cylinder ||
-                       o.type == ShapeType::Cone;
+    const bool edged = hasEdges(o.type);
     if (o.round > 0.0f && !edged)
         error("'round' is for a box, cylinder or cone, not a " +
               std::string(shapeTypeName(o.type)));

@@ -188,6 +188,9 @@ struct Scene {
 
 const char* shapeTypeName(ShapeType t);  // "sphere", "box", ...
 const char* csgOpName(CsgOp op);         // "union", "subtract", "intersect"
+bool hasEdges(ShapeType t);              // a box, cylinder or cone: what `round` applies to
+// Half the shape's smallest extent: what `round` and `shell` must stay under.
+float halfThinnest(const Object& o);
 
 // Group trees (Scene::groups in tree order).
 int groupEnd(const Scene& scene, int g);    // one past g's last object in the tree order
