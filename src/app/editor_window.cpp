@@ -159,6 +159,7 @@ void App::frame(double seconds, int width, int height) {
 void App::buildUi(UiContext& c, int width, int height, double seconds) {
     handleShortcuts(c, input_.presses);
     openDrops(c);
+    watchSceneFile(c);
     viewport_.update(c, glm::vec2(width, height), float(seconds));
     viewport_.drawSelection(c);
     drawGizmo(c, viewport_.hotHandle(c), glm::vec2(width, height));

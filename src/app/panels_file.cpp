@@ -19,6 +19,7 @@ static const char* kOpenPopup = "Open scene";
 static const char* kSaveAsPopup = "Save scene as";
 static const char* kUnsavedPopup = "Unsaved changes";
 static const char* kErrorsPopup = "Cannot open";
+static const char* kDiskPopup = "Changed on disk";
 
 // BeginPopupModal, its state told to the event log.
 static bool beginModal(const char* name) {
@@ -30,6 +31,7 @@ static bool beginModal(const char* name) {
 
 void openFile(UiContext& c, const std::string& path) {
     c.ui.openErrors.clear();
+    c.ui.errorsHeader = "The file did not load; the open scene is unchanged.";
     c.editor.request(Leave::Open, path, &c.ui.openErrors);
 }
 
@@ -38,8 +40,18 @@ void saveFile(UiContext& c) {
         c.ui.wantSaveAs = true;
         return;
     }
-    // A read-only file, say: Save As opens with the reason.
-    if (!c.editor.save(c.ui.messages.at(Place::SaveAs))) c.ui.wantSaveAs = true;
+    // A read-only file, say: Save As opens with the reason. A change on disk asks instead.
+    if (!c.editor.save(c.ui.messages.at(Place::SaveAs)) && !c.editor.diskChanged())
+        c.ui.wantSaveAs = true;
+}
+
+void watchSceneFile(UiContext& c) {
+    std::vector<std::string> errors;
+    c.editor.watchFile(&errors);
+    if (errors.empty()) return;
+    c.ui.openErrors = std::move(errors);
+    c.ui.errorsHeader = c.editor.document().name() +
+                        " changed on disk and does not load; the open scene is unchanged.";
 }
 
 // Esc over a dialog: the dialog's Cancel (handleShortcuts raised it).
@@ -173,8 +185,7 @@ static void finishSaveAs(UiContext& c, bool saved) {
 static bool confirmedTarget(UiContext& c, bool go) {
     std::error_code ec;
     const std::string& path = c.ui.pathField;
-    const std::string& own = c.editor.document().path();
-    bool same = path == own || (!own.empty() && std::filesystem::equivalent(path, own, ec));
+    bool same = sameFile(path, c.editor.document().path());
     // Only a file is replaced; a folder or device is refused by the save, which says so.
     bool other = !same && std::filesystem::is_regular_file(path, ec);
     if (other && go && c.ui.replacePath != path) {
@@ -252,6 +263,8 @@ static void unsavedPrompt(UiContext& c) {
     if (save && run) c.editor.keepPoses();
     if (save && !d.path().empty() && c.editor.save(c.ui.messages.at(Place::SaveAs)))
         c.editor.confirmLeave();
+    else if (save && c.editor.diskChanged())  // that question first; then leave again
+        c.editor.cancelLeave();
     else if (save) {  // no file yet, or it could not be written: ask where
         c.ui.saveThenLeave = true;
         c.ui.wantSaveAs = true;
@@ -260,7 +273,7 @@ static void unsavedPrompt(UiContext& c) {
 
 static void errorsPopup(UiContext& c) {
     if (!beginModal(kErrorsPopup)) return;
-    ImGui::TextUnformatted("The file did not load; the open scene is unchanged.");
+    ImGui::TextUnformatted(c.ui.errorsHeader.c_str());
     // The errors scroll in a list of at most half the window, so OK stays on screen however
     // many there are (up to 100).
     const ImVec2 screen = ImGui::GetIO().DisplaySize;
@@ -280,6 +293,28 @@ static void errorsPopup(UiContext& c) {
     ImGui::EndPopup();
 }
 
+// The file changed on disk while this scene has edits it lacks: one of them goes.
+static void diskPrompt(UiContext& c) {
+    if (!beginModal(kDiskPopup)) return;
+    const Document& d = c.editor.document();
+    ImGui::PushTextWrapPos(std::min(480.0f, ImGui::GetIO().DisplaySize.x * 0.9f));
+    ImGui::Text("%s changed on disk since it was opened or saved here.", d.name().c_str());
+    ImGui::TextUnformatted(d.dirty() || d.runEdits()
+                               ? "Load theirs to see it (Undo brings your edits back), or keep "
+                                 "yours (Save then writes them over it)."
+                               : "Load theirs to see it, or keep yours (Save then writes it).");
+    ImGui::PopTextWrapPos();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", d.path().c_str());
+    const bool load = button(kDiskPopup, "Load theirs");
+    ImGui::SameLine();
+    const bool keep = button(kDiskPopup, "Keep mine") || escaped(c);
+    if (load || keep) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+    if (keep && !c.editor.keepMine(c.ui.messages.at(Place::SaveAs))) c.ui.wantSaveAs = true;
+    if (load && !c.editor.loadTheirs(&c.ui.openErrors))
+        c.ui.errorsHeader = d.name() + " does not load; the open scene is unchanged.";
+}
+
 // Popups open here, at the top of ImGui's id stack, whichever menu or key asked for them.
 void drawDialogs(UiContext& c) {
     UiState& ui = c.ui;
@@ -292,10 +327,12 @@ void drawDialogs(UiContext& c) {
     if (c.editor.pendingLeave() != Leave::None && !ui.saveThenLeave)
         ImGui::OpenPopup(kUnsavedPopup);
     if (!ui.openErrors.empty()) ImGui::OpenPopup(kErrorsPopup);
+    if (c.editor.diskChanged()) ImGui::OpenPopup(kDiskPopup);
     ui.wantOpen = ui.wantSaveAs = false;
     openDialog(c);
     saveAsDialog(c);
     unsavedPrompt(c);
+    diskPrompt(c);
     errorsPopup(c);
     ui.escape = false;  // no dialog took it
 }

@@ -50,7 +50,8 @@ struct UiState {
     std::string pathField;                // the Open and Save As dialogs' path
     FolderView browsed;                   // the folder those dialogs show
     std::vector<std::string> places;      // the folders beside it: recent ones, the examples
-    std::vector<std::string> openErrors;  // FILE:LINE lines of the last failed open
+    std::vector<std::string> openErrors;  // FILE:LINE lines of the last failed open or reload
+    std::string errorsHeader;             // what failed to load, above them
     bool saveThenLeave = false;           // Save As was asked for by the unsaved-changes prompt
     std::string replacePath;              // Save As warned once that this file exists
     bool refocusPath = false;             // Save As failed on Enter: the field keeps the keys
@@ -99,6 +100,8 @@ void handleShortcuts(UiContext& c, const std::vector<KeyPress>& keys);
 void drawDialogs(UiContext& c);
 void openFile(UiContext& c, const std::string& path);  // through the unsaved-changes prompt
 void saveFile(UiContext& c);                           // Save As when the scene has no file
+// Each frame: the open scene's file, changed on disk, reloads or asks (Editor::watchFile).
+void watchSceneFile(UiContext& c);
 
 // [panels_edit.cpp] objects, materials, lights, and the right-click popup.
 void drawEditWindows(UiContext& c);

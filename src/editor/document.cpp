@@ -27,6 +27,7 @@ void Document::replace(const Scene& scene, const std::string& path) {
     path_ = path;
     history_.clear();
     saved_ = scene;
+    fileCamera_ = scene.camera;
     time_ = 0;
     start_.reset();
     run_.reset();
@@ -38,8 +39,27 @@ void Document::replace(const Scene& scene, const std::string& path) {
 void Document::markSaved(const std::string& path) {
     path_ = path;
     saved_ = start();
+    fileCamera_ = saved_.camera;
     ++version_;
     history_.seal();  // a later drag must not fold into the step that was saved
+}
+
+void Document::reload(const Scene& disk) {
+    const uint64_t was = history_.state();
+    const bool ran = start_ || run_;  // going back to t = 0 is a step even if nothing else is
+    Scene before = scene_;
+    scene_ = disk;
+    if (sameCamera(disk.camera, fileCamera_)) scene_.camera = before.camera;
+    saved_ = disk;
+    fileCamera_ = disk.camera;
+    start_.reset();
+    run_.reset();
+    time_ = 0;
+    ++version_;
+    if (ran) history_.pushEvenIfSame("Reload from disk", before, scene_);
+    else history_.push("Reload from disk", before, scene_);
+    history_.seal();
+    pushed(was);
 }
 
 // Compared once per version: while the simulator runs that is once a frame, about 0.2 ms for

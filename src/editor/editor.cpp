@@ -4,6 +4,7 @@
 #include "marchbox/editor/camera_control.h"
 #include "marchbox/editor/camera_keys.h"
 #include "marchbox/editor/events.h"
+#include "marchbox/editor/files.h"
 #include "marchbox/editor/picking.h"
 #include "marchbox/scene/camera_path.h"
 #include "marchbox/scene/scene_io.h"
@@ -76,6 +77,8 @@ void Editor::replace(const Scene& scene, const std::string& path) {
     doc_.replace(scene, path);
     sim_.sceneChanged(doc_);
     sel_.clear();
+    disk_.track(path);
+    diskChanged_ = saveOnKeep_ = false;
 }
 
 void Editor::start(const Scene& scene, const std::string& file) {
@@ -101,14 +104,67 @@ bool Editor::saveAs(const std::string& path, std::string* error) {
     // The start is what gets saved, whatever time the view shows; a running simulation is
     // recorded first so that the save names the state it was made in.
     sim_.commitRun(doc_);
+    if (sameFile(path, disk_.path()) && disk_.differs()) {
+        *error = doc_.name() + " changed on disk since it was opened or saved: keep yours, or "
+                 "load theirs";
+        diskChanged_ = saveOnKeep_ = true;
+        emitEvent("ask disk " + path);
+        return false;
+    }
     if (!saveScene(path, doc_.start(), error)) {
         emitEvent("save-failed " + *error);
         return false;
     }
     doc_.markSaved(path);
     lastFile_ = path;
+    disk_.track(path);
     emitEvent("save " + path);
     return true;
+}
+
+//-----------------------------------------------------------------------------
+// [SECTION] The file on disk
+//-----------------------------------------------------------------------------
+void Editor::watchFile(std::vector<std::string>* errors) {
+    if (diskChanged_ || !disk_.changedElsewhere()) return;
+    Scene theirs;
+    if (!loadScene(disk_.path(), &theirs, errors)) {
+        emitEvent("disk-unloadable " + disk_.path());
+        return;
+    }
+    if (doc_.dirty() || doc_.runEdits()) {
+        diskChanged_ = true;
+        emitEvent("ask disk " + disk_.path());
+        return;
+    }
+    reload(theirs);
+}
+
+bool Editor::keepMine(std::string* error) {
+    disk_.accept();
+    diskChanged_ = false;
+    const bool save = saveOnKeep_;
+    saveOnKeep_ = false;
+    emitEvent("keep-mine " + disk_.path());
+    return !save || this->save(error);
+}
+
+bool Editor::loadTheirs(std::vector<std::string>* errors) {
+    Scene theirs;
+    disk_.differs();  // what is read next is what is accepted
+    if (!loadScene(disk_.path(), &theirs, errors)) return false;
+    diskChanged_ = saveOnKeep_ = false;
+    reload(theirs);
+    return true;
+}
+
+void Editor::reload(const Scene& disk) {
+    sim_.pause(doc_);
+    doc_.reload(disk);
+    disk_.accept();
+    sim_.sceneChanged(doc_);
+    selectionClamp(sel_, doc_.scene());
+    emitEvent("reload " + disk_.path());
 }
 
 //-----------------------------------------------------------------------------

@@ -18,6 +18,11 @@ bool hasSceneExtension(const std::string& path) {
     return ext == ".txt";
 }
 
+bool sameFile(const std::string& a, const std::string& b) {
+    std::error_code ec;
+    return a == b || (!a.empty() && !b.empty() && fs::equivalent(a, b, ec));
+}
+
 // fs::absolute and current_path may throw (no working folder); with an error code they do not.
 static fs::path wholePath(const fs::path& p) {
     std::error_code ec;

@@ -1485,6 +1485,51 @@ def case_timeline(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+def edit_elsewhere(path, old, new):
+    """What `sed -i s/old/new/` does to the open scene's file, a second later by its clock."""
+    text = open(path).read()
+    check(old in text, '"%s" is not in %s' % (old, path))
+    stamp = os.stat(path).st_mtime
+    with open(path, 'w') as f:
+        f.write(text.replace(old, new))
+    os.utime(path, (stamp + 1, stamp + 1))
+
+
+def red_sphere_colour(app, scene):
+    img = app.screenshot()
+    x, y = project(scene, scene_values(scene, 'object', 'pos')[0])
+    return img.pixel(x, y)
+
+
+def case_disk(app, scene):
+    """The open scene's file edited elsewhere: with nothing unsaved the view follows, and Ctrl+Z
+    takes the reload back; with edits, it asks, and Keep mine then saves over theirs."""
+    app.settle()
+    before = red_sphere_colour(app, scene)
+    check(is_red(before), 'the sphere is not red at first: %s' % (before,))
+    edit_elsewhere(scene, 'name:red r:0.9 g:0.15 b:0.1', 'name:red r:0.1 g:0.8 b:0.1')
+    app.wait('reload ')
+    app.settle()
+    after = red_sphere_colour(app, scene)
+    check(after[1] > after[0] + 60, 'the view did not follow the file: the sphere is %s' % (after,))
+    app.key('ctrl+z')
+    check(app.wait('undo ') == 'undo Reload from disk', 'Ctrl+Z did not undo the reload')
+
+    app.key('j')  # an edit of ours, then one of theirs
+    app.wait('edit Random velocities')
+    edit_elsewhere(scene, 'intensity:1', 'intensity:0.5')
+    app.wait('ask disk ')
+    app.wait('popup Changed on disk open')
+    app.screenshot()
+    app.click_widget('Changed on disk/Keep mine', fresh=False)
+    app.wait('keep-mine ')
+    app.save()
+    check(scene_values(scene, 'object', 'vel')[0] != [0, 0, 0], 'Keep mine lost the velocities')
+    check(scene_values(scene, 'object', 'pos')[0] == [0, 1.2, 0], 'the start was not saved')
+    app.key('ctrl+q')
+    check(app.finish() == 0, 'exit status not 0')
+
+
 def is_key_mark(rgb):  # a camera key's diamond on the timeline, (255, 210, 60)
     r, g, b = rgb[:3]
     return r > 230 and 180 < g < 235 and b < 100

@@ -1,4 +1,6 @@
 // test_editor.cpp — the editor's rules: open failures, unsaved work, edits while simulating.
+#include "editor_session.h"
+
 #include "marchbox/editor/camera_keys.h"
 #include "marchbox/editor/editor.h"
 #include "marchbox/scene/camera_path.h"
@@ -12,34 +14,8 @@
 #include <gtest/gtest.h>
 
 using namespace mb;
+using namespace mb::test;
 namespace fs = std::filesystem;
-
-// A folder per test: CTest runs the tests as processes side by side, and a file name two tests
-// share (playedFor's) was read by one while the other rewrote it.
-static std::string tempPath(const std::string& name) {
-    const auto* test = testing::UnitTest::GetInstance()->current_test_info();
-    fs::path dir = fs::path(MARCHBOX_BINARY_DIR) / "test-output" / "editor" / test->name();
-    fs::create_directories(dir);
-    return (dir / name).string();
-}
-
-static std::string writeFile(const std::string& name, const std::string& text) {
-    std::string path = tempPath(name);
-    std::ofstream(path) << text;
-    return path;
-}
-
-static const char* kScene =
-    "material r:1 g:0 b:0\n"
-    "object type:sphere pos:0,3,0 radius:0.5\n"
-    "object type:box pos:3,0.5,0 static:1\n";
-
-static Editor openEditor(const std::string& path) {
-    Editor e;
-    std::vector<std::string> errors;
-    EXPECT_TRUE(e.request(Leave::Open, path, &errors));
-    return e;
-}
 
 TEST(Editor, FailedOpenLeavesTheSceneAndSaysWhere) {
     Editor e = openEditor(writeFile("good.txt", kScene));
@@ -319,135 +295,9 @@ TEST(Editor, MovingAnObjectUpAndDownIsUndoable) {
     EXPECT_EQ(why, "object 1 is already last");
 }
 
-static std::string readText(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-TEST(Editor, SavingKeepsTheCommentsAndADeletedObjectTakesItsOwn) {
-    std::string path = writeFile("comments.txt",
-                                 "# my scene\n"
-                                 "material r:1 g:0 b:0\n"
-                                 "\n"
-                                 "# the ball\n"
-                                 "object type:sphere pos:0,3,0 radius:0.5\n"
-                                 "# the crate\n"
-                                 "object type:box pos:3,0.5,0 static:1\n"
-                                 "# end of file\n");
-    Editor e = openEditor(path);
-    std::string why, error;
-    ASSERT_TRUE(e.remove(ItemKind::Object, 0, &why)) << why;
-    ASSERT_TRUE(e.duplicate(ItemKind::Object, 0, &why)) << why;
-    ASSERT_TRUE(e.save(&error)) << error;
-    const std::string saved = readText(path);
-    EXPECT_EQ(saved.find("# the ball"), std::string::npos) << saved;
-    EXPECT_EQ(saved.rfind("# my scene\n"), saved.find("# my scene\n")) << saved;  // once
-    EXPECT_NE(saved.find("# my scene\nmaterial "), std::string::npos) << saved;
-    EXPECT_NE(saved.find("\n# the crate\nobject type:box"), std::string::npos) << saved;
-    EXPECT_EQ(saved.rfind("# the crate"), saved.find("# the crate")) << "the copy has no comment";
-    EXPECT_EQ(saved.substr(saved.size() - 14), "# end of file\n") << saved;
-    ASSERT_TRUE(e.save(&error)) << error;
-    EXPECT_EQ(readText(path), saved);  // saving twice gives the same bytes
-}
-
-// Issue 13, item 11: Add always put the new object at (0,2,0), inside a new scene's sphere.
-static float gapBetween(const Object& a, const Object& b) {
-    return glm::length(a.pos - b.pos) - a.radius - b.radius;
-}
-
-TEST(Editor, AddPutsTheObjectOnTheGroundBelowTheTarget) {
-    Editor e = openEditor(writeFile("place.txt", kScene));
-    e.view() = Camera{{1, 4, -4}, {1, 0, 0}, 50};  // looking down at (1,0,0)
-    std::string why;
-    ASSERT_TRUE(e.add(ItemKind::Object, &why)) << why;
-    const Object o = e.scene().objects.back();
-    EXPECT_NEAR(o.pos.x, 1.0f, 1e-5f);
-    EXPECT_EQ(o.pos.y, 0.5f);  // resting on the ground
-    EXPECT_NEAR(o.pos.z, 0.0f, 1e-5f);
-    EXPECT_EQ(e.selection().object(), 2);
-
-    // Again: the spot is taken, so the next one goes beside it, as near as it is clear.
-    ASSERT_TRUE(e.add(ItemKind::Object, &why)) << why;
-    const Object& beside = e.scene().objects.back();
-    EXPECT_EQ(beside.pos.y, 0.5f);
-    EXPECT_GE(gapBetween(beside, o), 0.0f);
-    EXPECT_LT(glm::length(beside.pos - o.pos), 1.6f);
-}
-
-// The end-to-end tests' scene: the view's middle met the ground 10.8 m off, 4.3 m past the
-// target behind the box; each shape now goes near the target, in view, clear of the others.
-TEST(Editor, AddPutsEachShapeInViewNearTheTarget) {
-    Editor e = openEditor(writeFile("near.txt",
-                                    "scene version:1\ncamera pos:2,2.5,-6.5 target:2,1,0 fov:45\n"
-                                    "material r:1 g:0 b:0\n"
-                                    "object type:sphere pos:0,1.2,0 radius:0.7\n"
-                                    "object type:sphere pos:-2,1.4,1 radius:0.45\n"
-                                    "object type:box pos:1.4,0.5,2.5 size:0.5,0.5,0.5\n"));
-    const Camera view = e.scene().camera;
-    const glm::vec3 forward = glm::normalize(view.target - view.pos);
-    std::string why;
-    for (int t = 0; t < kShapeTypeCount; ++t) {
-        ASSERT_TRUE(e.add(ItemKind::Object, &why, ShapeType(t))) << why;
-        const Object o = e.scene().objects.back();
-        EXPECT_EQ(o.type, ShapeType(t));
-        EXPECT_NEAR(o.pos.y, depthBelowCentre(o), 1e-6f) << "resting on the ground";
-        EXPECT_LT(glm::length(glm::vec2(o.pos.x - 2.0f, o.pos.z)), 2.5f) << t;
-        const glm::vec3 to = glm::normalize(o.pos - view.pos);
-        EXPECT_GT(glm::dot(to, forward), std::cos(glm::radians(0.5f * view.fov))) << "out of view";
-        const SceneSdf sdf = makeSceneSdf(e.scene());
-        for (size_t i = 0; i + 1 < sdf.objects.size(); ++i)
-            EXPECT_GT(sdObject(sdf.objects[i], o.pos), boundingRadius(o)) << t << " meets " << i;
-    }
-    ASSERT_TRUE(e.add(ItemKind::Light, &why)) << why;
-    EXPECT_EQ(e.selection().kind, ItemKind::Light);
-}
-
-TEST(Editor, AddInANewSceneMissesItsSphere) {
-    Editor e;
-    std::vector<std::string> errors;
-    e.request(Leave::NewScene, "", &errors);
-    e.view() = Camera{{0, 3, -4}, {0, 0.5f, 0}, 50};  // the view centre runs into the sphere's foot
-    e.edit("Sphere down", [](Scene& s) { s.objects[0].pos = {0, 0.5f, 0}; });
-    std::string why;
-    for (int i = 0; i < 5; ++i) ASSERT_TRUE(e.add(ItemKind::Object, &why)) << why;
-    const std::vector<Object>& objects = e.scene().objects;
-    for (size_t a = 0; a < objects.size(); ++a)
-        for (size_t b = a + 1; b < objects.size(); ++b)
-            EXPECT_GE(gapBetween(objects[a], objects[b]), 0.0f) << a << " and " << b;
-}
-
-TEST(Editor, AddLookingAtTheSkyGoesBelowTheTarget) {
-    Editor e = openEditor(writeFile("sky.txt", kScene));
-    e.edit("Floor", [](Scene& s) { s.world.floor = -1; });
-    e.view() = Camera{{0, 1, -6}, {-2, 3, 6}, 50};
-    std::string why;
-    ASSERT_TRUE(e.add(ItemKind::Object, &why)) << why;
-    EXPECT_EQ(e.scene().objects.back().pos, glm::vec3(-2, -0.5f, 6));
-}
-
 //-----------------------------------------------------------------------------
 // The start (t = 0) and the simulated time
 //-----------------------------------------------------------------------------
-static void run(Editor& e, int frames) {
-    e.togglePlay();
-    for (int i = 0; i < frames; ++i) e.frame(1.0 / 60);
-    e.togglePlay();
-}
-
-// The scene a fresh editor on kScene shows after `frames` frames of play, to compare with.
-static Scene playedFor(int frames) {
-    Editor e = openEditor(writeFile("played.txt", kScene));
-    run(e, frames);
-    return e.scene();
-}
-
-static Scene saved(const std::string& path) {
-    Scene s;
-    std::vector<std::string> errors;
-    EXPECT_TRUE(loadScene(path, &s, &errors));
-    return s;
-}
-
 // Play then Save wrote the resting poses over the start without a word.
 TEST(Editor, SaveWritesTheStartNotTheSimulatedPoses) {
     std::string path = writeFile("start.txt", kScene);

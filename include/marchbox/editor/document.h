@@ -37,6 +37,10 @@ public:
     // New or Open: a fresh history, clean.
     void replace(const Scene& scene, const std::string& path);
     void markSaved(const std::string& path);
+    // The file changed on disk and `disk` is what it holds now: the start, as one undo step
+    // (undo takes the edits back), with nothing unsaved. The run goes; the view stays where it
+    // looks unless the file moved the camera.
+    void reload(const Scene& disk);
 
     // The one door for edits: runs `change` on the scene and records the difference as one
     // undo step (see History::push for mergeKey). At t > 0 the change is made at that time and
@@ -105,6 +109,7 @@ private:
     std::string path_;
     History history_;
     mutable Scene saved_;  // as the file holds it; its camera follows scene_'s
+    Camera fileCamera_;    // the camera as the file holds it
     mutable uint64_t checkedVersion_ = ~uint64_t(0);
     mutable bool dirty_ = false;  // as of checkedVersion_
     uint64_t version_ = 0;

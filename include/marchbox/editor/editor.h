@@ -9,6 +9,7 @@
 // The window's panels and input call these; nothing here knows about GL, GLFW or ImGui.
 #pragma once
 
+#include "marchbox/editor/disk_file.h"
 #include "marchbox/editor/document.h"
 #include "marchbox/editor/gizmo.h"
 #include "marchbox/editor/scene_edit.h"
@@ -49,6 +50,16 @@ public:
     bool saveAs(const std::string& path, std::string* error);  // "" is refused: asks for a name
     // The file last opened or saved, kept through New: where Save As starts a new scene.
     const std::string& lastFile() const { return lastFile_; }
+
+    // The file on disk. watchFile(), each frame: a change made elsewhere reloads the scene, as
+    // one undo step, when nothing here is unsaved; otherwise diskChanged() waits for keepMine()
+    // or loadTheirs(). A change whose file does not load leaves the scene alone, *errors saying
+    // why. Save never writes over a change it was not told of: it refuses, and asks the same.
+    void watchFile(std::vector<std::string>* errors);
+    bool diskChanged() const { return diskChanged_; }
+    // Ours stays, and the next Save writes over theirs; straight away if a Save was refused.
+    bool keepMine(std::string* error);
+    bool loadTheirs(std::vector<std::string>* errors);  // false, the scene kept, if it fails
 
     //-------------------------------------------------------------------------
     // [SECTION] Edits
@@ -147,6 +158,7 @@ public:
 private:
     void leaveNow(Leave what, const std::string& path);
     void replace(const Scene& scene, const std::string& path);  // New or Open
+    void reload(const Scene& disk);                              // the file changed on disk
     void edited();  // after any change of the scene outside the simulator
     void told(const Selection& before);  // the event log hears of a changed selection
     // A change of the object tree as one undo step; the selection follows its items.
@@ -160,6 +172,9 @@ private:
     std::string pendingPath_;
     Scene opening_;  // an Open's scene, read before anything was asked
     std::string lastFile_;
+    DiskFile disk_;
+    bool diskChanged_ = false;  // a change on disk waits for keepMine() or loadTheirs()
+    bool saveOnKeep_ = false;   // a Save was refused for it
     bool quit_ = false;
     uint32_t kicks_ = 0;      // seeds J: different each press, the same in every run
     uint64_t loggedKey_ = 0;  // the merge key of the edit last told to the event log

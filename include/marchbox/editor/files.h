@@ -12,6 +12,8 @@
 namespace mb {
 
 bool hasSceneExtension(const std::string& path);  // ".txt", any case
+// The same file by two names ("scene.txt" and "/home/me/scene.txt"); false if either is missing.
+bool sameFile(const std::string& a, const std::string& b);
 
 // Where Save As starts: the scene's own file `current`; for a scene without one, "untitled.txt"
 // beside `lastUsed` (the last file opened or saved; the working folder when there is none),
