@@ -10,6 +10,8 @@
 #include <array>
 #include <cfloat>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <map>
 
 namespace mb {
@@ -85,9 +87,19 @@ void take(const char* label, FieldEdit& e) {
     if (e.error) e.error->clear();
 }
 
+// A value that would print as "-0.0" shows as 0.0: the sign of a rounding error says nothing.
+// Only what is shown: the stored value changes when the field is edited, as ever.
+void withoutMinusZero(const char* format, float* v, int n) {
+    const char* dot = std::strchr(format, '.');
+    const float half = 0.5f * std::pow(10.0f, -float(dot ? std::atoi(dot + 1) : 0));
+    for (int i = 0; i < n; ++i)
+        if (std::abs(v[i]) < half) v[i] = 0.0f;
+}
+
 bool drawFloats(const char* label, Field f, float* v, int n) {
-    resumeTyping(ImGui::GetID(label), v, n);
     const FieldSpec& s = fieldSpec(f);
+    withoutMinusZero(s.format, v, n);
+    resumeTyping(ImGui::GetID(label), v, n);
     if (s.slider)
         return ImGui::SliderScalarN(label, ImGuiDataType_Float, v, n, &s.dragMin, &s.dragMax,
                                     s.format);

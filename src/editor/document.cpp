@@ -88,19 +88,41 @@ static bool sameObjects(const Scene& a, const Scene& b) {
     return probe == a;
 }
 
+// What the simulator reads of `s`: its objects and groups, wearing the looks of `looks`'s
+// (copyLooks), and its world where asked for.
+static Scene motionOf(const Scene& s, const Scene& looks, bool world) {
+    Scene m;
+    m.objects = s.objects, m.groups = s.groups;
+    copyLooks(looks.objects, m.objects);
+    copyLooks(looks.groups, m.groups);
+    if (world) m.world = s.world;
+    return m;
+}
+
+// The same bodies, whatever their names and materials.
+static bool sameBodies(const Scene& a, const Scene& b) {
+    return motionOf(a, a, false) == motionOf(b, a, false);
+}
+
 // What the simulator reads: the rest (camera, looks, keys) leaves the run as it was.
 static bool sameMotion(const Scene& a, const Scene& b) {
-    Scene pa, pb;
-    pa.objects = a.objects, pa.groups = a.groups, pa.world = a.world;
-    pb.objects = b.objects, pb.groups = b.groups, pb.world = b.world;
-    return pa == pb;
+    return motionOf(a, a, true) == motionOf(b, a, true);
+}
+
+// The start holds the scene's objects and groups, one for one: no edit at t > 0 added or
+// removed any, so a change of their looks made now can be made to it too.
+static bool oneForOne(const Scene& start, const Scene& now) {
+    return start.objects.size() == now.objects.size() && start.groups.size() == now.groups.size();
 }
 
 void Document::apply(const std::string& label, const SceneChange& change, uint64_t mergeKey) {
     const uint64_t was = history_.state();
     Scene before = scene_;
     change(scene_);
-    if (start_ && sameObjects(scene_, before)) {
+    // A change of the world, the camera, materials or lights, or of what objects are called
+    // and look like, is the start's too: it keeps the run, which it cannot have changed.
+    if (start_ && (sameObjects(scene_, before) ||
+                   (sameBodies(scene_, before) && oneForOne(*start_, scene_)))) {
         Scene s = *start_;
         change(s);
         start_ = std::make_shared<const Scene>(std::move(s));

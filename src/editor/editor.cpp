@@ -385,33 +385,31 @@ bool Editor::ungroupSelected(std::string* why) {
     return ok;
 }
 
+// Each selected item, the active one too, takes only the fields that changed: the same change
+// is made to the start where it leaves the motion alone (a name, a material at t > 0), and a
+// whole record would carry the pose shown into it.
 void Editor::editObjects(const Object& before, const Object& after, uint64_t mergeKey) {
-    const int active = sel_.object();
-    if (active < 0) return;
-    std::vector<int> others;
+    if (sel_.object() < 0) return;
+    std::vector<int> targets;
     for (Item it : treeItems(sel_))
-        if (it.kind == ItemKind::Object && it.index != active) others.push_back(it.index);
-    // Copies: `before` may be the scene's own record, which the first line below changes.
+        if (it.kind == ItemKind::Object) targets.push_back(it.index);
     edit(
         "Edit object",
-        [&, before, after](Scene& s) {
-            s.objects[size_t(active)] = after;
-            applyObjectEdit(s, others, before, after);
-        },
+        [targets, before, after](Scene& s) { applyObjectEdit(s, targets, before, after); },
         mergeKey);
 }
 
 void Editor::editGroups(const Group& before, const Group& after, uint64_t mergeKey) {
     const int active = sel_.kind == ItemKind::Group ? sel_.index : -1;
     if (active < 0 || active >= int(scene().groups.size())) return;
-    std::vector<int> others;
+    std::vector<int> targets;
     for (Item it : treeItems(sel_))
-        if (it.kind == ItemKind::Group && it.index != active) others.push_back(it.index);
+        if (it.kind == ItemKind::Group) targets.push_back(it.index);
     edit(
         "Edit group",
-        [&, before, after](Scene& s) {
-            s.groups[size_t(active)] = after;
-            applyGroupEdit(s, others, before, after);
+        [active, targets, before, after](Scene& s) {
+            s.groups[size_t(active)].name = after.name;  // unique: the active group's alone
+            applyGroupEdit(s, targets, before, after);
         },
         mergeKey);
 }

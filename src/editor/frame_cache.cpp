@@ -1,6 +1,8 @@
 // frame_cache.cpp — recording runs frame by frame and finding a frame by time.
 #include "marchbox/editor/frame_cache.h"
 
+#include "marchbox/scene/sdf.h"
+
 #include <algorithm>
 
 namespace mb {
@@ -73,11 +75,38 @@ static void putBody(const BodyState& b, std::vector<R>& bodies) {
     r.vel = b.vel;
     r.spin = b.spin;
     r.orient = b.orient;
+    if (b.orient) r.rot = anglesShowing(*b.orient, r.rot);  // the fields show the frame's turn
+}
+
+void copyLooks(const std::vector<Object>& from, std::vector<Object>& to) {
+    if (from.size() != to.size()) return;
+    for (size_t i = 0; i < to.size(); ++i) {
+        to[i].name = from[i].name;
+        to[i].material = from[i].material;
+        to[i].comment = from[i].comment;
+    }
+}
+
+void copyLooks(const std::vector<Group>& from, std::vector<Group>& to) {
+    if (from.size() != to.size()) return;
+    for (size_t i = 0; i < to.size(); ++i) {
+        to[i].name = from[i].name;
+        to[i].comment = from[i].comment;
+    }
+}
+
+// The piece's list where an edit made one, wearing the looks of the list it replaces.
+template <class T>
+static void takeEdited(const std::shared_ptr<const std::vector<T>>& edited, std::vector<T>& list) {
+    if (!edited) return;
+    std::vector<T> next = *edited;
+    copyLooks(list, next);
+    list = std::move(next);
 }
 
 void applyFrame(const BakedFrame& frame, Scene& scene) {
-    if (frame.piece && frame.piece->objects) scene.objects = *frame.piece->objects;
-    if (frame.piece && frame.piece->groups) scene.groups = *frame.piece->groups;
+    if (frame.piece) takeEdited(frame.piece->objects, scene.objects);
+    if (frame.piece) takeEdited(frame.piece->groups, scene.groups);
     for (const BodyState& b : frame.bodies) {
         if (b.group) putBody(b, scene.groups);
         else putBody(b, scene.objects);

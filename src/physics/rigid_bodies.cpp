@@ -1178,7 +1178,7 @@ void RigidBodies::writeBack(Scene& scene) const {
         record.vel = glm::vec3(b.vel);
         record.spin = glm::vec3(b.spin);
         record.orient = glm::quat(b.shapeOrient());
-        record.rot = eulerFromRotation(glm::mat3_cast(*record.orient));  // shown in Edit
+        record.rot = anglesShowing(*record.orient, record.rot);  // shown in Edit
     };
     for (const RigidBody& b : bodies_) {
         if (b.group >= 0) {

@@ -515,12 +515,13 @@ void Parser::readKey(const char* key, std::string_view text, T& v, const Rule& r
     if (!obeys(v, rule)) error(quote(key) + " must be " + describe(rule));
 }
 
-// A body's turn is its exact orient (a save writes it), and rot then only shows it in degrees:
-// so a file read, saved and read again gives the same scene whichever of the two it held.
+// A body's turn is its exact orient (a save writes it), and rot then only shows it in degrees,
+// as the file wrote them where it did (anglesShowing): so a file read, saved and read again
+// gives the same scene whichever of the two it held.
 template <class R>
 void exactTurn(R& o) {
     if (o.dynamic() && !o.orient) o.orient = glm::quat_cast(rotationFromEuler(o.rot));
-    if (o.orient) o.rot = eulerFromRotation(glm::mat3_cast(*o.orient));
+    if (o.orient) o.rot = anglesShowing(*o.orient, o.rot);
 }
 
 // Checks that need the whole file: material indices, names for unnamed materials, keyframes'

@@ -92,6 +92,13 @@ glm::vec3 eulerFromRotation(const glm::mat3& r) {
     return glm::degrees(vec3(std::atan2(r[1][2], r[2][2]), y, std::atan2(r[0][1], r[0][0])));
 }
 
+glm::vec3 anglesShowing(const glm::quat& orient, const glm::vec3& rot) {
+    const glm::quat held = glm::quat_cast(rotationFromEuler(rot));
+    // |dot| is cos(half the angle between them): 1 - 1e-6 is 0.16 degrees, above float noise.
+    if (std::abs(glm::dot(held, orient)) > 1.0f - 1e-6f) return rot;
+    return eulerFromRotation(glm::mat3_cast(orient)) + vec3(0.0f);  // -0 + 0 is +0
+}
+
 float boundingRadius(const Object& o) {
     switch (o.type) {
         case ShapeType::Cone:

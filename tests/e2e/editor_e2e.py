@@ -1419,6 +1419,15 @@ def case_guide(app, scene):
 TIMELINE_LEFT = 180  # px: where the timeline's strip starts (kStripLeft in timeline_strip.cpp)
 
 
+def play_for(app, seconds):
+    """Play and Pause on the timeline, `seconds` apart."""
+    app.click_widget('Timeline/PlayPause', fresh=False)
+    app.wait('play')
+    time.sleep(seconds)
+    app.click_widget('Timeline/PlayPause', fresh=False)
+    app.wait('pause')
+
+
 def scrub_to(app, fraction):
     """Clicks the timeline's strip `fraction` of the way along it; returns the time it went to,
     exactly, from the editor's "seek t = 1.23 s (1.23333333)"."""
@@ -1452,18 +1461,10 @@ def case_timeline(app, scene):
     app.save()
     start = os.path.join(app.workdir, 'start.txt')
     shutil.copy(scene, start)
-    app.click_widget('Timeline/PlayPause', fresh=False)
-    app.wait('play')
-    time.sleep(3)
-    app.click_widget('Timeline/PlayPause', fresh=False)
-    app.wait('pause')
+    play_for(app, 3)
     first = scrub_to(app, 0.3)
     check(first > 0.1, 'the click went to t = %s' % first)
-    app.click_widget('Timeline/PlayPause', fresh=False)  # over the baked frames, then on past them
-    app.wait('play')
-    time.sleep(4)
-    app.click_widget('Timeline/PlayPause', fresh=False)
-    app.wait('pause')
+    play_for(app, 4)  # over the baked frames, then on past them
     later = scrub_to(app, 0.9)
     check(later > first + 0.5, 'the run did not go on: t = %s after %s' % (later, first))
     check_poses_at(app, scene, start, later)
@@ -1527,6 +1528,26 @@ def case_disk(app, scene):
     check(scene_values(scene, 'object', 'vel')[0] != [0, 0, 0], 'Keep mine lost the velocities')
     check(scene_values(scene, 'object', 'pos')[0] == [0, 1.2, 0], 'the start was not saved')
     app.key('ctrl+q')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def case_rename_later(app, scene):
+    """A sphere renamed at a later time of a run: the run stays to scrub on past that time, the
+    pose shown stays, and Save writes the name into the start."""
+    app.key('j')
+    app.wait('edit Random velocities')
+    play_for(app, 3)
+    at = scrub_to(app, 0.4)
+    select_first(app, scene)
+    app.type_into('Objects/name', 'ball')
+    app.wait('edit Edit object')
+    later = scrub_to(app, 0.8)
+    check(later > at + 0.5, 'the run was cut at %s: the click went to t = %s' % (at, later))
+    app.save()
+    names = [r.get('name') for r in records(scene, 'object')]
+    check(names[0] == 'ball', 'the name was not saved: %s' % names)
+    check(scene_values(scene, 'object', 'pos')[0] == [0, 1.2, 0], 'the start moved')
+    app.key('ctrl+q')  # nothing unsaved, no edit of the run: it leaves without asking
     check(app.finish() == 0, 'exit status not 0')
 
 

@@ -73,7 +73,13 @@ private:
 };
 
 // The bodies back where they were: the frame's piece's objects and groups where an edit made
-// them, then each dynamic body's state. `scene` holds the start's objects before.
+// them, then each dynamic body's state. `scene` holds the start's objects before, and keeps
+// their looks (copyLooks): a name or material edited at any time is the start's.
 void applyFrame(const BakedFrame& frame, Scene& scene);
+
+// What the simulator never reads: an object's name, material and comment, a group's name and
+// comment. `to` takes those of `from` where the two lists are as long.
+void copyLooks(const std::vector<Object>& from, std::vector<Object>& to);
+void copyLooks(const std::vector<Group>& from, std::vector<Group>& to);
 
 }  // namespace mb

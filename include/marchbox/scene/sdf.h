@@ -52,6 +52,10 @@ glm::vec2 opIntersect(float a, float b, float k);
 // R = Rz(z)·Ry(y)·Rx(x), angles in degrees.
 glm::mat3 rotationFromEuler(glm::vec3 degrees);
 glm::vec3 eulerFromRotation(const glm::mat3& r);  // its angles, for showing an exact turn
+// The angles that show a turn held exactly in `orient`: `rot` itself while it gives that turn
+// (as loaded or typed: 170 about y, not its twin -10 with x and z flipped), else orient's own,
+// never -0. Within 0.16 degrees counts as the same turn.
+glm::vec3 anglesShowing(const glm::quat& orient, const glm::vec3& rot);
 
 // The radius of a sphere about the object's centre that holds its shape.
 float boundingRadius(const Object& o);

@@ -1,0 +1,143 @@
+// test_edits_in_time.cpp — what the fields show at a time of the run, and edits made there that
+// cannot change the motion.
+#include "editor_session.h"
+
+#include "marchbox/scene/sdf.h"
+
+#include <cmath>
+#include <glm/gtc/quaternion.hpp>
+
+using namespace mb;
+using namespace mb::test;
+
+// A box tumbling as it falls: its turn changes every frame.
+static const char* kTumbler =
+    "scene version:3\n"
+    "material r:1 g:0 b:0\n"
+    "object type:box pos:0,4,0 size:0.5,0.2,0.3 rot:0,0,-30 spin:2,1,5\n";
+
+// The turn rot's angles give, against the exact one: 1 where they are the same turn.
+static float agreement(const Object& o) {
+    return std::abs(glm::dot(glm::quat_cast(rotationFromEuler(o.rot)), *o.orient));
+}
+
+// The domino scrubbed to 0.60 s showed pos, vel and spin of that time and rot of the start.
+TEST(EditsInTime, TheTurnShownIsTheFramesAtEveryTime) {
+    Editor e = openEditor(writeFile("tumbler.txt", kTumbler));
+    run(e, 60);
+    const auto check = [&](const char* when) {
+        const Object& o = e.scene().objects[0];
+        ASSERT_TRUE(o.orient) << when;
+        EXPECT_GT(agreement(o), 1.0f - 1e-6f) << when << ": rot " << o.rot.x << "," << o.rot.y
+                                               << "," << o.rot.z;
+    };
+    check("paused");
+    ASSERT_TRUE(e.seek(0.6));
+    check("scrubbed");
+    ASSERT_TRUE(e.seek(0.3));
+    e.undo();
+    check("undone");
+    e.togglePlay();
+    for (int i = 0; i < 7; ++i) e.frame(1.0 / 60);
+    check("playing over the bake");
+    e.togglePlay();
+}
+
+// Angles typed or loaded stay as they are while the body has not turned: (83.8, 169.8, 116.8)
+// and (-96.2, 10.2, -63.2) are the same turn, and only the first is what the user wrote.
+TEST(EditsInTime, TurnsStayAsLoadedUntilTheBodyTurns) {
+    Editor e = openEditor(writeFile("still.txt",
+                                    "scene version:3\nworld gravity:0\nmaterial r:1 g:0 b:0\n"
+                                    "object type:box pos:0,4,0 rot:83.8,169.8,116.8\n"));
+    run(e, 30);
+    const Object& o = e.scene().objects[0];
+    ASSERT_TRUE(o.orient);
+    EXPECT_EQ(o.rot, glm::vec3(83.8f, 169.8f, 116.8f));
+}
+
+TEST(EditsInTime, AnglesOfAnExactTurnHaveNoMinusZero) {
+    const glm::quat aboutY = glm::angleAxis(glm::radians(30.0f), glm::vec3(0, 1, 0));
+    const glm::vec3 shown = anglesShowing(aboutY, glm::vec3(0, 0, 45));
+    EXPECT_NEAR(shown.y, 30.0f, 1e-4f);
+    EXPECT_FALSE(std::signbit(shown.x));
+    EXPECT_FALSE(std::signbit(shown.z));
+}
+
+// A box renamed at t = 1.95 s cut a 10 s run back to 1.95 s, and Save left the name out.
+TEST(EditsInTime, ARenameAtALaterTimeKeepsTheRunAndIsSaved) {
+    const std::string path = writeFile("rename.txt", kScene);
+    Editor e = openEditor(path);
+    run(e, 60);
+    ASSERT_TRUE(e.seek(0.5));
+    const glm::vec3 at = e.scene().objects[0].pos;
+    e.select(ItemKind::Object, 0);
+    Object named = e.scene().objects[0];
+    named.name = "ball";
+    e.editObjects(e.scene().objects[0], named, 0);
+    EXPECT_NEAR(e.simulation().cache().end(), 1.0, 1e-9);  // the run is whole
+    EXPECT_NEAR(e.document().time(), 0.5, 1e-9);
+    EXPECT_EQ(e.scene().objects[0].pos, at);  // and the pose shown
+    EXPECT_FALSE(e.document().runEdits());    // nothing Save would leave out
+    EXPECT_EQ(e.document().start().objects[0].pos, glm::vec3(0, 3, 0));
+    ASSERT_TRUE(e.seek(0.75));
+    EXPECT_EQ(e.scene().objects[0].name, "ball");
+    std::string error;
+    ASSERT_TRUE(e.save(&error)) << error;
+    EXPECT_EQ(saved(path).objects[0].name, "ball");
+    EXPECT_EQ(saved(path).objects[0].pos, glm::vec3(0, 3, 0));
+    ASSERT_TRUE(e.seek(0));
+    EXPECT_EQ(e.scene().objects[0].name, "ball");
+}
+
+TEST(EditsInTime, AMaterialChosenAtALaterTimeKeepsTheRunAndUndoes) {
+    Editor e = openEditor(writeFile("material.txt", std::string(kScene) + "material r:0 g:1 b:0\n"));
+    run(e, 60);
+    ASSERT_TRUE(e.seek(0.5));
+    e.select(ItemKind::Object, 0);
+    Object green = e.scene().objects[0];
+    green.material = 1;
+    e.editObjects(e.scene().objects[0], green, 0);
+    EXPECT_NEAR(e.simulation().cache().end(), 1.0, 1e-9);
+    EXPECT_EQ(e.document().start().objects[0].material, 1);
+    ASSERT_TRUE(e.undo());
+    EXPECT_EQ(e.scene().objects[0].material, 0);
+    EXPECT_EQ(e.document().start().objects[0].material, 0);
+    EXPECT_NEAR(e.document().time(), 0.5, 1e-9);
+    ASSERT_TRUE(e.seek(0.9));  // the run is still there to scrub
+    EXPECT_NEAR(e.document().time(), 0.9, 1e-9);
+}
+
+// A move at a later time is still an event of the run: what followed goes.
+TEST(EditsInTime, AMoveAtALaterTimeStillCutsTheRun) {
+    Editor e = openEditor(writeFile("move.txt", kScene));
+    run(e, 60);
+    ASSERT_TRUE(e.seek(0.5));
+    e.select(ItemKind::Object, 0);
+    Object moved = e.scene().objects[0];
+    moved.pos.x = 1;
+    e.editObjects(e.scene().objects[0], moved, 0);
+    EXPECT_NEAR(e.simulation().cache().end(), 0.5, 1e-9);
+    EXPECT_TRUE(e.document().runEdits());
+}
+
+// Baked at 60 frames a second and played at 120 or 144: each frame shows the baked frame at
+// the play head, never the one before it, though the head's time is a sum of steps that rounds
+// differently from the bake's. The bake holds every second step (dt = 1/120 s).
+TEST(EditsInTime, PlaybackFasterThanTheBakeShowsTheFrameAtThePlayHead) {
+    for (double fps : {120.0, 144.0}) {
+        Editor e = openEditor(writeFile("fast.txt", kScene));
+        run(e, 60);
+        ASSERT_TRUE(e.seek(0));
+        const double dt = e.simulation().settings().dt;
+        StepAccumulator clock;  // the play head, counted apart from the editor's
+        int steps = 0;
+        e.togglePlay();
+        for (int i = 0; i < int(fps) - 2; ++i) {
+            e.frame(1.0 / fps);
+            steps += clock.advance(1.0 / fps, e.simulation().settings());
+            EXPECT_NEAR(e.document().time(), (steps / 2) * 2 * dt, 1e-9)
+                << fps << " fps, frame " << i << ", head at step " << steps;
+        }
+        e.togglePlay();
+    }
+}
