@@ -37,14 +37,7 @@ static void scrub(Editor& e, const TimelineStrip& strip, ImGuiID id, int* held) 
     if (ImGui::IsItemDeactivated()) e.endEdit(), *held = -1;
 }
 
-// Ticks at 1, 2 or 5 times a power of ten seconds, about 40 px apart or more.
-static double tickStep(const TimelineStrip& strip) {
-    const double least = strip.span * 40.0 / strip.width;
-    double step = std::pow(10.0, std::floor(std::log10(least)));
-    for (double m : {1.0, 2.0, 5.0, 10.0})
-        if (step * m >= least) return step * m;
-    return step * 10.0;
-}
+static constexpr float kTickGap = 48.0f;  // px: room for a label such as "12.5"
 
 static void drawStrip(const TimelineStrip& strip, float top, const Editor& e) {
     ImDrawList* d = ImGui::GetWindowDrawList();
@@ -53,10 +46,14 @@ static void drawStrip(const TimelineStrip& strip, float top, const Editor& e) {
     const float baked = strip.x(e.simulation().cache().end());
     d->AddRectFilled({strip.left, top + 8}, {baked, bottom},
                      ImGui::GetColorU32(ImGuiCol_PlotHistogram, 0.6f));
-    const double step = tickStep(strip);
-    for (double t = 0; t <= strip.span; t += step)
+    const double step = tickStep(strip, kTickGap);
+    for (int i = 0; i * step <= strip.span; ++i) {  // counted, not summed: no drift in labels
+        const double t = i * step;
         d->AddLine({strip.x(t), bottom - 5}, {strip.x(t), bottom},
                    ImGui::GetColorU32(ImGuiCol_Text));
+        d->AddText({strip.x(t) + 2, top}, ImGui::GetColorU32(ImGuiCol_TextDisabled),
+                   tickLabel(t, step).c_str());
+    }
     for (const Keyframe& k : e.scene().keyframes) {  // diamonds along the top
         const float x = strip.x(k.t), y = top + 5;
         d->AddQuadFilled({x, y - 4}, {x + 4, y}, {x, y + 4}, {x - 4, y},
@@ -121,6 +118,20 @@ static void loopBox(Editor& e) {
                 "keys at the end of the baked frames.");
 }
 
+// The time shown, or where Play stopped by itself: "at rest, 4.20 s".
+static void timeText(const Editor& e) {
+    const double t = e.document().time();
+    if (e.simulation().restedAt() != t) {
+        ImGui::Text("%s", timeLabel(t).c_str());
+        return;
+    }
+    ImGui::Text("at rest, %.2f s", t);
+    markItem("Timeline/at rest");
+    itemTooltip("Timeline/at rest",
+                "Play stopped here by itself: every body is at rest, and nothing more would "
+                "change.\nLoop plays on from the start instead.");
+}
+
 // In a window smaller than this the timeline gives way, as the statistics overlay does: the
 // docked panels need the height, and the strip would be a few pixels wide.
 static constexpr float kTimelineMinWidth = 560.0f, kTimelineMinHeight = 360.0f;  // px
@@ -161,7 +172,7 @@ void drawTimelineBar(UiContext& c) {
         markItem("Timeline/PlayPause");
         ImGui::SameLine();
         ImGui::AlignTextToFramePadding();
-        ImGui::Text("%s", timeLabel(e.document().time()).c_str());
+        timeText(e);
         ImGui::SameLine(kStripLeft);
         const std::string baked = bakeLabel(e.simulation().cache());
         const float after = ImGui::CalcTextSize(baked.c_str()).x + ImGui::GetFrameHeight() +

@@ -666,6 +666,10 @@ bool Editor::seekKey(int index, uint64_t mergeKey) {
     return seek(std::nextafter(t, INFINITY), mergeKey);
 }
 
-void Editor::frame(double seconds) { sim_.advance(doc_, seconds); }
+void Editor::frame(double seconds) {
+    const bool playing = sim_.playing();
+    sim_.advance(doc_, seconds);
+    if (playing && !sim_.playing()) emitEvent("pause at rest " + timeLabel(sim_.restedAt()));
+}
 
 }  // namespace mb

@@ -14,6 +14,7 @@ void Simulation::play(Document& doc) {
     runStart_ = doc.scene();
     head_ = doc.time();
     bakedAtPlay_ = cache_.end();
+    restedAt_ = -1;
 }
 
 void Simulation::pause(Document& doc) {
@@ -69,7 +70,16 @@ int Simulation::advance(Document& doc, double frameSeconds) {
         simulate(doc, steps);  // from the frame shown: a world built from its floats
     }
     head_ = doc.time();
+    if (cameToRest(doc)) {
+        pause(doc);
+        restedAt_ = doc.time();
+    }
     return steps;
+}
+
+bool Simulation::cameToRest(const Document& doc) const {
+    return !loop_ && world_ && world_->stats().awake == 0 &&
+           doc.time() + 1e-9 >= loopEnd(doc.scene().keyframes, 0.0);
 }
 
 void Simulation::simulate(Document& doc, int steps) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace mb {
 
@@ -28,6 +29,22 @@ int keyMarkerAt(const TimelineStrip& strip, const std::vector<Keyframe>& keys, f
         if (d <= reach && (best < 0 || d < nearest)) best = int(i), nearest = d;
     }
     return best;
+}
+
+double tickStep(const TimelineStrip& strip, float gap) {
+    const double least = strip.span * gap / strip.width;
+    double step = std::pow(10.0, std::floor(std::log10(least)));
+    for (double m : {1.0, 2.0, 5.0})
+        if (step * m >= least) return step * m;
+    return step * 10.0;
+}
+
+std::string tickLabel(double t, double step) {
+    // A step of 0.05 s needs two decimals, 0.5 s one, 5 s none.
+    const int decimals = std::clamp(int(std::ceil(-std::log10(step) - 1e-9)), 0, 6);
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*f", decimals, t);
+    return text;
 }
 
 double loopEnd(const std::vector<Keyframe>& keys, double baked) {

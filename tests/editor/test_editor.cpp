@@ -696,6 +696,44 @@ TEST(Editor, LoopPlaysTheBakedFramesAgainFromTheStart) {
     e.togglePlay();
 }
 
+// A ball that stops bouncing: its bounces lose all but a fifth of their speed.
+static const char* kSettling =
+    "world restitution:0.2\n"
+    "material r:1 g:0 b:0\n"
+    "object type:sphere pos:0,1,0 radius:0.5\n";
+
+// Play ran on to t = 22 s after every body was at rest.
+TEST(Editor, PlayStopsByItselfOnceEveryBodyIsAtRest) {
+    Editor e = openEditor(writeFile("rest.txt", kSettling));
+    e.togglePlay();
+    int frames = 0;
+    for (; frames < 600 && e.simulation().playing(); ++frames) e.frame(1.0 / 60);
+    ASSERT_FALSE(e.simulation().playing()) << "still playing at 10 s";
+    const double t = e.document().time();
+    EXPECT_EQ(e.simulation().restedAt(), t);
+    EXPECT_GT(t, 0.5);  // it fell, bounced and slept (half a second slow)
+    EXPECT_LT(t, 5.0);
+    EXPECT_EQ(e.document().history().undoLabel(), "Simulation run");  // paused as Space would
+    e.togglePlay();  // again: at rest already, so at once
+    e.frame(1.0 / 60);
+    EXPECT_FALSE(e.simulation().playing());
+}
+
+TEST(Editor, PlayAtRestGoesOnToTheLastCameraKeyAndLoopsOnWithLoop) {
+    Editor e = openEditor(writeFile("rest-keys.txt",
+                                    std::string("scene version:2\nkeyframe t:8 pos:0,2,-6\n") +
+                                        kSettling));
+    e.togglePlay();
+    for (int i = 0; i < 600 && e.simulation().playing(); ++i) e.frame(1.0 / 60);
+    EXPECT_NEAR(e.document().time(), 8.0, 1.0 / 60);  // the camera's path played whole
+    Editor loop = openEditor(writeFile("rest-loop.txt", kSettling));
+    loop.setLoop(true);
+    loop.togglePlay();
+    for (int i = 0; i < 600; ++i) loop.frame(1.0 / 60);
+    EXPECT_TRUE(loop.simulation().playing());
+    loop.togglePlay();
+}
+
 // A key's time is a float, the frame it was added at a double a rounding above it (0.35 s).
 TEST(Editor, GoingToACameraKeyShowsTheFrameItWasAddedAt) {
     Editor e = openEditor(writeFile("seek-key.txt", kScene));

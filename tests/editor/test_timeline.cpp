@@ -53,3 +53,21 @@ TEST(Timeline, ThePlayHeadGoesBackToZeroPastTheEnd) {
     EXPECT_EQ(playHead(1.0, 1.0 / 120, 1.0), 0.0);
     EXPECT_DOUBLE_EQ(playHead(5.0, 0.25, 0.0), 5.25);  // no end: on and on
 }
+
+TEST(Timeline, TicksAreRoundTimesFarEnoughApartForTheirLabels) {
+    EXPECT_EQ(tickStep({0, 480, 10.0}, 48), 1.0);    // 48 px a second
+    EXPECT_EQ(tickStep({0, 480, 11.0}, 48), 2.0);    // 43.6 px a second: too close
+    EXPECT_EQ(tickStep({0, 480, 30.0}, 48), 5.0);
+    EXPECT_EQ(tickStep({0, 480, 60.0}, 48), 10.0);
+    EXPECT_EQ(tickStep({0, 480, 1.0}, 48), 0.1);
+    EXPECT_EQ(tickStep({0, 480, 2.2}, 48), 0.5);
+}
+
+TEST(Timeline, TickLabelsHaveTheDecimalsTheirStepNeeds) {
+    EXPECT_EQ(tickLabel(0.0, 1.0), "0");
+    EXPECT_EQ(tickLabel(12.0, 2.0), "12");
+    EXPECT_EQ(tickLabel(1.5, 0.5), "1.5");
+    EXPECT_EQ(tickLabel(0.3, 0.1), "0.3");
+    EXPECT_EQ(tickLabel(0.25, 0.05), "0.25");
+    EXPECT_EQ(tickLabel(20.0, 10.0), "20");
+}

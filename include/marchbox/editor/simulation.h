@@ -4,6 +4,8 @@
 // accumulator, outside the undo history; pausing records the whole run as one undo step.
 // Frames already baked after the time shown are played back, not simulated again; past the
 // last one the run is simulated on. With Loop on, playing goes back to t = 0 at loopEnd().
+// Without it, playing stops by itself once every body sleeps and the camera keys are played:
+// nothing more would change.
 // The document keeps the time and the start (t = 0); Reset goes back to that start.
 #pragma once
 
@@ -26,6 +28,8 @@ public:
     bool loop() const { return loop_; }
     void setLoop(bool on) { loop_ = on; }
     void pause(Document& doc);  // records the run since play() as "Simulation run"
+    // The time playing last stopped by itself, every body at rest; -1 once played again.
+    double restedAt() const { return restedAt_; }
     void step(Document& doc);   // one fixed step, as its own undo step; pauses first
     void reset(Document& doc);  // back to t = 0, as an undo step
 
@@ -46,6 +50,7 @@ public:
 private:
     void simulate(Document& doc, int steps);  // on from the scene shown, baking each frame
     bool worldAtBakeEnd() const;
+    bool cameToRest(const Document& doc) const;
 
     PhysicsSettings settings_;
     // The world as it simulated the last baked frame, to go on from: a run played on after a
@@ -61,6 +66,7 @@ private:
     bool loop_ = false;
     double head_ = 0;         // s: the time playing has got to
     double bakedAtPlay_ = 0;  // s: the baked frames' end when Play was pressed, where a loop ends
+    double restedAt_ = -1;    // s: see restedAt()
 };
 
 }  // namespace mb

@@ -5,6 +5,7 @@
 
 #include "marchbox/scene/scene.h"
 
+#include <string>
 #include <vector>
 
 namespace mb {
@@ -25,6 +26,11 @@ TimelineStrip timelineStrip(float left, float width, double cached,
 // The camera key whose marker is within `reach` px of column px, the nearest; -1 for none.
 int keyMarkerAt(const TimelineStrip& strip, const std::vector<Keyframe>& keys, float px,
                 float reach);
+
+// The ticks: every 1, 2 or 5 times a power of ten seconds, at least `gap` px apart; each
+// labelled with its time in as many decimals as the step needs ("0", "0.5", "1.25").
+double tickStep(const TimelineStrip& strip, float gap);
+std::string tickLabel(double t, double step);
 
 // Loop playback. The time a loop goes back to 0 at: the last camera key's where it is past 0
 // (the clip the keys make), else the end of the baked frames; 0 for neither: no end.
