@@ -65,6 +65,7 @@ static void materialCombo(const Scene& s, int* material, FieldEdit& e) {
     const int m = *material;
     std::string preview = m < int(s.materials.size()) ? s.materials[size_t(m)].name : "?";
     const bool open = ImGui::BeginCombo("material", preview.c_str());
+    markItem(itemPath("material"));
     itemTooltip(itemPath("material"), "The object's material, by index in the file.");
     if (!open) return;
     for (int i = 0; i < int(s.materials.size()); ++i) {

@@ -105,6 +105,12 @@ static void groupItems(UiContext& c) {
         e.ungroupSelected(objectsMessage(c));
 }
 
+// Shift+D, as in Blender: copies of the selection, named on from the originals ("box.001"),
+// that follow the mouse until a click places them (see ViewportInput).
+static void duplicateToPlace(UiContext& c) {
+    if (c.editor.duplicateSelected(deleteMessage(c))) c.ui.placeCopies = true;
+}
+
 static void editMenu(UiContext& c) {
     Editor& e = c.editor;
     const History& h = e.document().history();
@@ -126,8 +132,8 @@ static void editMenu(UiContext& c) {
     } else {
         markItem("Edit/Add");
     }
-    if (menuItem("Edit", "Duplicate selected", nullptr, false, !e.selection().empty()))
-        e.duplicateSelected(deleteMessage(c));
+    if (menuItem("Edit", "Duplicate", "Shift+D", false, !e.selection().empty()))
+        duplicateToPlace(c);
     if (menuItem("Edit", "Delete selected", "Del", false, !e.selection().empty()))
         e.removeSelected(deleteMessage(c));
     ImGui::Separator();
@@ -354,6 +360,9 @@ static void plainShortcut(UiContext& c, const KeyPress& k) {
             break;
         case GLFW_KEY_J:
             e.kick();
+            break;
+        case GLFW_KEY_D:
+            if (k.mods & GLFW_MOD_SHIFT) duplicateToPlace(c);
             break;
         case GLFW_KEY_HOME:  // as in Blender, for the area under the mouse
             c.ui.overTimeline ? void(e.seek(0)) : frameView(c, true);

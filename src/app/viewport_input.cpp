@@ -3,6 +3,7 @@
 // turn or size the selection; Ctrl drag an object to move it over the ground.
 #include "viewport_input.h"
 
+#include "marchbox/editor/events.h"
 #include "marchbox/scene/sdf.h"
 
 #define GLFW_INCLUDE_NONE
@@ -23,6 +24,9 @@ void ViewportInput::update(UiContext& c, glm::vec2 framebufferSize, float second
     ImGuiIO& io = ImGui::GetIO();
     view_ = framebufferSize;
     scale_ = {io.DisplayFramebufferScale.x, io.DisplayFramebufferScale.y};
+    if (c.ui.placeCopies) beginPlacing(c);
+    c.ui.placeCopies = false;
+    if (drag_ == Drag::Place) return place(c);  // the mouse is the copies' until a click
     if (drag_ == Drag::None && !io.WantCaptureMouse) press(c);
     if (drag_ != Drag::None) hold(c);
     if (!io.WantCaptureMouse && io.MouseWheel != 0.0f)
@@ -139,6 +143,7 @@ void ViewportInput::follow(UiContext& c, glm::vec2 delta) {
             dragGizmo(c, pixel({io.MousePos.x, io.MousePos.y}));
             break;
         case Drag::Box:  // drawn from the mouse; selects at the release
+        case Drag::Place:
         case Drag::None:
             break;
     }
@@ -224,9 +229,45 @@ void ViewportInput::drawSelection(const UiContext& c) const {
     }
 }
 
+// As in Blender, the copies hang on the mouse over the ground at their height, the active one
+// where the mouse is now, the others about it as they stood.
+void ViewportInput::beginPlacing(UiContext& c) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const Scene& s = c.editor.scene();
+    const Selection& sel = c.editor.selection();
+    const glm::vec2 at = pixel({io.MousePos.x, io.MousePos.y});
+    if (drag_ != Drag::None || !ImGui::IsMousePosValid() ||
+        !ground_.begin(s, Item{sel.kind, sel.index}, at, view_) ||
+        !ground_.follow(s.camera, at, view_, &placedFrom_))
+        return;
+    held_ = sel;
+    hold_ = holdSelection(s, held_);
+    drag_ = Drag::Place;
+    ++moves_;
+    emitEvent("placing");
+}
+
+void ViewportInput::place(UiContext& c) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool drop = ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false) ||
+                      ImGui::IsMouseClicked(ImGuiMouseButton_Right);
+    GizmoDelta d;
+    glm::vec3 pos;
+    if (!drop &&
+        ground_.follow(c.editor.scene().camera, pixel({io.MousePos.x, io.MousePos.y}), view_, &pos))
+        d.move = pos - placedFrom_;
+    c.editor.dragSelection(hold_, d, "Place copies", dragKey());
+    if (!drop && !ImGui::IsMouseClicked(ImGuiMouseButton_Left)) return;
+    c.editor.endEdit();
+    ground_.end();
+    drag_ = Drag::None;
+    emitEvent(drop ? "placing dropped" : "placed");
+}
+
 void ViewportInput::keys(UiContext& c, float seconds) {
     ImGuiIO& io = ImGui::GetIO();
-    if (io.WantCaptureKeyboard || io.KeyCtrl) return;
+    // Ctrl and Shift make W, A, S, D shortcuts (Ctrl+S, Shift+D), not flight.
+    if (io.WantCaptureKeyboard || io.KeyCtrl || io.KeyShift) return;
     auto axis = [](int minus, int plus) {
         return float(ImGui::IsKeyDown(plus)) - float(ImGui::IsKeyDown(minus));
     };

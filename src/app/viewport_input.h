@@ -24,7 +24,7 @@ public:
     void drawSelection(const UiContext& c) const;
 
 private:
-    enum class Drag { None, Orbit, Pan, Move, Gizmo, Box };
+    enum class Drag { None, Orbit, Pan, Move, Gizmo, Box, Place };
     glm::vec2 pixel(glm::vec2 mouse) const;  // window coordinates to a bottom-up view pixel
     void press(UiContext& c);
     GizmoHandle handleAt(const UiContext& c, glm::vec2 at, GizmoFrame* f) const;
@@ -36,6 +36,9 @@ private:
     void release(UiContext& c);
     void click(UiContext& c, glm::vec2 at, bool shift);  // a press that never became a drag
     void keys(UiContext& c, float seconds);
+    void beginPlacing(UiContext& c);  // Duplicate's copies, selected, take the mouse
+    void place(UiContext& c);         // each frame until a click places them or Esc drops
+                                      // them back beside the originals
     uint64_t dragKey() const { return 0x4d6f7665ull << 32 | moves_; }  // "Move": its undo step
 
     Drag drag_ = Drag::None;
@@ -47,6 +50,7 @@ private:
     GizmoHold hold_;      // its objects and groups at the press: each frame applies the whole
     glm::vec3 heldLight_{0.0f};  // drag to them, or to a light's place
     glm::vec2 boxFrom_{0.0f};    // a box selection's first corner, in view pixels
+    glm::vec3 placedFrom_{0.0f};  // the active copy's centre when placing began
     bool boxExtends_ = false;    // Shift held: the box adds to the selection
     uint64_t moves_ = 0;  // numbers each drag that edits: one undo step per drag
     glm::vec2 view_{0.0f}, scale_{1.0f};

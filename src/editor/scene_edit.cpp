@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 namespace mb {
@@ -139,6 +140,34 @@ int addItem(Scene& s, ItemKind k, std::string* why) {
     return itemCount(s, k) - 1;
 }
 
+std::string copyName(const std::string& name,
+                     const std::function<bool(const std::string&)>& used) {
+    if (name.empty()) return name;
+    // "box.001" counts on from "box": the stem is the name without a dot and 3+ digits.
+    const size_t dot = name.find_last_of('.');
+    const bool numbered = dot != std::string::npos && name.size() - dot >= 4 &&
+                          name.find_first_not_of("0123456789", dot + 1) == std::string::npos;
+    const std::string stem = numbered ? name.substr(0, dot) : name;
+    char suffix[16];
+    for (int n = 1;; ++n) {
+        std::snprintf(suffix, sizeof suffix, ".%03d", n);
+        if (!used(stem + suffix)) return stem + suffix;
+    }
+}
+
+bool nameUsed(const Scene& s, ItemKind k, const std::string& name) {
+    auto in = [&](const auto& list) {
+        return std::any_of(list.begin(), list.end(), [&](const auto& r) { return r.name == name; });
+    };
+    switch (k) {
+        case ItemKind::Object: return in(s.objects);
+        case ItemKind::Group: return in(s.groups);
+        case ItemKind::Material: return in(s.materials);
+        case ItemKind::Light: return false;
+    }
+    return false;
+}
+
 int duplicateItem(Scene& s, ItemKind k, int index, std::string* why) {
     if (!inRange(s, k, index, why) || !hasRoom(s, k, 1, why)) return -1;
     const glm::vec3 aside(1.0f, 0.0f, 0.0f);
@@ -152,7 +181,9 @@ int duplicateItem(Scene& s, ItemKind k, int index, std::string* why) {
         }
         case ItemKind::Material: {
             Material m = s.materials[size_t(index)];
-            m.name += "-copy";
+            m.name = copyName(m.name, [&](const std::string& n) {
+                return nameUsed(s, ItemKind::Material, n);
+            });
             m.comment.clear();
             s.materials.push_back(m);
             break;

@@ -421,12 +421,17 @@ Item copyInto(Scene& s, Tree& t, Item it) {
     if (it.kind == ItemKind::Object) {
         Object o = s.objects[size_t(it.index)];
         o.comment.clear();  // the file's notes stay with the original
+        o.name = copyName(o.name, [&](const std::string& n) {
+            return nameUsed(s, ItemKind::Object, n);
+        });
         s.objects.push_back(std::move(o));
         return object(int(s.objects.size()) - 1);
     }
     Group g = s.groups[size_t(it.index)];
     g.comment.clear();
-    g.name = freeGroupName(s, g.name + "-copy");
+    g.name = copyName(g.name, [&](const std::string& n) {
+        return nameUsed(s, ItemKind::Group, n);
+    });
     s.groups.push_back(std::move(g));
     const int copy = t.add();
     const std::vector<Item> kids = t.of(it.index);  // t grows while the kids are copied

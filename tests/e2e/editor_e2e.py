@@ -1551,6 +1551,38 @@ def case_rename_later(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+def case_duplicate(app, scene):
+    """Shift+D as in Blender: the copy, made 1 m beside the box, follows the mouse over the
+    ground (as far as the mouse moves) and a click places it; Shift+D again and Esc leaves the
+    next copy 1 m beside its original. Both save."""
+    box = scene_values(scene, 'object', 'pos')[2]
+    app.click(*project(scene, box))
+    check(app.wait('select ') == 'select object 2', 'the box was not selected')
+    app.key('shift+d')
+    app.wait('edit Duplicate')
+    app.wait('placing')
+    target = [-1.0, box[1], 3.0]
+    app.move(*project(scene, target))
+    app.click(*project(scene, target))
+    app.wait('placed')
+    app.key('shift+d')
+    app.wait('placing')
+    app.key('Escape')
+    app.wait('placing dropped')
+    app.save()
+    pos = scene_values(scene, 'object', 'pos')
+    check(len(pos) == 5, '%d objects saved, not 5' % len(pos))
+    placed, aside = pos[3], pos[4]
+    check(abs(placed[1] - box[1]) < 1e-4, 'the copy left its height: %s' % placed)
+    check(math.hypot(placed[0] - target[0] - 1, placed[2] - target[2]) < 0.15,
+          'the copy is at %s, not 1 m beside the click at %s' % (placed, target))
+    check(aside == [placed[0] + 1, placed[1], placed[2]] or
+          max(abs(a - b) for a, b in zip(aside, [placed[0] + 1, placed[1], placed[2]])) < 1e-4,
+          'Esc left the copy at %s, not beside %s' % (aside, placed))
+    app.key('ctrl+q')
+    check(app.finish() == 0, 'exit status not 0')
+
+
 def is_key_mark(rgb):  # a camera key's diamond on the timeline, (255, 210, 60)
     r, g, b = rgb[:3]
     return r > 230 and 180 < g < 235 and b < 100

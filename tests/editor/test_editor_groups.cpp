@@ -96,7 +96,7 @@ TEST(EditorGroups, DeleteDuplicateAndMoveKeepTheTreeAndUndo) {
     e.select(ItemKind::Group, 0);
     ASSERT_TRUE(e.duplicateSelected(&why)) << why;
     EXPECT_TRUE(e.selection().is(ItemKind::Group, 2));  // the copy, after the cup's handle
-    EXPECT_EQ(e.scene().groups[2].name, "cup-copy");
+    EXPECT_EQ(e.scene().groups[2].name, "cup.001");
     expectInOrder(e);
     ASSERT_TRUE(e.reorder(group(2), -1, &why)) << why;  // above the box
     EXPECT_EQ(e.document().history().undoLabel(), "Move group up");

@@ -3,6 +3,7 @@
 #include "marchbox/editor/selection.h"
 #include "marchbox/scene/scene_io.h"
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 
@@ -172,4 +173,16 @@ TEST(SceneEdit, ReorderMovesAnObjectPastSeveralKeepingTheOthersInOrder) {
     EXPECT_EQ(order(), "1023");
     EXPECT_EQ(reorderObject(s, 1, 3, &why), -1);  // past the end: refused, nothing moved
     EXPECT_EQ(order(), "1023");
+}
+
+TEST(SceneEdit, ACopyIsNamedAsBlenderNamesIt) {
+    std::vector<std::string> names = {"box", "box.001", "lamp.7"};
+    auto used = [&](const std::string& n) {
+        return std::find(names.begin(), names.end(), n) != names.end();
+    };
+    EXPECT_EQ(copyName("box", used), "box.002");  // box.001 is taken
+    EXPECT_EQ(copyName("box.001", used), "box.002");
+    EXPECT_EQ(copyName("ball", used), "ball.001");
+    EXPECT_EQ(copyName("lamp.7", used), "lamp.7.001");  // not Blender's three digits
+    EXPECT_EQ(copyName("", used), "");
 }

@@ -215,8 +215,8 @@ TEST(SceneTree, DuplicateCopiesAGroupWithEverythingInIt) {
     ASSERT_TRUE(duplicateItems(s, {group(0), object(1)}, {1, 0, 0}, &copies, &r, &why)) << why;
     EXPECT_EQ(copies, std::vector<Item>{group(3)});  // outer is in the cup: copied with it
     EXPECT_EQ(layout(s),
-              "a outer/cup ring/handle inner/cup b outer/cup-copy ring/handle-copy inner/cup-copy"
-              " | cup@1 handle<cup@2 empty@4 cup-copy@5 handle-copy<cup-copy@6");
+              "a outer/cup ring/handle inner/cup b outer.001/cup.001 ring.001/handle.001 inner.001/cup.001"
+              " | cup@1 handle<cup@2 empty@4 cup.001@5 handle.001<cup.001@6");
     EXPECT_EQ(groupPose(s, 3).pos, groupPose(s, 0).pos + glm::vec3(1, 0, 0));
     EXPECT_EQ(s.objects[6].pos, s.objects[2].pos);  // members keep their place in the group
     EXPECT_EQ(problems(s), "");

@@ -8,6 +8,7 @@
 #include "marchbox/scene/scene.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,11 @@ int addItem(Scene& s, ItemKind k, std::string* why);
 // copy's index, or -1 with *why. An object's or group's copy goes last among its original's
 // siblings (scene_tree.h), a group's with everything in it.
 int duplicateItem(Scene& s, ItemKind k, int index, std::string* why);
+// A copy's name, as Blender names it: "box" gives "box.001", "box.001" the next number that no
+// name in use has ("box.002"). `used` says whether a name is taken; an empty name stays empty.
+std::string copyName(const std::string& name, const std::function<bool(const std::string&)>& used);
+// Whether an object, a group or a material (by kind) already has that name.
+bool nameUsed(const Scene& s, ItemKind k, const std::string& name);
 
 // Removes item `index`, and the comment lines above it in the file; a group with everything in
 // it. Deleting a material renumbers the objects' indices; objects that used it take material 0.
