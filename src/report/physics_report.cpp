@@ -66,19 +66,17 @@ std::string extremeTable() {
     return md.str();
 }
 
-// src/report/bench/ builds bullet_bench beside this executable when Bullet was found; it prints its
-// own markdown, Marchbox and Bullet side by side.
-std::string bulletSection() {
-    const std::string exe = besideExecutable("bullet_bench");
-    if (exe.empty()) return "Bullet comparison not run: cannot locate the executable.\n";
-    if (access(exe.c_str(), X_OK) != 0)
-        return "Bullet comparison not built (needs libbullet-dev, found through pkg-config "
-               "`bullet`).\n";
+// The markdown a benchmark that src/report/bench/ builds beside this executable prints, or why
+// there is none (`unbuilt`: where it was not built).
+std::string benchSection(const std::string& name, const std::string& unbuilt) {
+    const std::string exe = besideExecutable(name);
+    if (exe.empty()) return name + " not run: cannot locate the executable.\n";
+    if (access(exe.c_str(), X_OK) != 0) return unbuilt;
     std::string out;
     if (FILE* pipe = popen(exe.c_str(), "r")) {
         char buf[4096];
         for (size_t got; (got = fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, got);
-        if (pclose(pipe) != 0) out += "\n(bullet_bench exited with an error)\n";
+        if (pclose(pipe) != 0) out += "\n(" + name + " exited with an error)\n";
     }
     return out;
 }
@@ -113,10 +111,14 @@ int runPhysicsReport(const std::string& repoRoot) {
     std::cerr << "physics report: work precision\n";
     std::string& cases = v["work_precision"];
     for (const AnalyticCase& c : analyticCases()) cases += workPrecision(c, docs);
+    std::cerr << "physics report: group mass properties\n";
+    v["group_mass"] = benchSection("group_mass_bench", "group_mass_bench not built.\n");
     std::cerr << "physics report: stiff and extreme suite\n";
     v["extreme_table"] = extremeTable();
     std::cerr << "physics report: Bullet\n";
-    v["bullet"] = bulletSection();
+    v["bullet"] = benchSection("bullet_bench",
+                               "Bullet comparison not built (needs libbullet-dev, found through "
+                               "pkg-config `bullet`).\n");
     if (!writeReport(docs + "/physics-report.md", text, v, &error)) {
         std::cerr << error << '\n';
         return 1;

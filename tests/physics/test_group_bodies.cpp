@@ -89,25 +89,10 @@ std::string cup(const std::string& name, dvec3 pos, double mass) {
 // the tube's I, integrated, comes out small and it rolls too fast (a 2.6 % over).
 TEST(GroupBodies, TubeRollsDownASlopeAtItsClosedFormAcceleration) {
     const double r0 = 0.2, r1 = 0.12, degrees = 10.0, theta = degrees * M_PI / 180.0;
-    const dvec3 along(std::cos(theta), std::sin(theta), 0.0),
-        up(-std::sin(theta), std::cos(theta), 0.0);
-    const dvec3 start = 3.0 * along + (0.5 + r0) * up;
-    Scene s = load(
-        "scene version:3\n"
-        "world gravity:9.81 restitution:0 friction:0.8 rolling:0 ground:0\n"
-        "object type:box pos:0,0,0 size:20,0.5,2 rot:0,0," +
-        num(degrees) +
-        " static:1\n"
-        "group name:tube pos:" +
-        vec(start) +
-        " rot:90,0,0 mass:1\n"
-        "object in:tube type:cylinder pos:0,0,0 radius:" +
-        num(r0) +
-        " height:0.6\n"
-        "object in:tube type:cylinder pos:0,0,0 radius:" +
-        num(r1) + " height:0.8 op:subtract\n");
-    PhysicsWorld w(s);
+    const dvec3 along(std::cos(theta), std::sin(theta), 0.0);
+    PhysicsWorld w(tubeSlopeScene(float(degrees), 0.8f, float(r0), float(r1)));
     ASSERT_EQ(w.rigidCount(), 1);
+    const dvec3 start = w.rigid(0).centre;
     const double a = kG * std::sin(theta) / (1.0 + (r0 * r0 + r1 * r1) / (2.0 * r0 * r0));
     // Normal equations of s(t) = c0 + c1·t + c2·t², over the steps of 1 s.
     double m[3][4] = {};
@@ -238,15 +223,8 @@ TEST(GroupBodies, CupCatchesABall) {
 // from ∫x·xᵀ (S_yy 1.6 % under); the certificate's half-diagonal taken as the half side, which
 // calls cells whole that the surface crosses (S_yy 0.11 % over).
 TEST(GroupBodies, HoledBoxMassPropertiesMatchTheClosedFormWithinTheBound) {
-    const double a = 0.5, b = 0.3, c = 0.4, r = 0.15, d = 0.1;
-    const Scene s = load(
-        "scene version:3\ngroup name:holed pos:0,1,0 mass:2\n"
-        "object in:holed type:box pos:0,0,0 size:" +
-        vec(dvec3(a, b, c)) +
-        "\n"
-        "object in:holed type:cylinder pos:" +
-        vec(dvec3(d, 0, 0)) + " radius:" + num(r) + " height:1 op:subtract\n");
-    const GroupShape shape = groupShapeOf(s, 0);
+    const HoledBox holed;
+    const GroupShape shape = groupShapeOf(holedBoxScene(holed), 0);
     const auto start = std::chrono::steady_clock::now();
     const GroupMoments found = groupMoments(shape);
     const double ms =
@@ -254,13 +232,7 @@ TEST(GroupBodies, HoledBoxMassPropertiesMatchTheClosedFormWithinTheBound) {
     ASSERT_FALSE(found.closedForm);
     const Moments& m = found.moments;
     const Moments& bound = found.integral.bound;
-    const double vb = 8.0 * a * b * c, vc = M_PI * r * r * 2.0 * b;
-    Moments exact;
-    exact.volume = vb - vc;
-    exact.first = dvec3(-vc * d, 0.0, 0.0);
-    exact.second = dmat3(vb * a * a / 3.0 - vc * (r * r / 4.0 + d * d), 0, 0, 0,
-                         vb * b * b / 3.0 - vc * 4.0 * b * b / 12.0, 0, 0, 0,
-                         vb * c * c / 3.0 - vc * r * r / 4.0);
+    const SolidMoments exact = holedBoxMoments(holed);
     std::printf("holed box: %ld evaluations, %ld straddling cells, %.0f ms\n",
                 found.integral.evaluations, found.integral.straddling, ms);
     std::printf("  V %.7f exact %.7f (error %.2g, bound %.2g)\n", m.volume, exact.volume,
@@ -273,7 +245,7 @@ TEST(GroupBodies, HoledBoxMassPropertiesMatchTheClosedFormWithinTheBound) {
         std::printf("  s%d %.7f exact %.7f (error %.2g, bound %.2g)\n", k, m.first[k],
                     exact.first[k], error, bound.first[k]);
         EXPECT_LE(std::abs(error), bound.first[k]) << "axis " << k;
-        EXPECT_LE(std::abs(error), 1e-3 * scale / a) << "axis " << k;
+        EXPECT_LE(std::abs(error), 1e-3 * scale / holed.half.x) << "axis " << k;
     }
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {

@@ -8,7 +8,9 @@
 #include "marchbox/scene/scene.h"
 
 #include <cstdint>
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
+#include <string>
 #include <vector>
 
 namespace mb {
@@ -41,6 +43,10 @@ Scene rampScene(float degrees, float friction, float rolling);
 // A 40 m plank tilted `degrees` about z (its top rises along +x), no ground; `body` at rest on
 // its top face 3 m up the slope from its middle, a box turned with the plank.
 Scene slopeScene(float degrees, float friction, Object body);
+// The same slope with a tube on it instead: a dynamic group of 1 kg, a cylinder of radius `outer`
+// and 0.6 m long less a coaxial one of radius `inner`, 0.8 m long, its axis along z (across
+// the slope). Rolling without slip it goes down at a = g·sin θ / (1 + (r0² + r1²)/(2·r0²)).
+Scene tubeSlopeScene(float degrees, float friction, float outer, float inner);
 Object dynamicBox(glm::vec3 pos, glm::vec3 halfExtents, float mass = 1.0f);
 Scene boxStackScene(int count);  // unit boxes one on another on the ground, μ = 0.6, e = 0.3
 Scene pyramidScene(int base);    // boxes of 0.5 m, `base` wide at the bottom, μ = 0.6, e = 0
@@ -54,6 +60,10 @@ Scene pileScene(int count, std::uint32_t seed, float r = 0.1f);
 // The same bin with boxes, capsules, cylinders and spheres of about r in turn, each turned.
 Scene mixedPileScene(int count, std::uint32_t seed, float r = 0.2f);
 Scene gasScene(int count, std::uint32_t seed);  // elastic, frictionless, in a closed box
+// Adds a top-level group named `name` and its index, and returns that index; addMember gives it
+// its members, which must follow it at once (the scene's tree order).
+int addGroup(Scene& scene, const std::string& name, glm::vec3 pos, glm::vec3 rot, float mass);
+void addMember(Scene& scene, int group, Object member);
 // A dynamic cup (a group, named "cupN" for the Nth group) standing at pos, turned by rot: a
 // cylinder of `radius`, 1.6·radius tall, less a cylinder of 0.88·radius from 0.12·radius above
 // its bottom to 0.12·radius above its rim. Its inner floor is 0.12·radius above its bottom.
@@ -62,5 +72,29 @@ void addCup(Scene& scene, glm::vec3 pos, float radius, float mass, glm::vec3 rot
 // them `balls` balls of 0.4·r: dropped cups and balls, layer by layer (version 3 groups).
 // `walls` false: the same heap on the open ground, with no static object.
 Scene cupPileScene(int cups, int balls, std::uint32_t seed, float r = 0.25f, bool walls = true);
+
+// A box of half extents `half` with a hole of `radius` through it along y, `offset` off its
+// middle along x: a dynamic group at (0, 1, 0), above the ground, whose mass properties are
+// integrated (the hole carves the box), and their closed form.
+struct HoledBox {
+    glm::dvec3 half{0.5, 0.3, 0.4};
+    double radius = 0.15, offset = 0.1;
+    float mass = 2.0f;
+};
+Scene holedBoxScene(const HoledBox& box);
+// A solid's volume V = ∫dV (m³), first moment ∫x dV (m⁴) and second ∫x·xᵀ dV (m⁵), about the
+// frame it is given in.
+struct SolidMoments {
+    double volume = 0.0;
+    glm::dvec3 first{0.0};
+    glm::dmat3 second{0.0};
+};
+SolidMoments holedBoxMoments(const HoledBox& box);  // in the group's frame, in closed form
+
+// A table (a dynamic group of union members: a box top on four cylinder legs, about 2·r by
+// 1.4·r by 1.4·r), its origin halfway up, at pos, turned by rot.
+void addTable(Scene& scene, glm::vec3 pos, glm::vec3 rot, float r, float mass);
+// `count` tables of size r dropped into pileScene's walled bin, each turned at random.
+Scene tablePileScene(int count, std::uint32_t seed, float r = 0.25f);
 
 }  // namespace mb

@@ -29,7 +29,13 @@ using mb::Scene;
 constexpr double kDt = 1.0 / 120;
 constexpr double kG = double(9.81f);
 
-// A Bullet world holding a Marchbox scene: dynamic spheres, static boxes, the ground plane.
+btTransform transformOf(glm::vec3 pos, glm::quat turn) {
+    return btTransform(btQuaternion(turn.x, turn.y, turn.z, turn.w),
+                       btVector3(pos.x, pos.y, pos.z));
+}
+
+// A Bullet world holding a Marchbox scene: dynamic bodies, dynamic groups of union members as
+// compound shapes, static boxes, the ground plane.
 class BulletScene {
 public:
     explicit BulletScene(const Scene& scene)
@@ -38,10 +44,13 @@ public:
         if (scene.world.ground)
             addStatic(new btStaticPlaneShape(btVector3(0, 1, 0), scene.world.floor), {0, 0, 0}, {});
         for (const mb::Object& o : scene.objects) {
+            if (o.group >= 0) continue;  // a group's member: part of its compound below
             if (o.type == mb::ShapeType::Box && !o.dynamic())
                 addStatic(new btBoxShape(btVector3(o.size.x, o.size.y, o.size.z)), o.pos, o.rot);
             if (o.dynamic()) addBody(o, scene);
         }
+        for (int g = 0; g < int(scene.groups.size()); ++g)
+            if (scene.groups[size_t(g)].dynamic()) addGroup(scene, g);
     }
     ~BulletScene() {
         for (int i = world_.getNumCollisionObjects() - 1; i >= 0; --i) {
@@ -51,18 +60,18 @@ public:
         }
     }
     void step() { world_.stepSimulation(btScalar(kDt), 0); }
-    int count() const { return int(spheres_.size()); }
+    int count() const { return int(bodies_.size()); }
     glm::dvec3 pos(int i) const {
-        const btVector3 p = spheres_[size_t(i)]->getWorldTransform().getOrigin();
+        const btVector3 p = bodies_[size_t(i)]->getWorldTransform().getOrigin();
         return {p.x(), p.y(), p.z()};
     }
     glm::dvec3 vel(int i) const {
-        const btVector3 v = spheres_[size_t(i)]->getLinearVelocity();
+        const btVector3 v = bodies_[size_t(i)]->getLinearVelocity();
         return {v.x(), v.y(), v.z()};
     }
     double kineticEnergy() const {
         double e = 0.0;
-        for (const btRigidBody* b : spheres_) {
+        for (const btRigidBody* b : bodies_) {
             const btVector3 v = b->getLinearVelocity(), w = b->getAngularVelocity();
             const btVector3 inertia = b->getLocalInertia();
             e += 0.5 * v.length2() / b->getInvMass() +
@@ -70,7 +79,11 @@ public:
         }
         return e;
     }
-    double radius(int i) const { return radii_[size_t(i)]; }
+    double meanHeight() const {  // of the bodies' centres of mass, each its body's origin
+        double sum = 0.0;
+        for (const btRigidBody* b : bodies_) sum += b->getWorldTransform().getOrigin().y();
+        return sum / double(bodies_.size());
+    }
 
 private:
     void addStatic(btCollisionShape* shape, glm::vec3 pos, glm::vec3 eulerDegrees) {
@@ -84,9 +97,8 @@ private:
         info.m_restitution = 1.0;
         world_.addRigidBody(new btRigidBody(info));
     }
-    // Bullet's own shape for each of Marchbox's (a torus has none: it is left out); each body's
-    // friction and restitution are the square roots of the world's, since Bullet multiplies a
-    // pair's, and the statics' are 1.
+    // Bullet's own shape for each of Marchbox's (a torus, cone and ellipsoid have none: they are
+    // left out).
     static btCollisionShape* shapeOf(const mb::Object& o) {
         switch (o.type) {
             case mb::ShapeType::Sphere:
@@ -98,9 +110,28 @@ private:
             case mb::ShapeType::Cylinder:
                 return new btCylinderShape(btVector3(o.radius, 0.5f * o.height, o.radius));
             case mb::ShapeType::Torus:
+            case mb::ShapeType::Cone:
+            case mb::ShapeType::Ellipsoid:
                 return nullptr;
         }
         return nullptr;
+    }
+    // The solid volume of each shape shapeOf gives Bullet: a compound's children share its mass
+    // by it, as Marchbox's uniform density does.
+    static double volumeOf(const mb::Object& o) {
+        const double r = o.radius, h = o.height;
+        switch (o.type) {
+            case mb::ShapeType::Sphere:
+                return 4.0 / 3.0 * M_PI * r * r * r;
+            case mb::ShapeType::Box:
+                return 8.0 * double(o.size.x) * double(o.size.y) * double(o.size.z);
+            case mb::ShapeType::Capsule:
+                return M_PI * r * r * (h + 4.0 / 3.0 * r);
+            case mb::ShapeType::Cylinder:
+                return M_PI * r * r * h;
+            default:
+                return 0.0;
+        }
     }
     void addBody(const mb::Object& o, const Scene& scene) {
         btCollisionShape* shape = shapeOf(o);
@@ -108,19 +139,58 @@ private:
         shapes_.emplace_back(shape);
         btVector3 inertia;
         shape->calculateLocalInertia(o.mass, inertia);
-        btRigidBody::btRigidBodyConstructionInfo info(o.mass, nullptr, shape, inertia);
-        info.m_startWorldTransform.setOrigin(btVector3(o.pos.x, o.pos.y, o.pos.z));
-        const glm::quat q = o.orientation();
-        info.m_startWorldTransform.setRotation(btQuaternion(q.x, q.y, q.z, q.w));
+        addRigid(shape, o.mass, inertia, transformOf(o.pos, o.orientation()), o.vel, o.spin, scene);
+    }
+    // A group of union members (nested groups and other ops have no compound): each member a
+    // child at its place in the group, the children's masses by their volumes. The compound is
+    // moved into its principal frame, as Bullet's bodies rotate about their origin and inertia
+    // axes; the body starts where that frame lies in the world.
+    void addGroup(const Scene& scene, int g) {
+        const mb::Group& group = scene.groups[size_t(g)];
+        btCompoundShape placed(false);
+        std::vector<btScalar> masses;
+        double volume = 0.0;
+        for (int i = group.first; i < mb::groupEnd(scene, g); ++i) {
+            const mb::Object& o = scene.objects[size_t(i)];
+            btCollisionShape* child =
+                o.group == g && o.op == mb::CsgOp::Union ? shapeOf(o) : nullptr;
+            if (!child) {
+                std::fprintf(stderr, "bullet_bench: group %s has a member Bullet cannot hold\n",
+                             group.name.c_str());
+                std::exit(1);
+            }
+            shapes_.emplace_back(child);
+            placed.addChildShape(transformOf(o.pos, o.orientation()), child);
+            masses.push_back(btScalar(volumeOf(o)));
+            volume += volumeOf(o);
+        }
+        for (btScalar& m : masses) m *= btScalar(group.mass / volume);
+        btTransform principal;
+        btVector3 inertia;
+        placed.calculatePrincipalAxisTransform(masses.data(), principal, inertia);
+        auto* compound = new btCompoundShape();
+        for (int k = 0; k < placed.getNumChildShapes(); ++k)
+            compound->addChildShape(principal.inverse() * placed.getChildTransform(k),
+                                    placed.getChildShape(k));
+        shapes_.emplace_back(compound);
+        addRigid(compound, group.mass, inertia,
+                 transformOf(group.pos, group.orientation()) * principal, group.vel, group.spin,
+                 scene);
+    }
+    // Each body's friction and restitution are the square roots of the world's: Bullet multiplies
+    // a pair's.
+    void addRigid(btCollisionShape* shape, float mass, const btVector3& inertia,
+                  const btTransform& start, glm::vec3 vel, glm::vec3 spin, const Scene& scene) {
+        btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, shape, inertia);
+        info.m_startWorldTransform = start;
         info.m_friction = std::sqrt(scene.world.friction);
         info.m_restitution = std::sqrt(scene.world.restitution);
         auto* body = new btRigidBody(info);
-        body->setLinearVelocity(btVector3(o.vel.x, o.vel.y, o.vel.z));
-        body->setAngularVelocity(btVector3(o.spin.x, o.spin.y, o.spin.z));
+        body->setLinearVelocity(btVector3(vel.x, vel.y, vel.z));
+        body->setAngularVelocity(btVector3(spin.x, spin.y, spin.z));
         body->setActivationState(DISABLE_DEACTIVATION);  // all bodies awake, as Marchbox's are
         world_.addRigidBody(body);
-        spheres_.push_back(body);
-        radii_.push_back(o.radius);
+        bodies_.push_back(body);
     }
 
     btDefaultCollisionConfiguration config_;
@@ -129,8 +199,7 @@ private:
     btSequentialImpulseConstraintSolver solver_;
     btDiscreteDynamicsWorld world_;
     std::vector<std::unique_ptr<btCollisionShape>> shapes_;
-    std::vector<btRigidBody*> spheres_;
-    std::vector<double> radii_;
+    std::vector<btRigidBody*> bodies_;
 };
 
 // The same probes on either engine, through a tiny adapter.
@@ -138,7 +207,15 @@ struct Engine {
     std::function<void()> step;
     std::function<glm::dvec3(int)> pos, vel;
     std::function<double()> kineticEnergy;
+    std::function<double()> meanHeight;  // of every dynamic body's centre of mass, m
 };
+
+double meanHeight(const mb::PhysicsWorld& w) {
+    double sum = 0.0;
+    for (int i = 0; i < w.bodyCount(); ++i) sum += w.body(i).pos.y;
+    for (int i = 0; i < w.rigidCount(); ++i) sum += w.rigid(i).centre.y;
+    return sum / double(w.bodyCount() + w.rigidCount());
+}
 
 struct MarchboxEngine {
     explicit MarchboxEngine(const Scene& s, const mb::PhysicsSettings& settings = {})
@@ -147,7 +224,7 @@ struct MarchboxEngine {
     Engine engine() {
         return {[this] { world.step(); }, [this](int i) { return world.body(i).pos; },
                 [this](int i) { return world.body(i).vel; },
-                [this] { return world.kineticEnergy(); }};
+                [this] { return world.kineticEnergy(); }, [this] { return meanHeight(world); }};
     }
 };
 
@@ -156,7 +233,8 @@ struct BulletEngine {
     BulletScene world;
     Engine engine() {
         return {[this] { world.step(); }, [this](int i) { return world.pos(i); },
-                [this](int i) { return world.vel(i); }, [this] { return world.kineticEnergy(); }};
+                [this](int i) { return world.vel(i); }, [this] { return world.kineticEnergy(); },
+                [this] { return world.meanHeight(); }};
     }
 };
 
@@ -254,16 +332,22 @@ PileResult pile(int count, float radius, double seconds, const Settings&... sett
     return {1e3 * busy / steps, deepest};
 }
 
-// ms per step over the first `seconds` of a scene, the steps alone timed.
+// ms per step over the first `seconds` of a scene, the steps alone timed, and where the bodies
+// are by then.
+struct StepRun {
+    double msPerStep, meanHeight;
+};
+
 template <class E, class... Settings>
-double timeSteps(const Scene& scene, double seconds, const Settings&... settings) {
+StepRun timeSteps(const Scene& scene, double seconds, const Settings&... settings) {
     E e(scene, settings...);
     Engine g = e.engine();
     const int steps = int(std::llround(seconds / kDt));
     const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < steps; ++i) g.step();
-    return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
-           steps;
+    const double busy =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return {1e3 * busy / steps, g.meanHeight()};
 }
 
 void row(const char* name, double marchbox, double bullet, const char* unit) {
@@ -337,14 +421,13 @@ void pileRows(float radius, const std::vector<int>& counts) {
         ratio([](auto& s, auto& l) { return l.bullet.msPerStep / s.bullet.msPerStep; }), kRounds);
 }
 
-// The walled pile of boxes, capsules, cylinders and spheres of about 0.2 m, first 1.5 s at
-// 1/120 s, one thread each and all awake (Marchbox's sleeping off; Bullet never deactivates
-// here): each engine once, in turn.
-struct MixedTimes {
-    double marchbox, bullet;
+// A scene's first 1.5 s at 1/120 s (the mixed pile's, the tables'), one thread each and all
+// awake (Marchbox's sleeping off; Bullet never deactivates here): each engine once, in turn.
+struct SideBySide {
+    StepRun marchbox, bullet;
 };
 
-MixedTimes timeMixed(const Scene& scene) {
+SideBySide timeAwake(const Scene& scene) {
     mb::PhysicsSettings awake;
     awake.sleep = false;
     return {timeSteps<MarchboxEngine>(scene, 1.5, awake), timeSteps<BulletEngine>(scene, 1.5)};
@@ -359,14 +442,14 @@ void mixedRows() {
     const Scene small = mb::mixedPileScene(1000, 7), large = mb::mixedPileScene(4000, 7);
     std::vector<double> ours[2], theirs[2], vsBullet, growth, bulletGrowth;
     for (int round = 0; round < kRounds; ++round) {
-        const MixedTimes s = timeMixed(small), l = timeMixed(large);
-        ours[0].push_back(s.marchbox);
-        theirs[0].push_back(s.bullet);
-        ours[1].push_back(l.marchbox);
-        theirs[1].push_back(l.bullet);
-        vsBullet.push_back(s.marchbox / s.bullet);
-        growth.push_back(l.marchbox / s.marchbox);
-        bulletGrowth.push_back(l.bullet / s.bullet);
+        const SideBySide s = timeAwake(small), l = timeAwake(large);
+        ours[0].push_back(s.marchbox.msPerStep);
+        theirs[0].push_back(s.bullet.msPerStep);
+        ours[1].push_back(l.marchbox.msPerStep);
+        theirs[1].push_back(l.bullet.msPerStep);
+        vsBullet.push_back(s.marchbox.msPerStep / s.bullet.msPerStep);
+        growth.push_back(l.marchbox.msPerStep / s.marchbox.msPerStep);
+        bulletGrowth.push_back(l.bullet.msPerStep / s.bullet.msPerStep);
     }
     std::printf(
         "\n| mixed pile, first 1.5 s, all awake (median of %d) | Marchbox | Bullet |\n"
@@ -382,22 +465,70 @@ void mixedRows() {
         *std::max_element(growth.begin(), growth.end()), median(bulletGrowth), kRounds);
 }
 
+// The walled pile of 400 tables, first 1.5 s, all awake, one thread each: time per step and the
+// tables' mean height at the end in each engine, and the ratio with its target (at most 1.5x
+// Bullet's compound step, the goal 0.75x). Three rounds, each engine in turn: the times and
+// heights are medians over them, the ratio the median of the rounds' own.
+void tableRows() {
+    constexpr int kRounds = 3, kTables = 400;
+    const Scene scene = mb::tablePileScene(kTables, 7);
+    std::vector<double> ours, theirs, ratio, ourHeight, theirHeight;
+    for (int round = 0; round < kRounds; ++round) {
+        const SideBySide t = timeAwake(scene);
+        ours.push_back(t.marchbox.msPerStep);
+        theirs.push_back(t.bullet.msPerStep);
+        ratio.push_back(t.marchbox.msPerStep / t.bullet.msPerStep);
+        ourHeight.push_back(t.marchbox.meanHeight);
+        theirHeight.push_back(t.bullet.meanHeight);
+    }
+    std::printf(
+        "\n| walled pile of %d tables, first 1.5 s, all awake (median of %d) | Marchbox | "
+        "Bullet |\n| --- | ---: | ---: |\n",
+        kTables, kRounds);
+    row("time per step", median(ours), median(theirs), " ms");
+    row("mean height of the tables' centres of mass at 1.5 s", median(ourHeight),
+        median(theirHeight), " m");
+    std::printf(
+        "\nTables, Marchbox's groups against Bullet's btCompoundShape: **%.2fx** its time per "
+        "step on one thread (target <= 1.5x, goal 0.75x; rounds %.2f-%.2fx), a median of the %d "
+        "rounds' ratios. Their mean height at the start: %.3f m.\n",
+        median(ratio), *std::min_element(ratio.begin(), ratio.end()),
+        *std::max_element(ratio.begin(), ratio.end()), kRounds,
+        meanHeight(mb::PhysicsWorld(scene)));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     // `bullet_bench pile COUNT [RADIUS]`: the pile alone, Marchbox then Bullet, one run each, for
     // timing them side by side (run it a few times and take the medians).
-    // `mixed COUNT`: the walled mixed pile alone (timeMixed), each engine once, the same way;
-    // `mixed`: the report's mixed-pile table alone.
+    // `mixed COUNT`: the walled mixed pile alone (timeAwake), each engine once, the same way;
+    // `mixed`: the report's mixed-pile table alone; `tables COUNT`: the table pile alone, the
+    // same way; `tables`: the report's table-pile table alone.
     if (argc == 2 && std::string(argv[1]) == "mixed") {
         mixedRows();
         return 0;
     }
+    if (argc == 2 && std::string(argv[1]) == "tables") {
+        tableRows();
+        return 0;
+    }
     if (argc > 2 && std::string(argv[1]) == "mixed") {
         const int count = std::atoi(argv[2]);
-        const MixedTimes t = timeMixed(mb::mixedPileScene(count, 7));
+        const SideBySide t = timeAwake(mb::mixedPileScene(count, 7));
         std::printf("mixed pile of %d: Marchbox %.3f ms/step, Bullet %.3f ms/step, ratio %.2f\n",
-                    count, t.marchbox, t.bullet, t.marchbox / t.bullet);
+                    count, t.marchbox.msPerStep, t.bullet.msPerStep,
+                    t.marchbox.msPerStep / t.bullet.msPerStep);
+        return 0;
+    }
+    if (argc > 2 && std::string(argv[1]) == "tables") {
+        const int count = std::atoi(argv[2]);
+        const SideBySide t = timeAwake(mb::tablePileScene(count, 7));
+        std::printf(
+            "%d tables: Marchbox %.3f ms/step, Bullet %.3f ms/step, ratio %.2f; mean height "
+            "%.3f m, %.3f m\n",
+            count, t.marchbox.msPerStep, t.bullet.msPerStep,
+            t.marchbox.msPerStep / t.bullet.msPerStep, t.marchbox.meanHeight, t.bullet.meanHeight);
         return 0;
     }
     if (argc > 2 && std::string(argv[1]) == "pile") {
@@ -435,5 +566,6 @@ int main(int argc, char** argv) {
     pileRows(0.2f, {1000, 4000, 10000});
     pileRows(0.1f, {1000, 4000});
     mixedRows();
+    tableRows();
     return 0;
 }

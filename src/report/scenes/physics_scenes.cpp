@@ -26,6 +26,20 @@ float sphereMass(float radius) {
     return kDensity * 4.0f / 3.0f * float(M_PI) * radius * radius * radius;
 }
 
+// pileScene's walled bin, about 8 layers deep, for bodies `spacing` apart: `side` by `side` in
+// each layer, body i in column x, layer y and row z of cell(i).
+struct Bin {
+    int side;
+    float spacing;
+    glm::ivec3 cell(int i) const { return {i % side, i / (side * side), (i / side) % side}; }
+    // Body i's centre, the lowest layer's `lift` above the ground.
+    glm::vec3 place(int i, float lift) const {
+        const glm::ivec3 c = cell(i);
+        return {spacing * (float(c.x) - 0.5f * float(side - 1)), lift + spacing * float(c.y),
+                spacing * (float(c.z) - 0.5f * float(side - 1))};
+    }
+};
+
 }  // namespace
 
 Scene physicsWorld(float gravity, float restitution, float friction, bool ground) {
@@ -70,6 +84,19 @@ void addWalls(Scene& scene, float inner, float height, float thickness) {
     scene.objects.push_back(staticBox({0, h, off}, {len, h, t}));
     scene.objects.push_back(staticBox({0, h, -off}, {len, h, t}));
 }
+
+namespace {
+
+// Walls about a bin for `count` bodies `spacing` apart and of size about r: 0.3·r of room beside
+// the outer ones, half as high as the bodies stack and one spacing more.
+Bin addBin(Scene& scene, int count, float spacing, float r) {
+    const int side = std::max(2, int(std::ceil(std::sqrt(count / 8.0f))));
+    const float inner = 0.5f * spacing * float(side) + 0.3f * r;
+    addWalls(scene, inner, 0.5f * spacing * float(count / (side * side) + 2), 0.1f);
+    return {side, spacing};
+}
+
+}  // namespace
 
 Scene freeFallScene(float height) {
     Scene s = physicsWorld(9.81f, 0.0f, 0.0f, false);
@@ -160,7 +187,11 @@ Scene cradleScene(int count, float speed) {
     return s;
 }
 
-Scene slopeScene(float degrees, float friction, Object body) {
+namespace {
+
+// The slope of slopeScene and tubeSlopeScene, without its body; `*place` is the point `lift`
+// above its top face, 3 m up the slope from its middle.
+Scene plankScene(float degrees, float friction, float lift, glm::vec3* place) {
     Scene s = physicsWorld(9.81f, 0.0f, friction, false);
     s.world.rolling = 0.0f;
     Object plank = staticBox({}, {20.0f, 0.5f, 2.0f});
@@ -168,10 +199,34 @@ Scene slopeScene(float degrees, float friction, Object body) {
     s.objects.push_back(plank);
     const float t = degrees * float(M_PI) / 180.0f;
     const glm::vec3 along(std::cos(t), std::sin(t), 0.0f), up(-std::sin(t), std::cos(t), 0.0f);
-    const float lift = 0.5f + (body.type == ShapeType::Box ? body.size.y : body.radius);
-    body.pos = 3.0f * along + lift * up;
+    *place = 3.0f * along + (0.5f + lift) * up;
+    return s;
+}
+
+}  // namespace
+
+Scene slopeScene(float degrees, float friction, Object body) {
+    const float lift = body.type == ShapeType::Box ? body.size.y : body.radius;
+    Scene s = plankScene(degrees, friction, lift, &body.pos);
     if (body.type == ShapeType::Box) body.rot = {0.0f, 0.0f, degrees};
     s.objects.push_back(body);
+    return s;
+}
+
+Scene tubeSlopeScene(float degrees, float friction, float outer, float inner) {
+    glm::vec3 place;
+    Scene s = plankScene(degrees, friction, outer, &place);
+    const int g = addGroup(s, "tube", place, {90.0f, 0.0f, 0.0f}, 1.0f);
+    Object wall;
+    wall.type = ShapeType::Cylinder;
+    wall.radius = outer;
+    wall.height = 0.6f;
+    Object bore = wall;
+    bore.radius = inner;
+    bore.height = 0.8f;  // longer: no skin left over either end
+    bore.op = CsgOp::Subtract;
+    addMember(s, g, wall);
+    addMember(s, g, bore);
     return s;
 }
 
@@ -251,19 +306,13 @@ Scene pileScene(int count, std::uint32_t seed, float r) {
 Scene mixedPileScene(int count, std::uint32_t seed, float r) {
     Scene s = physicsWorld(9.81f, 0.3f, 0.5f, true);
     Lcg rng{seed};
-    const float spacing = 2.4f * r;
-    const int side = std::max(2, int(std::ceil(std::sqrt(count / 8.0f))));
-    const float inner = 0.5f * spacing * float(side) + 0.3f * r;
-    addWalls(s, inner, 0.5f * spacing * float(count / (side * side) + 2), 0.1f);
+    const Bin bin = addBin(s, count, 2.4f * r, r);
     const ShapeType types[4] = {ShapeType::Box, ShapeType::Capsule, ShapeType::Cylinder,
                                 ShapeType::Sphere};
     for (int i = 0; i < count; ++i) {
-        const int layer = i / (side * side), row = (i / side) % side, col = i % side;
-        Object o = dynamicSphere(
-            {spacing * (float(col) - 0.5f * float(side - 1)), r + 0.5f * r + spacing * float(layer),
-             spacing * (float(row) - 0.5f * float(side - 1))},
-            r * rng.range(0.8f, 1.0f), 1.0f);
-        o.type = types[(col + row + layer) % 4];
+        Object o = dynamicSphere(bin.place(i, r + 0.5f * r), r * rng.range(0.8f, 1.0f), 1.0f);
+        const glm::ivec3 cell = bin.cell(i);
+        o.type = types[(cell.x + cell.y + cell.z) % 4];
         o.size = glm::vec3(0.7f * o.radius);
         o.height = o.radius;
         if (o.type == ShapeType::Capsule) o.radius *= 0.5f;
@@ -295,25 +344,34 @@ Scene gasScene(int count, std::uint32_t seed) {
     return s;
 }
 
-void addCup(Scene& scene, glm::vec3 pos, float radius, float mass, glm::vec3 rot) {
+int addGroup(Scene& scene, const std::string& name, glm::vec3 pos, glm::vec3 rot, float mass) {
     Group g;
-    g.name = "cup" + std::to_string(scene.groups.size());
+    g.name = name + std::to_string(scene.groups.size());
     g.first = int(scene.objects.size());
     g.pos = pos;
     g.rot = rot;
     g.mass = mass;
     scene.groups.push_back(g);
+    return int(scene.groups.size()) - 1;
+}
+
+void addMember(Scene& scene, int group, Object member) {
+    member.group = group;
+    scene.objects.push_back(member);
+}
+
+void addCup(Scene& scene, glm::vec3 pos, float radius, float mass, glm::vec3 rot) {
+    const int g = addGroup(scene, "cup", pos, rot, mass);
     Object outer;
     outer.type = ShapeType::Cylinder;
     outer.radius = radius;
     outer.height = 1.6f * radius;
-    outer.group = int(scene.groups.size()) - 1;
     Object inner = outer;
     inner.radius = 0.88f * radius;
     inner.pos = {0.0f, 0.12f * radius, 0.0f};
     inner.op = CsgOp::Subtract;
-    scene.objects.push_back(outer);
-    scene.objects.push_back(inner);
+    addMember(scene, g, outer);
+    addMember(scene, g, inner);
 }
 
 // Cups 2.6·r apart, their bounding spheres' (1.28·r) width whatever their turn, and balls
@@ -345,6 +403,68 @@ Scene cupPileScene(int cups, int balls, std::uint32_t seed, float r, bool walls)
                            top + 2.5f * ball * float(layer),
                            0.5f * spacing * (float(row) - 0.5f * float(2 * side - 1))},
                           ball * rng.range(0.9f, 1.0f), sphereMass(ball)));
+    }
+    return s;
+}
+
+Scene holedBoxScene(const HoledBox& h) {
+    Scene s = physicsWorld(9.81f, 0.3f, 0.5f, true);
+    const int g = addGroup(s, "holed", {0.0f, 1.0f, 0.0f}, glm::vec3(0.0f), h.mass);
+    addMember(s, g, dynamicBox({}, glm::vec3(h.half)));
+    Object hole;
+    hole.type = ShapeType::Cylinder;
+    hole.pos = {float(h.offset), 0.0f, 0.0f};
+    hole.radius = float(h.radius);
+    hole.height = float(2.0 * h.half.y + 0.4);  // through, and 0.2 m out of either face
+    hole.op = CsgOp::Subtract;
+    addMember(s, g, hole);
+    return s;
+}
+
+// The box's moments less the cylinder's (2·b long inside it): V = 8abc − π·r²·2b; the hole's
+// centre shifts s_x; S_xx of the hole is its own r²/4 per volume plus the offset's d².
+SolidMoments holedBoxMoments(const HoledBox& h) {
+    const glm::dvec3 e = h.half;
+    const double r = h.radius, d = h.offset;
+    const double box = 8.0 * e.x * e.y * e.z, hole = M_PI * r * r * 2.0 * e.y;
+    SolidMoments m;
+    m.volume = box - hole;
+    m.first = {-hole * d, 0.0, 0.0};
+    m.second = glm::dmat3(0.0);
+    m.second[0][0] = box * e.x * e.x / 3.0 - hole * (r * r / 4.0 + d * d);
+    m.second[1][1] = box * e.y * e.y / 3.0 - hole * e.y * e.y / 3.0;
+    m.second[2][2] = box * e.z * e.z / 3.0 - hole * r * r / 4.0;
+    return m;
+}
+
+// The table's origin halfway up it: the top, r × 0.1·r × 0.7·r (half extents), from 0.5·r to
+// 0.7·r; legs of radius 0.1·r from −0.7·r up to the top's underside, 0.8·r and 0.5·r in from the
+// middle along x and z. The legs' boxes only touch the top's, so the mass comes in closed form.
+// All of it lies within 1.42·r of the origin.
+void addTable(Scene& scene, glm::vec3 pos, glm::vec3 rot, float r, float mass) {
+    const int g = addGroup(scene, "table", pos, rot, mass);
+    addMember(scene, g, dynamicBox({0.0f, 0.6f * r, 0.0f}, {r, 0.1f * r, 0.7f * r}));
+    for (const float x : {-0.8f * r, 0.8f * r})
+        for (const float z : {-0.5f * r, 0.5f * r}) {
+            Object o;
+            o.type = ShapeType::Cylinder;
+            o.pos = {x, -0.1f * r, z};
+            o.radius = 0.1f * r;
+            o.height = 1.2f * r;
+            addMember(scene, g, o);
+        }
+}
+
+// Tables 3·r apart in every direction, clear of one another whatever their turn, 8 layers deep
+// as in pileScene, each turned at random.
+Scene tablePileScene(int count, std::uint32_t seed, float r) {
+    Scene s = physicsWorld(9.81f, 0.3f, 0.5f, true);
+    Lcg rng{seed};
+    const Bin bin = addBin(s, count, 3.0f * r, r);
+    for (int i = 0; i < count; ++i) {
+        const glm::vec3 rot(rng.range(0.0f, 180.0f), rng.range(0.0f, 180.0f),
+                            rng.range(0.0f, 180.0f));
+        addTable(s, bin.place(i, 1.5f * r), rot, r, 1.0f);
     }
     return s;
 }
