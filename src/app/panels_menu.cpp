@@ -111,6 +111,18 @@ static void duplicateToPlace(UiContext& c) {
     if (c.editor.duplicateSelected(deleteMessage(c))) c.ui.placeCopies = true;
 }
 
+// Ctrl+C and Ctrl+V go through the system clipboard as scene text, so they also work between
+// two windows and with a text editor.
+static void copySelection(UiContext& c) {
+    const std::string text = c.editor.copySelection();
+    if (!text.empty()) ImGui::SetClipboardText(text.c_str());
+}
+
+static void pasteClipboard(UiContext& c) {
+    const char* text = ImGui::GetClipboardText();
+    c.editor.paste(text ? text : "", objectsMessage(c));
+}
+
 static void editMenu(UiContext& c) {
     Editor& e = c.editor;
     const History& h = e.document().history();
@@ -134,6 +146,9 @@ static void editMenu(UiContext& c) {
     }
     if (menuItem("Edit", "Duplicate", "Shift+D", false, !e.selection().empty()))
         duplicateToPlace(c);
+    if (menuItem("Edit", "Copy", "Ctrl+C", false, !treeItems(e.selection()).empty()))
+        copySelection(c);
+    if (menuItem("Edit", "Paste", "Ctrl+V")) pasteClipboard(c);
     if (menuItem("Edit", "Delete selected", "Del", false, !e.selection().empty()))
         e.removeSelected(deleteMessage(c));
     ImGui::Separator();
@@ -321,6 +336,12 @@ static void ctrlShortcut(UiContext& c, const KeyPress& k) {
     switch (k.key) {
         case GLFW_KEY_A:
             c.editor.selectAll();
+            break;
+        case GLFW_KEY_C:
+            copySelection(c);
+            break;
+        case GLFW_KEY_V:
+            pasteClipboard(c);
             break;
         case GLFW_KEY_G:  // Blender's: Ctrl+G a new collection, Ctrl+Alt+G out of it
             if (k.mods & GLFW_MOD_ALT) c.editor.ungroupSelected(objectsMessage(c));

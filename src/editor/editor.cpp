@@ -3,6 +3,7 @@
 
 #include "marchbox/editor/camera_control.h"
 #include "marchbox/editor/camera_keys.h"
+#include "marchbox/editor/clipboard.h"
 #include "marchbox/editor/events.h"
 #include "marchbox/editor/files.h"
 #include "marchbox/editor/picking.h"
@@ -487,6 +488,22 @@ bool Editor::removeSelected(std::string* why) {
         *r = eraseItems(s, items);
         return true;
     });
+}
+
+std::string Editor::copySelection() const {
+    std::string text = copyText(scene(), treeItems(sel_));
+    if (!text.empty()) emitEvent("copy " + describe(sel_));
+    return text;
+}
+
+bool Editor::paste(const std::string& text, std::string* why) {
+    std::vector<Item> pasted;
+    if (!tryEdit(*this, "Paste", [&](Scene& s) { return pasteText(s, text, &pasted, why); })) {
+        emitEvent("refuse " + *why);
+        return false;
+    }
+    selectItems(pasted, false);
+    return true;
 }
 
 bool Editor::duplicateSelected(std::string* why) {

@@ -104,7 +104,7 @@ static Material numberedMaterial(const Scene& s) {
     return m;
 }
 
-static bool hasRoom(const Scene& s, ItemKind k, int extra, std::string* why) {
+bool hasRoom(const Scene& s, ItemKind k, int extra, std::string* why) {
     if (itemCount(s, k) + extra <= itemLimit(k)) return true;
     *why = "a scene holds at most " + std::to_string(itemLimit(k)) + " " + itemKindName(k) + "s";
     return false;
@@ -166,6 +166,11 @@ bool nameUsed(const Scene& s, ItemKind k, const std::string& name) {
         case ItemKind::Light: return false;
     }
     return false;
+}
+
+std::string unusedName(const Scene& s, ItemKind k, const std::string& name) {
+    auto used = [&](const std::string& n) { return nameUsed(s, k, n); };
+    return used(name) ? copyName(name, used) : name;
 }
 
 int duplicateItem(Scene& s, ItemKind k, int index, std::string* why) {

@@ -53,8 +53,9 @@ class Editor:
     """One running marchbox and the person at its keyboard."""
     started = []  # every one, so that main() ends those a failed case left running
 
-    def __init__(self, binary, scene, workdir, size=None, **env_extra):
-        """scene: the file to open, or None for none; size: the window's, WINDOW unless given."""
+    def __init__(self, binary, scene, workdir, size=None, title='^Marchbox', **env_extra):
+        """scene: the file to open, or None for none; size: the window's, WINDOW unless given;
+        title: how to tell its window from another's."""
         size = size or WINDOW
         self.workdir = workdir
         # Its own config folder: the recent files list of the person running the tests stays out.
@@ -69,7 +70,7 @@ class Editor:
         Editor.started.append(self)
         self.seen = 0  # events consumed by wait()
         self.wait('ready', timeout=90)
-        self.wid = xdotool('search', '--sync', '--name', '^Marchbox').split()[0]
+        self.wid = xdotool('search', '--sync', '--name', title).split()[0]
         xdotool('windowfocus', '--sync', self.wid)
         self.move(size[0] // 2, size[1] - 60)  # over the view, above the timeline
 
@@ -1579,6 +1580,37 @@ def case_duplicate(app, scene):
     check(aside == [placed[0] + 1, placed[1], placed[2]] or
           max(abs(a - b) for a, b in zip(aside, [placed[0] + 1, placed[1], placed[2]])) < 1e-4,
           'Esc left the copy at %s, not beside %s' % (aside, placed))
+    app.key('ctrl+q')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def case_paste(app, scene):
+    """Ctrl+A and Ctrl+C in one window, Ctrl+V in a second: the three objects arrive where they
+    stood, as the first window's scene text; Ctrl+Z there takes them back out."""
+    other = os.path.join(app.workdir, 'other.txt')
+    with open(other, 'w') as f:
+        f.write('scene version:3\ncamera pos:2,2.5,-6.5 target:2,1,0 fov:45\nlight pos:3,6,-4\n'
+                'material name:grey r:0.5 g:0.5 b:0.5\n')
+    app.key('ctrl+a')
+    app.wait('select ')
+    app.key('ctrl+c')
+    check(app.wait('copy ').startswith('copy 3 items'), 'Ctrl+C did not copy the three objects')
+    os.makedirs(os.path.join(app.workdir, 'second'))
+    second = Editor(MARCHBOX, other, os.path.join(app.workdir, 'second'), title='other.txt')
+    second.key('ctrl+v')
+    second.wait('edit Paste')
+    second.screenshot()
+    second.save()
+    check(scene_values(other, 'object', 'pos') == scene_values(scene, 'object', 'pos'),
+          'pasted at %s' % scene_values(other, 'object', 'pos'))
+    names = [r.get('name') for r in records(other, 'material')]
+    check(names == ['grey', 'red', 'blue'], 'the materials are %s' % names)
+    second.key('ctrl+z')
+    check(second.wait('undo ') == 'undo Paste', 'Ctrl+Z did not undo the paste')
+    second.key('ctrl+q')
+    second.wait('ask exit')
+    second.click_widget("Unsaved changes/Don't save")
+    check(second.finish() == 0, 'the second window did not exit')
     app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 

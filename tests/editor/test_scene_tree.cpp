@@ -1,5 +1,6 @@
 // test_scene_tree.cpp — edits of the object tree keep the scene in tree order, every item where
 // it stands in the world, and the file loading.
+#include "marchbox/editor/clipboard.h"
 #include "marchbox/editor/scene_tree.h"
 #include "marchbox/scene/scene_io.h"
 
@@ -313,4 +314,74 @@ TEST(SceneTree, EveryEditKeepsTheTreeInOrderAndTheFileLoading) {
         }
         ASSERT_EQ(problems(s), "") << "after step " << step;
     }
+}
+
+//-----------------------------------------------------------------------------
+// Copy and paste as scene text
+//-----------------------------------------------------------------------------
+static void expectSamePose(const Placement& a, const Placement& b) {
+    EXPECT_NEAR(glm::distance(a.pos, b.pos), 0.0f, 1e-5f);
+    EXPECT_NEAR(std::abs(glm::dot(a.turn, b.turn)), 1.0f, 1e-6f);
+}
+
+TEST(Clipboard, ACopyPastedIntoAnotherSceneStandsWhereItStood) {
+    const Scene from = load(kCupScene);
+    const std::string text = copyText(from, {group(0), object(4)});
+    Scene to = load("scene version:3\nmaterial name:steel r:0.5 g:0.5 b:0.5\n"
+                    "object type:sphere pos:0,1,0\n");
+    std::vector<Item> pasted;
+    std::string why;
+    ASSERT_TRUE(pasteText(to, text, &pasted, &why)) << why;
+    EXPECT_EQ(layout(to), " outer/cup ring/handle inner/cup b | cup@1 handle<cup@2");
+    EXPECT_EQ(pasted, (std::vector<Item>{group(0), object(4)}));
+    EXPECT_EQ(problems(to), "");
+    expectSamePose(itemPose(to, object(3)), itemPose(from, object(3)));  // inner, two deep
+    EXPECT_EQ(to.materials.size(), 2u);  // the cup's red came along
+    EXPECT_EQ(to.materials[size_t(to.objects[1].material)].color, glm::vec3(1, 0, 0));
+    EXPECT_EQ(to.groups[0].mass, 2.0f);  // the body's keys too
+}
+
+TEST(Clipboard, AMemberCopiedAloneComesOutWhereItStandsInTheWorld) {
+    const Scene from = load(kCupScene);
+    Scene to = load("scene version:3\nmaterial r:1 g:0 b:0\n");
+    std::vector<Item> pasted;
+    std::string why;
+    ASSERT_TRUE(pasteText(to, copyText(from, {object(2)}), &pasted, &why)) << why;
+    ASSERT_EQ(to.objects.size(), 1u);
+    EXPECT_EQ(to.objects[0].group, -1);
+    expectSamePose(itemPose(to, object(0)), itemPose(from, object(2)));
+    EXPECT_EQ(to.materials.size(), 1u);  // "material0" in both: matched by name
+}
+
+TEST(Clipboard, PastedIntoItsOwnSceneTheCopiesTakeFreshNames) {
+    Scene s = load(kCupScene);
+    std::vector<Item> pasted;
+    std::string why;
+    ASSERT_TRUE(pasteText(s, copyText(s, {group(0)}), &pasted, &why)) << why;
+    EXPECT_EQ(layout(s), "a outer/cup ring/handle inner/cup b outer.001/cup.001 "
+                         "ring.001/handle.001 inner.001/cup.001 | cup@1 handle<cup@2 empty@4 "
+                         "cup.001@5 handle.001<cup.001@6");
+    EXPECT_EQ(problems(s), "");
+}
+
+TEST(Clipboard, RecordsTypedWithoutAHeaderPasteAsTheCurrentVersion) {
+    Scene s = load(kCupScene);
+    std::vector<Item> pasted;
+    std::string why;
+    ASSERT_TRUE(pasteText(s, "object type:box pos:1,2,3 name:typed\n", &pasted, &why)) << why;
+    ASSERT_EQ(pasted, std::vector<Item>{object(5)});
+    EXPECT_TRUE(s.objects[5].dynamic());  // version 1 would load a box static
+    EXPECT_EQ(s.objects[5].pos, glm::vec3(1, 2, 3));
+}
+
+TEST(Clipboard, TextThatIsNoSceneIsRefusedAndChangesNothing) {
+    Scene s = load(kCupScene);
+    const std::string before = formatScene(s);
+    std::vector<Item> pasted;
+    std::string why;
+    EXPECT_FALSE(pasteText(s, "hello there\n", &pasted, &why));
+    EXPECT_EQ(why.rfind("the clipboard holds no scene text (line 1: ", 0), 0u) << why;
+    EXPECT_FALSE(pasteText(s, "camera pos:0,1,-5 target:0,0,0\n", &pasted, &why));
+    EXPECT_EQ(why, "the clipboard's scene text holds no objects");
+    EXPECT_EQ(formatScene(s), before);
 }

@@ -107,6 +107,10 @@ public:
     enum class Pick { Replace, Climb, Toggle };
     int pick(glm::vec2 pixel, glm::vec2 viewSize, Pick how = Pick::Replace);
     bool removeSelected(std::string* why);     // everything selected, one step
+    // Ctrl+C: the selected objects and groups as scene text (copyText); "" for none.
+    std::string copySelection() const;
+    // Ctrl+V: scene text's objects and groups added (pasteText) as one step, and selected.
+    bool paste(const std::string& text, std::string* why);
     bool duplicateSelected(std::string* why);  // selects the copies
     // A Ctrl drag over the ground: the item's centre to `pos` in the world, one undo step.
     void placeItem(Item it, glm::vec3 pos, uint64_t mergeKey);

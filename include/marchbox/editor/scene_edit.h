@@ -29,6 +29,8 @@ struct Item {
 const char* itemKindName(ItemKind k);  // "object", "material", "light", "group"
 int itemCount(const Scene& s, ItemKind k);
 int itemLimit(ItemKind k);  // kMaxObjects, kMaxMaterials, kMaxLights, kMaxGroups
+// Whether `extra` more items of kind k fit; otherwise *why says the limit.
+bool hasRoom(const Scene& s, ItemKind k, int extra, std::string* why);
 
 Object defaultObject();      // a dynamic sphere of radius 0.5, 2 m above the origin
 Material defaultMaterial();  // light grey, the format's default coefficients
@@ -60,6 +62,8 @@ int duplicateItem(Scene& s, ItemKind k, int index, std::string* why);
 std::string copyName(const std::string& name, const std::function<bool(const std::string&)>& used);
 // Whether an object, a group or a material (by kind) already has that name.
 bool nameUsed(const Scene& s, ItemKind k, const std::string& name);
+// `name` where no item of kind k has it, else copyName's next free one.
+std::string unusedName(const Scene& s, ItemKind k, const std::string& name);
 
 // Removes item `index`, and the comment lines above it in the file; a group with everything in
 // it. Deleting a material renumbers the objects' indices; objects that used it take material 0.
