@@ -172,18 +172,19 @@ static void motionFields(R& r, const char* what, const World& w, FieldEdit& e) {
     ownFloat("restitution", Field::Restitution, &r.restitution, w.restitution, e);
     fieldVec3("vel", Field::Velocity, &r.vel, e);
     fieldVec3("spin", Field::Spin, &r.spin, e);
-    if (!r.dynamic()) ImGui::TextDisabled("static %s: tick dynamic, with a mass, to move it", what);
+    if (!r.dynamic())
+        hintLine(std::string("static ") + what + ": tick dynamic, with a mass, to move it");
 }
 
 static void memberNote(const Scene& s, int group) {
-    ImGui::TextDisabled("in group %s: moves with it; pos and rot are in its frame",
-                        s.groups[size_t(group)].name.c_str());
+    hintLine("in group " + s.groups[size_t(group)].name +
+             ": moves with it; pos and rot are in its frame");
 }
 
 // With more than the active item selected, a field edited goes to each of them.
 static void selectionNote(UiContext& c) {
     const size_t n = treeItems(c.editor.selection()).size();
-    if (n > 1) ImGui::TextDisabled("%zu selected: a field edited is set on each", n);
+    if (n > 1) hintLine(std::to_string(n) + " selected: a field edited is set on each");
 }
 
 // place: the Objects panel or the object popup, whichever shows the fields.

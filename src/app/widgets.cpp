@@ -217,6 +217,12 @@ void fieldErrorLine(const std::string& error) {
     ImGui::PopStyleColor();
 }
 
+void hintLine(const std::string& hint) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", hint.c_str());
+    ImGui::PopStyleColor();
+}
+
 std::string itemPath(const char* label) {
     return std::string(ImGui::GetCurrentWindowRead()->Name) + "/" + label;
 }

@@ -41,6 +41,9 @@ void itemTooltip(const std::string& name, const std::string& text);
 // one.
 void fieldErrorLine(const std::string& error);
 
+// A hint in the panel's faint text, wrapped at the window's edge rather than cut off there.
+void hintLine(const std::string& hint);
+
 // A dialog's status under its fields, wrapped, marked as `name`; scrolled into sight when it
 // changes (*shown: the status last drawn), since a panel short of room clips its last lines.
 void statusLine(const std::string& status, std::string* shown, const std::string& name);
