@@ -311,7 +311,7 @@ static void moveButtons(UiContext& c, Item chosen, std::string* why) {
 static void objectButtons(UiContext& c) {
     Editor& e = c.editor;
     std::string* why = c.ui.messages.at(Place::Objects);
-    if (ImGui::Button("Add")) e.add(ItemKind::Object, why);
+    if (ImGui::Button("Add")) e.add(ItemKind::Object, why, ShapeType::Sphere, viewWindow(c.ui));
     markItem(itemPath("Add"));
     ImGui::SameLine();
     ImGui::BeginDisabled(treeItems(e.selection()).empty());

@@ -138,7 +138,8 @@ static void editMenu(UiContext& c) {
     if (ImGui::BeginMenu("Add")) {  // on the ground below the camera's target, clear of others
         std::string* why = c.ui.messages.at(Place::Status);
         for (int t = 0; t < kShapeTypeCount; ++t)
-            if (menuItem("Add", kShapeMenuNames[t])) e.add(ItemKind::Object, why, ShapeType(t));
+            if (menuItem("Add", kShapeMenuNames[t]))
+                e.add(ItemKind::Object, why, ShapeType(t), viewWindow(c.ui));
         if (menuItem("Add", "Light")) e.add(ItemKind::Light, why);
         ImGui::EndMenu();
     } else {
@@ -191,12 +192,11 @@ static void toggleFog(UiContext& c) {
     emitEvent(std::string("refuse ") + kNoFog);
 }
 
-// Frame all (Home) and Frame selected (numpad .), for the view's own shape. With nothing to
-// frame the status line says so rather than nothing happening.
+// Frame all (Home) and Frame selected (numpad .), into the part of the view no panel covers.
+// With nothing to frame the status line says so rather than nothing happening.
 static void frameView(UiContext& c, bool all) {
-    const ImVec2 size = ImGui::GetIO().DisplaySize;
-    const float aspect = size.y > 0.0f ? size.x / size.y : 1.0f;
-    if (all ? c.editor.frameAll(aspect) : c.editor.frameSelected(aspect)) {
+    const ViewWindow view = viewWindow(c.ui);
+    if (all ? c.editor.frameAll(view) : c.editor.frameSelected(view)) {
         emitEvent(all ? "frame all" : "frame selected");
         return;
     }

@@ -125,6 +125,8 @@ float timelineBarHeight(const UiState& ui);
 
 // [widgets.cpp] The room the docked panels and the statistics overlay have this frame.
 PanelFrame panelFrame(const UiState& ui);
+// The part of the view no panel covers (uncoveredRoom()), for framing and for Add.
+ViewWindow viewWindow(const UiState& ui);
 
 // [panels_view.cpp] camera, render settings, debug views, help, statistics, shader log.
 void drawViewWindows(UiContext& c);

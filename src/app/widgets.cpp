@@ -304,6 +304,16 @@ PanelFrame panelFrame(const UiState& ui) {
             ui.statsBottom};
 }
 
+ViewWindow viewWindow(const UiState& ui) {
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    if (size.x <= 0.0f || size.y <= 0.0f) return {};
+    const PanelRect r = uncoveredRoom(panelFrame(ui), ui.openPanels());
+    // Window pixels run right and down from the top-left; the view's units right and up.
+    return {size.x / size.y,
+            {2.0f * r.x / size.x - 1.0f, 1.0f - 2.0f * (r.y + r.height) / size.y},
+            {2.0f * (r.x + r.width) / size.x - 1.0f, 1.0f - 2.0f * r.y / size.y}};
+}
+
 bool beginPanel(UiContext& c, Panel p, const char* title, bool* open) {
     const PanelFrame frame = panelFrame(c.ui);
     const PanelRect r = layoutPanels(frame, c.ui.openPanels())[size_t(p)];

@@ -79,28 +79,64 @@ int solidAroundEye(const Scene& scene, glm::vec3 eye) {
     return m.d < 0.0f ? m.object : kHitNone;
 }
 
-// Half the view's angle across (x) and up (y): tan of the vertical half angle is tan(fov/2),
-// the horizontal one's is `aspect` times that (cameraRay()).
-static glm::vec2 halfAngles(const Camera& c, float aspect) {
-    float t = std::tan(glm::radians(c.fov) * 0.5f);
-    return {std::atan(aspect * t), std::atan(t)};
+// The tangents of half the view's angle across (x) and up (y): tan(fov/2) up, `aspect` times
+// that across (cameraRay()).
+static glm::vec2 halfTangents(const Camera& c, float aspect) {
+    const float t = std::tan(glm::radians(c.fov) * 0.5f);
+    return {aspect * t, t};
 }
 
-bool ballInView(const Camera& c, const Ball& b, float aspect) {
-    CameraBasis basis = cameraBasis(c);
-    glm::vec3 d = b.centre - c.pos;
-    float z = glm::dot(d, basis.forward);
-    float x = glm::dot(d, glm::normalize(basis.right)), y = glm::dot(d, glm::normalize(basis.up));
-    glm::vec2 a = halfAngles(c, aspect);
-    // Each side of the view is a plane through the eye at angle a from the forward axis; the
-    // ball is inside when its centre is at least its radius inside every one.
-    auto inside = [&](float across, float half) {
-        return std::abs(across) * std::cos(half) + b.radius <= z * std::sin(half);
-    };
-    return inside(x, a.x) && inside(y, a.y);
+// How far (across, depth) lies inside the plane through the eye whose points have
+// across = tangent · depth, on the side of smaller `across`.
+static float insideEdge(float across, float depth, float tangent) {
+    return (tangent * depth - across) / std::sqrt(1.0f + tangent * tangent);
 }
 
-void frameBalls(Camera& c, const std::vector<Ball>& balls, float aspect, const CameraControls& k) {
+bool ballInView(const Camera& c, const Ball& b, const ViewWindow& w) {
+    const CameraBasis basis = cameraBasis(c);
+    const glm::vec3 d = b.centre - c.pos;
+    const float z = glm::dot(d, basis.forward);
+    const glm::vec2 across(glm::dot(d, glm::normalize(basis.right)),
+                           glm::dot(d, glm::normalize(basis.up)));
+    const glm::vec2 t = halfTangents(c, w.aspect);
+    // Each edge of the window is a plane through the eye; the ball is inside when its centre is
+    // at least its radius inside every one.
+    for (int axis = 0; axis < 2; ++axis)
+        if (insideEdge(across[axis], z, w.hi[axis] * t[axis]) < b.radius ||
+            -insideEdge(across[axis], z, w.lo[axis] * t[axis]) < b.radius)
+            return false;
+    return z > 0.0f;
+}
+
+glm::vec3 viewRay(const Camera& c, float aspect, glm::vec2 at) {
+    const CameraBasis b = cameraBasis(c);
+    const glm::vec2 t = halfTangents(c, aspect);
+    return b.forward + at.x * t.x * glm::normalize(b.right) + at.y * t.y * glm::normalize(b.up);
+}
+
+// The distance from the middle of the balls that fits them into a whole view whose half angles
+// are the window's: ballInView's test solved for the eye's distance d from the target, a ball
+// at (x, y, z) from it needing (d + z)·sin a ≥ |x|·cos a + r on each axis.
+static float fittingDistance(const Camera& c, const std::vector<Ball>& balls, const ViewWindow& w,
+                             float least) {
+    const CameraBasis basis = cameraBasis(c);
+    const glm::vec3 right = glm::normalize(basis.right), up = glm::normalize(basis.up);
+    const glm::vec2 t = halfTangents(c, w.aspect) * (w.hi - w.lo) * 0.5f;
+    float distance = least;
+    for (const Ball& b : balls) {
+        const glm::vec3 o = b.centre - c.target;
+        const float z = glm::dot(o, basis.forward);
+        for (int axis = 0; axis < 2; ++axis) {
+            const float a = std::atan(t[axis]);
+            const float across = std::abs(glm::dot(o, axis == 0 ? right : up));
+            distance = std::max(distance, (across * std::cos(a) + b.radius) / std::sin(a) - z);
+        }
+    }
+    return distance;
+}
+
+void frameBalls(Camera& c, const std::vector<Ball>& balls, const ViewWindow& w,
+                const CameraControls& k) {
     if (balls.empty()) return;
     glm::vec3 lo = balls[0].centre, hi = lo;
     for (const Ball& b : balls) {
@@ -109,25 +145,24 @@ void frameBalls(Camera& c, const std::vector<Ball>& balls, float aspect, const C
     }
     glm::vec3 back = c.pos - c.target;
     back = glm::length(back) > 0.0f ? glm::normalize(back) : glm::vec3(0.0f, 0.0f, -1.0f);
-    c.target = 0.5f * (lo + hi);
+    const glm::vec3 middle = 0.5f * (lo + hi);
+    c.target = middle;
     c.pos = c.target + back;
     const CameraBasis basis = cameraBasis(c);
-    const glm::vec3 right = glm::normalize(basis.right), up = glm::normalize(basis.up);
-    const glm::vec2 a = halfAngles(c, aspect);
-    // ballInView's test solved for the eye's distance d from the target: a ball at (x, y, z)
-    // from the target in the view's frame needs (d + z)·sin a ≥ |x|·cos a + r on each axis.
-    float distance = k.minDistance;
-    for (const Ball& b : balls) {
-        const glm::vec3 o = b.centre - c.target;
-        const float z = glm::dot(o, basis.forward);
-        for (int axis = 0; axis < 2; ++axis) {
-            const float across = std::abs(glm::dot(o, axis == 0 ? right : up));
-            const float need = (across * std::cos(a[axis]) + b.radius) / std::sin(a[axis]) - z;
-            distance = std::max(distance, need);
-        }
+    const glm::vec2 t = halfTangents(c, w.aspect), m = w.middle();
+    // Moved sideways so that the middle shows at the window's middle, which keeps the balls in
+    // the window only nearly (each is seen from a little aside): then back until all fit. 2%
+    // back from touching the edges, so what is framed is seen whole, not grazed.
+    float distance = fittingDistance(c, balls, w, k.minDistance) * 1.02f;
+    for (int tries = 0; tries < 40; ++tries, distance *= 1.05f) {
+        const float d = std::min(distance, k.maxDistance);
+        c.target = middle - d * (m.x * t.x * glm::normalize(basis.right) +
+                                 m.y * t.y * glm::normalize(basis.up));
+        c.pos = c.target + back * d;
+        const bool fits = std::all_of(balls.begin(), balls.end(),
+                                      [&](const Ball& b) { return ballInView(c, b, w); });
+        if (fits || d == k.maxDistance) return;
     }
-    // 2% back from touching the edges, so what is framed is seen whole, not grazed.
-    c.pos = c.target + back * std::min(distance * 1.02f, k.maxDistance);
 }
 
 }  // namespace mb

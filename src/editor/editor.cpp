@@ -254,14 +254,14 @@ static std::string itemsLabel(const std::string& verb, const std::vector<Item>& 
     return verb + " " + std::to_string(items.size()) + " items";
 }
 
-bool Editor::add(ItemKind k, std::string* why, ShapeType shape) {
+bool Editor::add(ItemKind k, std::string* why, ShapeType shape, const ViewWindow& view) {
     const bool object = k == ItemKind::Object;
     int index = -1;
     const std::string label = object ? shapeTypeName(shape) : itemKindName(k);
     bool ok = tryEdit(*this, "Add " + label, [&](Scene& s) {
         Object o = defaultObject();
         o.type = shape;
-        o.pos = object ? placeNewObject(s, o) : o.pos;  // clear of the others, not of itself
+        o.pos = object ? placeNewObject(s, o, view) : o.pos;  // clear of the others, not itself
         if ((index = addItem(s, k, why)) < 0) return false;
         if (object) s.objects[size_t(index)] = o;
         return true;
@@ -615,21 +615,21 @@ static std::vector<Ball> itemBalls(const Scene& s, const std::vector<Item>& item
     return balls;
 }
 
-bool Editor::frameSelected(float aspect) {
+bool Editor::frameSelected(const ViewWindow& view) {
     const Scene& s = scene();
     std::vector<Ball> balls = itemBalls(s, roots(s, treeItems(sel_)));
     const bool pointLight = sel_.kind == ItemKind::Light && sel_.index >= 0 &&
                             !s.lights[size_t(sel_.index)].directional;
     if (pointLight) balls.push_back({s.lights[size_t(sel_.index)].vec, kLightFrameRadius});
-    frameBalls(view(), balls, aspect);
+    frameBalls(this->view(), balls, view);
     return !balls.empty();
 }
 
-bool Editor::frameAll(float aspect) {
+bool Editor::frameAll(const ViewWindow& view) {
     std::vector<Item> all;
     for (size_t i = 0; i < scene().objects.size(); ++i) all.push_back({ItemKind::Object, int(i)});
     const std::vector<Ball> balls = itemBalls(scene(), all);
-    frameBalls(view(), balls, aspect);
+    frameBalls(this->view(), balls, view);
     return !balls.empty();
 }
 

@@ -58,4 +58,17 @@ std::array<PanelRect, kPanelCount> layoutPanels(const PanelFrame& frame, unsigne
     return out;
 }
 
+PanelRect uncoveredRoom(const PanelFrame& frame, unsigned open) {
+    const std::array<PanelRect, kPanelCount> rects = layoutPanels(frame, open);
+    float left = 0.0f, right = frame.width;
+    for (int p = 0; p < kPanelCount; ++p) {
+        if (!(open & panelBit(Panel(p)))) continue;
+        const PanelRect& r = rects[size_t(p)];
+        if (Panel(p) <= Panel::Lights) left = std::max(left, r.x + r.width + kPanelMargin);
+        else right = std::min(right, r.x - kPanelMargin);
+    }
+    if (right - left < 0.25f * frame.width) left = 0.0f, right = frame.width;
+    return {left, frame.top, right - left, std::max(frame.height - frame.top, 1.0f)};
+}
+
 }  // namespace mb

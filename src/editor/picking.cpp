@@ -65,14 +65,6 @@ static bool clearOf(const std::vector<SdfObject>& objects, glm::vec3 p, float ra
     return true;
 }
 
-// Inside the camera's cone, the vertical field of view (the narrower one) less a margin, so a
-// spot near the edge still shows whole.
-static bool inView(const Camera& c, glm::vec3 p) {
-    const glm::vec3 to = p - c.pos;
-    const float along = glm::dot(to, cameraBasis(c).forward);
-    return along > 0.0f && along >= glm::length(to) * std::cos(glm::radians(0.4f * c.fov));
-}
-
 // The spots about `centre` nearest first, in rings one `step` apart: ring k holds 6k spots, about
 // a step apart along it. The first that `fits` accepts, if any.
 template <typename Fits>
@@ -88,16 +80,27 @@ static bool nearestSpot(glm::vec3 centre, float step, Fits fits, glm::vec3* out)
     return false;
 }
 
-glm::vec3 placeNewObject(const Scene& scene, const Object& o) {
+// The ground spot, at height y, that the middle of the window shows; below the camera's target
+// where the ray through it misses the ground (the sky, or the ground above the eye).
+static glm::vec3 aimedSpot(const Camera& c, const ViewWindow& view, float y) {
+    const glm::vec3 ray = viewRay(c, view.aspect, view.middle());
+    const float along = ray.y != 0.0f ? (y - c.pos.y) / ray.y : -1.0f;
+    return along > 0.0f ? c.pos + along * ray : glm::vec3(c.target.x, y, c.target.z);
+}
+
+glm::vec3 placeNewObject(const Scene& scene, const Object& o, const ViewWindow& view) {
     const Camera& c = scene.camera;
     const float radius = boundingRadius(o);
-    const glm::vec3 centre(c.target.x, scene.world.floor + depthBelowCentre(o), c.target.z);
+    const glm::vec3 centre = aimedSpot(c, view, scene.world.floor + depthBelowCentre(o));
     SceneSdf sdf = makeSceneSdf(scene);
     const float step = std::max(radius, 0.01f);
     glm::vec3 spot;
     if (nearestSpot(
             centre, step,
-            [&](glm::vec3 p) { return clearOf(sdf.objects, p, radius) && inView(c, p); }, &spot) ||
+            [&](glm::vec3 p) {
+                return clearOf(sdf.objects, p, radius) && ballInView(c, {p, radius}, view);
+            },
+            &spot) ||
         nearestSpot(
             centre, step, [&](glm::vec3 p) { return clearOf(sdf.objects, p, radius); }, &spot))
         return spot;

@@ -25,7 +25,7 @@ HOLD = 0.4           # s a key or button stays down: longer than a slow frame
 # Cases that need another window or scene than the small default (paths from the source tree).
 # render: its dialog's fields and message all in sight above the timeline.
 SIZES = {'live': (1280, 720), 'panels': (960, 600), 'guide': (960, 540), 'render': (640, 440),
-         'cup': (1280, 720)}
+         'cup': (1280, 720), 'frame_all': (1280, 720)}
 SCENES = {'live': 'tests/e2e/live_scene.txt', 'slow_input': 'tests/e2e/slow_scene.txt'}
 UNTITLED = {'new_save_as'}  # cases that start the editor with no file named
 SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..')
@@ -1611,6 +1611,26 @@ def case_paste(app, scene):
     second.wait('ask exit')
     second.click_widget("Unsaved changes/Don't save")
     check(second.finish() == 0, 'the second window did not exit')
+    app.key('ctrl+q')
+    check(app.finish() == 0, 'exit status not 0')
+
+
+def case_frame_all(app, scene):
+    """Home with the Objects panel open frames every object in the part of the view beside it,
+    above the timeline; so does a capsule added then (Edit > Add). Saved, the camera says so."""
+    app.widget('Objects/Add', fresh=False)
+    right_edge = panel(app, 'Objects')[2]
+    app.move(WINDOW[0] * 3 // 4, WINDOW[1] // 2)
+    app.key('Home')
+    app.wait('frame all')
+    add_shape(app, 'capsule')
+    app.settle()
+    app.screenshot()
+    app.save()
+    for i, p in enumerate(scene_values(scene, 'object', 'pos')):
+        x, y = project(scene, p)
+        check(right_edge < x < WINDOW[0] and 20 < y < WINDOW[1] - 40,
+              'object %d shows at (%d, %d), under a panel or off the view' % (i, x, y))
     app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
 

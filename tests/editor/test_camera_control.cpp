@@ -111,6 +111,25 @@ TEST(CameraFraming, FrameAllFitsEveryBallFromTheSameDirection) {
     }
 }
 
+// Home with the Objects panel open put the dominoes under it: the balls go to the window beside
+// the panel, its middle at theirs, and none is cut by the window's edges.
+TEST(CameraFraming, FramingIntoAWindowFitsItAndCentresThere) {
+    const std::vector<Ball> balls = {{{-3, 0.5f, 0}, 0.5f}, {{4, 2, 1}, 1}, {{0, 6, -2}, 0.3f}};
+    const ViewWindow right(kWide, {-0.4f, -0.9f}, {1.0f, 0.95f});
+    Camera c = kStart;
+    const glm::vec3 dir = glm::normalize(c.pos - c.target);
+    frameBalls(c, balls, right);
+    EXPECT_NEAR(glm::length(glm::normalize(c.pos - c.target) - dir), 0.0f, 1e-5f);
+    for (const Ball& b : balls) EXPECT_TRUE(ballInView(c, b, right));
+    const ViewWindow leftOfIt(kWide, {-1.0f, -1.0f}, {-0.4f, 1.0f});
+    for (const Ball& b : balls) EXPECT_FALSE(ballInView(c, b, leftOfIt));
+    // The middle of the balls' box shows at the window's middle.
+    const glm::vec3 middle(0.75f, 3.15f, -0.15f);  // of the box from (-3.5, 0, -2.3) to (5, 6.3, 2)
+    const glm::vec3 ray = viewRay(c, kWide, right.middle());
+    const glm::vec3 to = middle - c.pos;
+    EXPECT_LT(glm::length(glm::cross(glm::normalize(ray), glm::normalize(to))), 1e-4f);
+}
+
 TEST(CameraFraming, NothingToFrameLeavesTheCamera) {
     Camera c = kStart;
     frameBalls(c, {}, kWide);

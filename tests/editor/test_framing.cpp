@@ -86,3 +86,15 @@ TEST(Framing, TheEyeInsideASolidIsNamed) {
     EXPECT_EQ(solidAroundEye(s, {0, -1, -8}), kHitGround);
     EXPECT_EQ(solidAroundEye(s, s.objects[3].pos), 3);  // the mirror ball's centre
 }
+
+// Add with the Objects panel open put a new capsule under it: the spot is found in the window
+// beside the panel.
+TEST(Framing, AddPutsTheNewObjectInTheWindowNoPanelCovers) {
+    Editor e = editorOn(Scene{});
+    const ViewWindow right(kWide, {0.2f, -1.0f}, {1.0f, 1.0f});  // the middle of the view is covered
+    std::string why;
+    ASSERT_TRUE(e.add(ItemKind::Object, &why, ShapeType::Capsule, right)) << why;
+    const Object& o = e.scene().objects.back();
+    EXPECT_TRUE(ballInView(e.scene().camera, ballOf(o), right));
+    EXPECT_FALSE(ballInView(e.scene().camera, ballOf(o), ViewWindow(kWide, {-1, -1}, {0.2f, 1})));
+}

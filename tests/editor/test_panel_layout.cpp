@@ -79,3 +79,16 @@ TEST(PanelLayout, TheStatisticsGiveWayInASmallWindow) {
     EXPECT_FALSE(statisticsFit(small, all & ~7u, statsIn(small)));  // the right column alone
     EXPECT_TRUE(statisticsFit(small, 0, statsIn(small)));  // no panel open: room for it
 }
+
+TEST(PanelLayout, TheUncoveredRoomLiesBetweenTheOpenColumns) {
+    const PanelFrame f = kFrames[1];  // 1280x720
+    const unsigned objects = panelBit(Panel::Objects), view = panelBit(Panel::View);
+    EXPECT_EQ(uncoveredRoom(f, 0), (PanelRect{0, 19, 1280, 701}));
+    EXPECT_EQ(uncoveredRoom(f, objects), (PanelRect{380, 19, 900, 701}));  // 10 + 360 + 10
+    EXPECT_EQ(uncoveredRoom(f, objects | view), (PanelRect{380, 19, 520, 701}));
+    for (const PanelFrame& small : {kFrames[2]}) {  // 640 wide: the columns meet
+        const PanelRect r = uncoveredRoom(small, objects | view);
+        EXPECT_EQ(r.x, 0.0f);
+        EXPECT_EQ(r.width, small.width);
+    }
+}

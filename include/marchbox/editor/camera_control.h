@@ -48,14 +48,28 @@ struct Ball {
     float radius = 0.0f;
 };
 
-// True when the whole ball lies inside the view of a camera whose image is `aspect` times as
-// wide as it is tall.
-bool ballInView(const Camera& c, const Ball& b, float aspect);
+// The view's shape, and the part of it where the scene shows unobstructed (the docked panels
+// cover the rest): from `lo` to `hi` in fractions of the view's half extents from its centre,
+// x right and y up, the whole view from -1 to 1.
+struct ViewWindow {
+    ViewWindow(float aspectOfView = 1.0f, glm::vec2 from = glm::vec2(-1.0f),
+               glm::vec2 to = glm::vec2(1.0f))
+        : aspect(aspectOfView), lo(from), hi(to) {}
+    float aspect;  // the whole view's width over its height
+    glm::vec2 lo, hi;
+    glm::vec2 middle() const { return 0.5f * (lo + hi); }
+};
 
-// Frame selected and Frame all: looks at the middle of the balls from the same direction, as
-// close as lets every ball fit the view, within the controls' distance limits. Nothing to
-// frame leaves the camera as it was.
-void frameBalls(Camera& c, const std::vector<Ball>& balls, float aspect,
+// True when the whole ball lies inside the window of the camera's view.
+bool ballInView(const Camera& c, const Ball& b, const ViewWindow& w);
+
+// The ray from the eye through point `at` of the view (ViewWindow's units), not normalised.
+glm::vec3 viewRay(const Camera& c, float aspect, glm::vec2 at);
+
+// Frame selected and Frame all: from the same direction, as close as lets every ball fit the
+// window, within the controls' distance limits, the middle of the balls at the window's middle.
+// Nothing to frame leaves the camera as it was.
+void frameBalls(Camera& c, const std::vector<Ball>& balls, const ViewWindow& w,
                 const CameraControls& k = {});
 
 }  // namespace mb

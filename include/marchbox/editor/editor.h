@@ -9,6 +9,7 @@
 // The window's panels and input call these; nothing here knows about GL, GLFW or ImGui.
 #pragma once
 
+#include "marchbox/editor/camera_control.h"
 #include "marchbox/editor/disk_file.h"
 #include "marchbox/editor/document.h"
 #include "marchbox/editor/gizmo.h"
@@ -70,8 +71,10 @@ public:
     bool undo();
     bool redo();
 
-    // Selects the new item; an object of type `shape`, put where placeNewObject() says.
-    bool add(ItemKind k, std::string* why, ShapeType shape = ShapeType::Sphere);
+    // Selects the new item; an object of type `shape`, put where placeNewObject() says for the
+    // part of the view no panel covers.
+    bool add(ItemKind k, std::string* why, ShapeType shape = ShapeType::Sphere,
+             const ViewWindow& view = {});
     bool duplicate(ItemKind k, int index, std::string* why);  // selects the copy
     bool remove(ItemKind k, int index, std::string* why);
     bool reorder(int object, int by, std::string* why);  // reorderObject(); the selection follows
@@ -141,11 +144,11 @@ public:
     // The camera moves as a view, not an edit: no undo step, no unsaved change.
     Camera& view() { return doc_.live().camera; }
     // Numpad . and Home: the camera looks at the selection (its objects and groups, or a point
-    // light), or at every object, as they stand now, from where it looks, as close as lets them fit
-    // a view `aspect` times as wide as tall. False, the camera unmoved, when there is nothing to
-    // frame.
-    bool frameSelected(float aspect);
-    bool frameAll(float aspect);
+    // light), or at every object, as they stand now, from where it looks, as close as lets them
+    // fit the part of the view no panel covers (ViewWindow). False, the camera unmoved, when
+    // there is nothing to frame.
+    bool frameSelected(const ViewWindow& view);
+    bool frameAll(const ViewWindow& view);
     // What the view shows: while playing a scene with keyframes, their path at the simulated
     // time; otherwise (at rest, paused, editing) the camera record.
     Camera shownCamera() const;

@@ -33,6 +33,11 @@ constexpr float kPanelMinHeight = 40.0f;  // a title bar and a line: kept even i
 // The place of each panel whose panelBit is set in `open`; the others' are left empty.
 std::array<PanelRect, kPanelCount> layoutPanels(const PanelFrame& frame, unsigned open);
 
+// The room no open panel covers, in window pixels: between the columns as layoutPanels() puts
+// them, below the menu bar and above frame.height (the timeline). Where the columns leave less
+// than a quarter of the window's width between them, the whole width: a sliver frames nothing.
+PanelRect uncoveredRoom(const PanelFrame& frame, unsigned open);
+
 // Whether the statistics overlay at `stats` leaves the open panels room, with frame.rightTop at
 // its bottom: it covers none of them and each column's panels fit above the window's bottom
 // margin. In a small window it does not, and the overlay gives way (View > Statistics).

@@ -5,6 +5,7 @@
 // the mouse's y.
 #pragma once
 
+#include "marchbox/editor/camera_control.h"
 #include "marchbox/editor/scene_edit.h"
 #include "marchbox/scene/scene.h"
 
@@ -28,11 +29,12 @@ std::vector<Item> objectsInBox(const Scene& scene, glm::vec2 a, glm::vec2 b, glm
 bool pixelOnPlane(const Camera& camera, glm::vec2 pixel, glm::vec2 viewSize, float height,
                   glm::vec3* hit);
 
-// Where Add puts the new object `o`: resting on the ground (its lowest point on the floor) below
-// the camera's target, then moved over the ground the least that keeps it clear of every object
-// and inside the view. Where no spot in view is clear, the nearest clear one; crowded all
+// Where Add puts the new object `o`: resting on the ground (its lowest point on the floor) where
+// the middle of the view's window shows it (below the camera's target when the ground is not
+// there), then moved over the ground the least that keeps it clear of every object and whole
+// inside the window. Where no spot in the window is clear, the nearest clear one; crowded all
 // round, it goes above them to fall into place.
-glm::vec3 placeNewObject(const Scene& scene, const Object& o);
+glm::vec3 placeNewObject(const Scene& scene, const Object& o, const ViewWindow& view = {});
 
 // A modifier-drag in the view: an object or a group slides over the horizontal plane through
 // its centre in the world, keeping the point first grabbed under the mouse.
