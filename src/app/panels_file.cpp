@@ -108,19 +108,20 @@ static bool intoFolder(UiState& ui, bool go) {
     return true;
 }
 
-// The places to jump to: recent files' folders and the examples, named by their last part.
+// The places to jump to (placesToBrowse()); a path too long for the list shows its end.
 static std::string placesList(UiState& ui) {
     std::string go;
     ImGui::BeginChild("places", ImVec2(160, 240), true);
+    const float room = ImGui::GetContentRegionAvail().x;
     for (size_t i = 0; i < ui.places.size(); ++i) {
-        const std::string& place = ui.places[i];
-        std::string name = std::filesystem::path(place).filename().string();
+        const BrowsePlace& place = ui.places[i];
+        std::string label = place.label;
+        while (label.size() > 4 && ImGui::CalcTextSize(label.c_str()).x > room)
+            label = "..." + label.substr(4);
         ImGui::PushID(int(i));
-        if (ImGui::Selectable(name.empty() ? place.c_str() : name.c_str(),
-                              place == ui.browsed.folder))
-            go = place;
+        if (ImGui::Selectable(label.c_str(), place.folder == ui.browsed.folder)) go = place.folder;
         ImGui::PopID();
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", place.c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", place.folder.c_str());
     }
     ImGui::EndChild();
     return go;
@@ -133,7 +134,7 @@ static bool folderBrowser(UiContext& c, const char* popup, bool keepName) {
     if (ImGui::IsWindowAppearing()) {
         ui.browsed = readFolder(folderOf(ui.pathField));
         const char* home = std::getenv("HOME");
-        ui.places = placesToBrowse(ui.recent.paths(), {ui.scenesDir, ".", home ? home : ""});
+        ui.places = placesToBrowse(ui.recent.paths(), ui.scenesDir, home ? home : "", ".");
     }
     std::string go;
     if (button(popup, "Up")) go = parentFolder(ui.browsed.folder);

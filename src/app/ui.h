@@ -50,7 +50,7 @@ struct UiState {
     bool placeCopies = false;  // Duplicate made copies: they follow the mouse until a click
     std::string pathField;                // the Open and Save As dialogs' path
     FolderView browsed;                   // the folder those dialogs show
-    std::vector<std::string> places;      // the folders beside it: recent ones, the examples
+    std::vector<BrowsePlace> places;      // the folders beside it: named ones, recent ones
     std::vector<std::string> openErrors;  // FILE:LINE lines of the last failed open or reload
     std::string errorsHeader;             // what failed to load, above them
     bool saveThenLeave = false;           // Save As was asked for by the unsaved-changes prompt

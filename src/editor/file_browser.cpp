@@ -56,18 +56,30 @@ std::string entryPath(const std::string& folder, const std::string& name) {
     return tidy(fs::path(folder) / name).string();
 }
 
-std::vector<std::string> placesToBrowse(const std::vector<std::string>& recentFiles,
-                                        const std::vector<std::string>& fixed) {
-    std::vector<std::string> places;
-    auto add = [&](const std::string& folder) {
+// The path as a label: under home, from "~".
+static std::string pathLabel(const std::string& folder, const std::string& home) {
+    if (home.empty() || home == "/") return folder;
+    const fs::path rel = fs::path(folder).lexically_relative(tidy(home));
+    if (rel.empty() || *rel.begin() == "..") return folder;
+    return rel == "." ? "~" : (fs::path("~") / rel).string();
+}
+
+std::vector<BrowsePlace> placesToBrowse(const std::vector<std::string>& recentFiles,
+                                        const std::string& examples, const std::string& home,
+                                        const std::string& working) {
+    std::vector<BrowsePlace> places;
+    auto add = [&](const std::string& label, const std::string& folder) {
         std::error_code ec;
-        if (!fs::is_directory(folder, ec)) return;
-        std::string f = tidy(folder).string();
-        if (std::find(places.begin(), places.end(), f) == places.end()) places.push_back(f);
+        if (folder.empty() || !fs::is_directory(folder, ec)) return;
+        const std::string f = tidy(folder).string();
+        for (const BrowsePlace& p : places)
+            if (p.folder == f) return;
+        places.push_back({label.empty() ? pathLabel(f, home) : label, f});
     };
-    for (const std::string& file : recentFiles) add(fs::path(file).parent_path().string());
-    for (const std::string& folder : fixed)
-        if (!folder.empty()) add(folder);
+    add("Examples", examples);
+    add("Home", home);
+    add("Working folder", working);
+    for (const std::string& file : recentFiles) add("", fs::path(file).parent_path().string());
     return places;
 }
 

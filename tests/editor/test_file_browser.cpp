@@ -62,13 +62,22 @@ TEST(FileBrowser, TypedPathLeadsToItsFolder) {
     EXPECT_EQ(folderOf(""), fs::current_path().string());
 }
 
-TEST(FileBrowser, PlacesAreRecentFoldersThenExamplesOnce) {
+// The places were unlabelled folder names: "scenes", "x1a2b", "me".
+TEST(FileBrowser, PlacesAreNamedThenTheFoldersOfRecentFilesByPath) {
     fs::path dir = freshDir("places");
-    fs::create_directories(dir / "a");
-    fs::create_directories(dir / "b");
+    for (const char* sub : {"home/me/work", "home/me/scenes", "examples", "b"})
+        fs::create_directories(dir / sub);
+    const fs::path home = dir / "home" / "me";
     const std::vector<std::string> recent = {
-        (dir / "b" / "x.txt").string(), (dir / "a" / "y.txt").string(),
-        (dir / "b" / "z.txt").string(), (dir / "gone" / "w.txt").string()};
-    auto places = placesToBrowse(recent, {(dir / "a").string(), "", (dir / "none").string()});
-    EXPECT_EQ(places, (std::vector<std::string>{(dir / "b").string(), (dir / "a").string()}));
+        (dir / "b" / "x.txt").string(), (home / "work" / "y.txt").string(),
+        (dir / "b" / "z.txt").string(), (dir / "gone" / "w.txt").string(),
+        (dir / "examples" / "v.txt").string()};
+    auto places = placesToBrowse(recent, (dir / "examples").string(), home.string(),
+                                 (home / "scenes").string());
+    EXPECT_EQ(places, (std::vector<BrowsePlace>{{"Examples", (dir / "examples").string()},
+                                                {"Home", home.string()},
+                                                {"Working folder", (home / "scenes").string()},
+                                                {(dir / "b").string(), (dir / "b").string()},
+                                                {"~/work", (home / "work").string()}}));
+    EXPECT_EQ(placesToBrowse({}, "", "", (dir / "none").string()), std::vector<BrowsePlace>{});
 }

@@ -32,9 +32,18 @@ std::string folderOf(const std::string& path);
 // `folder` joined with `name`, normalised: the path a click on an entry puts in the field.
 std::string entryPath(const std::string& folder, const std::string& name);
 
-// The places beside the listing: the folders of `recentFiles` (newest first), then `fixed` (the
-// shipped examples, the working folder, home), each once and only where it still exists.
-std::vector<std::string> placesToBrowse(const std::vector<std::string>& recentFiles,
-                                        const std::vector<std::string>& fixed);
+// A place beside the listing: a folder and what the dialog calls it.
+struct BrowsePlace {
+    std::string label;   // "Examples", "Home", "Working folder", or the folder's path
+    std::string folder;  // absolute and normalised
+    bool operator==(const BrowsePlace&) const = default;
+};
+
+// The places beside the listing: the shipped examples, home and the working folder by name,
+// then the folders of `recentFiles` (newest first), the ones the user opened or saved in, by
+// their paths (home as ~). Each folder once, under its first label, and only where it exists.
+std::vector<BrowsePlace> placesToBrowse(const std::vector<std::string>& recentFiles,
+                                        const std::string& examples, const std::string& home,
+                                        const std::string& working);
 
 }  // namespace mb
