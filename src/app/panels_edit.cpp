@@ -8,6 +8,7 @@
 #include "ui.h"
 #include "widgets.h"
 
+#include "marchbox/editor/carved.h"
 #include "marchbox/editor/events.h"
 
 #include <algorithm>
@@ -387,6 +388,23 @@ static void clickRow(UiContext& c, Item row) {
     else c.editor.select(row.kind, row.index);
 }
 
+// A sphere listed before a subtraction vanished inside the carve, and nothing said why: such
+// a row is drawn in the warning colour, "(hidden)" after its name, and its tooltip names the
+// subtraction. -1 for an object that shows.
+static int carvedBy(UiContext& c, int object) {
+    if (c.ui.carvedAt != c.editor.document().version()) {
+        c.ui.carved = carvedAway(c.editor.scene());
+        c.ui.carvedAt = c.editor.document().version();
+    }
+    return object < int(c.ui.carved.size()) ? c.ui.carved[size_t(object)] : -1;
+}
+
+static void carvedTooltip(const Scene& s, const std::string& row, int cut) {
+    itemTooltip(row, "Hidden: wholly inside " + itemName(s, ItemKind::Object, cut) +
+                         ",\nwhich comes after it and carves it away. Move one of\n"
+                         "them, or list the subtraction before it.");
+}
+
 // One row; for a group, whether it is open (its members' rows follow, pushed one level in).
 static bool treeRow(UiContext& c, Item row) {
     const Scene& s = c.editor.scene();
@@ -398,13 +416,18 @@ static bool treeRow(UiContext& c, Item row) {
     else ImGui::Dummy(ImVec2(swatchSide, swatchSide));
     ImGui::SameLine();
     const std::string name = itemName(s, row.kind, row.index);
+    const int cut = row.kind == ItemKind::Object ? carvedBy(c, row.index) : -1;
     ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_SpanAvailWidth;
     if (c.editor.selection().has(row.kind, row.index)) flags |= ImGuiTreeNodeFlags_Selected;
     if (row.kind == ItemKind::Object)
         flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
     else flags |= ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_DefaultOpen;
-    const bool open = ImGui::TreeNodeEx("##row", flags, "%s", name.c_str());
+    if (cut >= 0) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.3f, 1.0f));
+    const bool open =
+        ImGui::TreeNodeEx("##row", flags, "%s%s", name.c_str(), cut >= 0 ? " (hidden)" : "");
+    if (cut >= 0) ImGui::PopStyleColor();
     markItem("Objects/" + name);
+    if (cut >= 0) carvedTooltip(s, "Objects/" + name, cut);
     clickRow(c, row);
     dragRow(c, row, name);
     ImGui::PopID();

@@ -72,6 +72,9 @@ struct UiState {
     // Docked panels (panel_layout.h): where each was last put, and the statistics' bottom edge
     // as last drawn (0 while hidden).
     std::array<PanelRect, kPanelCount> placed{};
+    // carvedAway() of the scene at document version carvedAt, for the Objects list's marks.
+    std::vector<int> carved;
+    uint64_t carvedAt = ~uint64_t(0);
     float statsBottom = 0.0f;
     unsigned openPanels() const;  // panelBit of each panel shown
 };
