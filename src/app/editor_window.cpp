@@ -97,6 +97,8 @@ bool App::start(std::string* error) {
     ImGui::CreateContext();
     imgui_ = true;
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working folder
+    // As in Blender: a click on a number field types into it; a drag still changes it.
+    ImGui::GetIO().ConfigDragClickToInputText = true;
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(window_.handle(), false);  // the window queues the input
     ImGui_ImplOpenGL3_Init("#version 330");

@@ -20,7 +20,7 @@ namespace {
 
 constexpr double kTooltipDelay = 0.5;  // s the mouse rests on a field before its tooltip shows
 
-// True while a text field has the keyboard: a Ctrl+clicked drag or slider, or a text box.
+// True while a text field has the keyboard: a clicked drag, a Ctrl+clicked slider, a text box.
 bool typingNow() {
     ImGuiID active = ImGui::GetActiveID();
     return active != 0 && ImGui::GetInputTextState(active) != nullptr;

@@ -19,11 +19,12 @@ struct FieldEdit {
     std::string* error = nullptr;  // the message of the panel's place (messages.h)
 };
 
-// Sliders where the field's spec asks for one, drags for the rest; Ctrl+click types a value,
-// which is taken when the field lets go of the keyboard (Return, a click elsewhere; Esc drops
-// it), never at each key. Each writes *v only when acceptField() takes the new value; a refusal
-// goes to the message line and to the event log ("refuse MESSAGE"). Hovering shows
-// fieldTooltip(). With the event log on, each is marked as "WINDOW/LABEL".
+// Sliders where the field's spec asks for one, drags for the rest; a click on a drag (Ctrl+click
+// on a slider) types a value, which is taken when the field lets go of the keyboard (Return, a
+// click elsewhere; Esc drops it), never at each key. Each writes *v only when acceptField()
+// takes the new value; a refusal goes to the message line and to the event log ("refuse
+// MESSAGE"). Hovering shows fieldTooltip(). With the event log on, each is marked as
+// "WINDOW/LABEL".
 void fieldFloat(const char* label, Field f, float* v, FieldEdit& e);
 void fieldInt(const char* label, Field f, int* v, FieldEdit& e);
 void fieldVec3(const char* label, Field f, glm::vec3* v, FieldEdit& e);

@@ -99,7 +99,7 @@ std::string fieldTooltip(Field f) {
     const FieldSpec& s = fieldSpec(f);
     std::string unit = *s.unit ? std::string("Unit: ") + s.unit + ". " : "No unit. ";
     return std::string(s.meaning) + "\n" + unit + "Range: " + fieldRangeText(f) + ".\n" +
-           "Drag, or Ctrl+click to type a value.";
+           "Click to type a value, or drag.";
 }
 
 // The check behind validateField, its message naming `label` ("pos.y", "radius").

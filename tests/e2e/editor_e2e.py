@@ -1635,6 +1635,28 @@ def case_frame_all(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+def case_click_type(app, scene):
+    """As in Blender, a single click on a number field types into it, and a drag changes it."""
+    select_first(app, scene)
+    app.click_widget('Objects/radius', fresh=False)
+    app.wait('typing Objects/radius')
+    app.type('1.25')
+    app.key('Return')
+    app.wait('edit Edit object')
+    x, y = app.widget('Objects/radius', fresh=False)
+    app.move(x, y)
+    xdotool('mousedown', 1)
+    for step in range(1, 6):
+        app.move(x + 12 * step, y)
+    xdotool('mouseup', 1)
+    app.wait('edit Edit object')
+    app.save()
+    radius = scene_values(scene, 'object', 'radius')[0][0]
+    check(radius > 1.25, 'the drag after typing 1.25 left the radius at %s' % radius)
+    app.key('ctrl+q')
+    check(app.finish() == 0, 'exit status not 0')
+
+
 def is_key_mark(rgb):  # a camera key's diamond on the timeline, (255, 210, 60)
     r, g, b = rgb[:3]
     return r > 230 and 180 < g < 235 and b < 100

@@ -102,7 +102,7 @@ TEST(Fields, EveryTooltipGivesTheUnitAndTheRange) {
     EXPECT_EQ(fieldTooltip(Field::Radius),
               "Radius of a sphere, torus ring, capsule or cylinder, or a cone's base.\n"
               "Unit: m. Range: above 0 and at most 10000 m.\n"
-              "Drag, or Ctrl+click to type a value.");
+              "Click to type a value, or drag.");
 }
 
 TEST(Fields, IntegersMustBeWhole) {

@@ -73,7 +73,7 @@ const FieldSpec& fieldSpec(Field f);
 std::string fieldRangeText(Field f);
 
 // The tooltip: meaning, unit and range, e.g. "Sphere, torus ring, capsule or cylinder radius.
-// Metres (m), above 0 and at most 10000; Ctrl+click to type a value."
+// Metres (m), above 0 and at most 10000; click to type a value, or drag."
 std::string fieldTooltip(Field f);
 
 // True when v may be stored: a number, in range, whole for integer fields. Otherwise *why holds
