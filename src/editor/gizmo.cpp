@@ -72,20 +72,29 @@ static bool insideQuad(glm::vec2 p, const glm::vec2 q[4]) {
     return pos == 0 || neg == 0;
 }
 
-// The screen distance from `pixel` to the polyline through world points pts[0..n).
+// How near `pixel` the polyline through world points point(0..n) passes on screen, and how
+// far from the eye the nearest of its segments that pass within `reach` px are.
+struct PathHit {
+    float pixels = INFINITY;
+    float depth = INFINITY;
+};
+
 template <typename Point>
-static float distanceToPath(const Camera& c, glm::vec2 viewSize, glm::vec2 pixel, int n,
-                            Point point) {
-    float best = INFINITY;
+static PathHit hitPath(const Camera& c, glm::vec2 viewSize, glm::vec2 pixel, int n, Point point,
+                       float reach) {
+    PathHit hit;
     glm::vec2 prev, next;
     bool have = projectToPixel(c, point(0), viewSize, &prev);
     for (int i = 1; i < n; ++i) {
         const bool ok = projectToPixel(c, point(i), viewSize, &next);
-        if (have && ok) best = std::min(best, distanceToSegment(pixel, prev, next));
+        const float d = have && ok ? distanceToSegment(pixel, prev, next) : INFINITY;
+        hit.pixels = std::min(hit.pixels, d);
+        if (d <= reach)
+            hit.depth = std::min(hit.depth, glm::distance(c.pos, 0.5f * (point(i - 1) + point(i))));
         prev = next;
         have = ok;
     }
-    return best;
+    return hit;
 }
 
 static bool onPlaneSquare(const Camera& c, const GizmoFrame& f, int axis, glm::vec2 pixel,
@@ -126,23 +135,27 @@ GizmoHandle hitGizmo(const Camera& c, const GizmoFrame& f, GizmoMode mode, glm::
     const HandleKind kind = mode == GizmoMode::Rotate  ? HandleKind::Ring
                             : mode == GizmoMode::Scale ? HandleKind::Scale
                                                        : HandleKind::Axis;
+    // Axes and handles: the nearest on screen. Rings: of those within reach, the one in front,
+    // as where two cross the ring drawn over the other is the one meant.
     GizmoHandle best;
-    float nearest = k.pickPixels;
+    float bestKey = INFINITY;
     for (int i = 0; i < 3; ++i) {
         if (!handleShown(c, f, {kind, i}, k)) continue;
-        float d;
+        PathHit hit;
         if (mode == GizmoMode::Rotate) {
             const int n = 65;  // 64 segments: within a pixel of the circle at lengthPixels
-            d = distanceToPath(c, viewSize, pixel, n, [&](int j) {
+            hit = hitPath(c, viewSize, pixel, n, [&](int j) {
                 return ringPoint(f, i, glm::two_pi<float>() * float(j) / float(n - 1));
-            });
+            }, k.pickPixels);
         } else {
             const glm::vec3 a = f.axes[i] * f.length;
-            d = distanceToPath(c, viewSize, pixel, 2,
-                               [&](int j) { return f.centre + (j == 0 ? k.axisFrom : 1.0f) * a; });
+            hit = hitPath(c, viewSize, pixel, 2,
+                          [&](int j) { return f.centre + (j == 0 ? k.axisFrom : 1.0f) * a; },
+                          k.pickPixels);
         }
-        if (d <= nearest) {
-            nearest = d;
+        const float key = mode == GizmoMode::Rotate ? hit.depth : hit.pixels;
+        if (hit.pixels <= k.pickPixels && key <= bestKey) {
+            bestKey = key;
             best = {kind, i};
         }
     }

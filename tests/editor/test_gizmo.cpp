@@ -245,3 +245,41 @@ TEST(Gizmo, HandlesSeenEndOnAreHiddenAndCannotBeTaken) {
     EXPECT_EQ(hitGizmo(kFront, f, GizmoMode::Move, nearCentre, kView).kind, HandleKind::None);
     EXPECT_EQ(hitGizmo(kFront, f, GizmoMode::Scale, nearCentre, kView).kind, HandleKind::None);
 }
+
+// Where two rings cross on screen, the ring in front is the one meant: a drag on the z ring near
+// where the x ring's back half passed tipped a domino about x.
+TEST(Gizmo, WhereRingsCrossTheOneInFrontIsTaken) {
+    const GizmoFrame f = worldFrame(kOblique);
+    const float reach = GizmoSettings{}.pickPixels;
+    auto ring = [&](int i, int m) { return ringPoint(f, i, glm::two_pi<float>() * m / 720.0f); };
+    int crossings = 0;
+    for (int front = 0; front < 3; ++front)
+        for (int back = 0; back < 3; ++back) {
+            if (front == back) continue;
+            for (int j = 0; j < 720; j += 4) {
+                const glm::vec3 p = ring(front, j);
+                const glm::vec2 px = pixelOf(kOblique, p);
+                // The back ring's point nearest on screen.
+                glm::vec3 q = ring(back, 0);
+                for (int m = 1; m < 720; ++m)
+                    if (glm::distance(pixelOf(kOblique, ring(back, m)), px) <
+                        glm::distance(pixelOf(kOblique, q), px))
+                        q = ring(back, m);
+                if (glm::distance(pixelOf(kOblique, q), px) > 2.0f) continue;
+                // A pixel nearer the back ring than the front one, within reach of both, where
+                // every part of the back ring within reach lies behind p.
+                const glm::vec2 at = glm::mix(px, pixelOf(kOblique, q), 0.6f);
+                bool behind = glm::distance(at, px) <= reach - 1.0f;
+                for (int m = 0; m < 720 && behind; ++m)
+                    if (glm::distance(pixelOf(kOblique, ring(back, m)), at) <= reach + 1.0f)
+                        behind = glm::distance(kOblique.pos, ring(back, m)) >
+                                 glm::distance(kOblique.pos, p) + 0.05f * f.length;
+                if (!behind) continue;
+                ++crossings;
+                EXPECT_EQ(hitGizmo(kOblique, f, GizmoMode::Rotate, at, kView),
+                          (GizmoHandle{HandleKind::Ring, front}))
+                    << "front " << front << " back " << back << " at step " << j;
+            }
+        }
+    EXPECT_GT(crossings, 0) << "no front half crossing a back half in this view";
+}
