@@ -126,8 +126,8 @@ static void helpWindow(UiContext& c) {
     if (!c.ui.showHelp) return;
     if (beginPanel(c, Panel::Controls, "Controls", &c.ui.showHelp) &&
         ImGui::BeginTable("controls", 2, ImGuiTableFlags_RowBg)) {
-        // The keys column as wide as its widest entry ("Middle drag, Shift drag"): keys cut
-        // short read as other keys. The actions wrap beside it.
+        // The keys column as wide as its widest entry ("Ctrl+C, Ctrl+V"): keys cut short read
+        // as other keys. The actions wrap beside it, in two lines at most (Controls.*).
         float keys = 0.0f;
         for (const Control& k : editorControls())
             keys = std::max(keys, ImGui::CalcTextSize(k.keys).x);

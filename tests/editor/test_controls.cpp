@@ -58,8 +58,18 @@ TEST(Controls, EveryKeyTheWindowHandlesIsListed) {
          {"1", "F", "P", "J", "Space", "Delete", "F12", "Esc", "Ctrl+Z", "Ctrl+Y", "Ctrl+N",
           "Ctrl+O", "Ctrl+S", "Ctrl+Shift+S", "W A S D, Q E", "G", "R", "T"})
         EXPECT_NE(all.find(std::string(key) + ","), std::string::npos) << key;
-    // Selecting and grouping, as in Blender.
+    // Selecting, grouping, duplicating and copying, as in Blender.
     for (const char* key :
-         {"Shift+click", "Ctrl drag in empty space", "Ctrl+A", "[", "Ctrl+G", "Ctrl+Alt+G"})
+         {"Shift+click", "Ctrl box drag", "Ctrl+A", "[", "Ctrl+G", "Ctrl+Alt+G", "Shift+D",
+          "Ctrl+C, Ctrl+V"})
         EXPECT_NE(all.find(std::string(key) + ","), std::string::npos) << key;
+}
+
+// The Controls panel is 360 px wide: keys of at most 14 characters leave the actions about 31
+// a line, so an action of at most 56 reads in two lines. Most rows wrapped over three before.
+TEST(Controls, EachRowReadsInTwoLinesOfTheirPanel) {
+    for (const Control& k : editorControls()) {
+        EXPECT_LE(std::string(k.keys).size(), 14u) << k.keys;
+        EXPECT_LE(std::string(k.action).size(), 56u) << k.action;
+    }
 }
