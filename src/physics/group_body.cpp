@@ -36,57 +36,6 @@ Moments objectMoments(const SdfObject& o) {
 }
 
 //-----------------------------------------------------------------------------
-// Disjoint unions: oriented boxes about each member that at most touch
-//-----------------------------------------------------------------------------
-struct OrientedBox {
-    dvec3 centre;
-    dmat3 axes;  // columns: the box's axes in the group's frame
-    dvec3 half;
-};
-
-dvec3 halfExtents(const SdfObject& o) {
-    const double r = o.radius, h = 0.5 * double(o.height);
-    switch (o.type) {
-        case ShapeType::Sphere:
-            return dvec3(r);
-        case ShapeType::Box:
-        case ShapeType::Ellipsoid:
-            return dvec3(o.size);
-        case ShapeType::Torus:
-            return dvec3(r + o.minor, o.minor, r + o.minor);
-        case ShapeType::Capsule:
-            return dvec3(r, h + r, r);
-        case ShapeType::Cylinder:
-        case ShapeType::Cone:
-            return dvec3(r, h, r);
-    }
-    return dvec3(o.bound);
-}
-
-// Separating axes: the boxes' own and their edges' crosses. Apart (or touching within `slack`)
-// along any of them: no volume in common.
-bool overlap(const OrientedBox& a, const OrientedBox& b, double slack) {
-    const dvec3 d = b.centre - a.centre;
-    auto apart = [&](dvec3 axis) {
-        const double len = glm::length(axis);
-        if (len < 1e-9) return false;
-        axis /= len;
-        double ra = 0.0, rb = 0.0;
-        for (int k = 0; k < 3; ++k) {
-            ra += a.half[k] * std::abs(glm::dot(a.axes[k], axis));
-            rb += b.half[k] * std::abs(glm::dot(b.axes[k], axis));
-        }
-        return std::abs(glm::dot(d, axis)) >= ra + rb - slack;
-    };
-    for (int i = 0; i < 3; ++i)
-        if (apart(a.axes[i]) || apart(b.axes[i])) return false;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            if (apart(glm::cross(a.axes[i], b.axes[j]))) return false;
-    return true;
-}
-
-//-----------------------------------------------------------------------------
 // Probes
 //-----------------------------------------------------------------------------
 // A place on a member (a point, and a direction that goes with it: a rim's axis) and its images
@@ -259,21 +208,34 @@ Scene withoutBodyMembers(const Scene& scene) {
     return out;
 }
 
+namespace {
+
+// One group, unmirrored, whose members all join it by a sharp union: its distance is the least
+// of theirs (its copies' too).
+bool sharpUnion(const SceneSdf& sdf) {
+    if (sdf.groups.size() != 1 || glm::any(sdf.groups[0].mirror)) return false;
+    for (const SdfObject& o : sdf.objects)
+        if (o.op != CsgOp::Union || o.blend > 0.0f) return false;
+    return true;
+}
+
+}  // namespace
+
 bool disjointUnionMoments(const GroupShape& shape, Moments* out) {
     const SceneSdf& sdf = shape.sdf;
     const SdfGroup& group = sdf.groups[0];
-    if (sdf.groups.size() != 1 || glm::any(group.mirror) || copyCount(group) > 64) return false;
-    for (const SdfObject& o : sdf.objects)
-        if (o.op != CsgOp::Union || o.blend > 0.0f) return false;
+    if (!sharpUnion(sdf) || copyCount(group) > 64) return false;
     std::vector<OrientedBox> boxes;
     for (int copy = 0; copy < copyCount(group); ++copy)
-        for (const SdfObject& o : sdf.objects)
-            boxes.push_back({dvec3(o.pos) + copyOffset(group, copy), toGroup(o), halfExtents(o)});
+        for (const SdfObject& o : sdf.objects) {
+            boxes.push_back(boxAbout(o));
+            boxes.back().centre += copyOffset(group, copy);
+        }
     // Faces that meet (a chair's legs under its seat) touch to the floats' rounding.
     const double slack = 1e-6 * shape.bound;
     for (size_t i = 0; i < boxes.size(); ++i)
         for (size_t j = i + 1; j < boxes.size(); ++j)
-            if (overlap(boxes[i], boxes[j], slack)) return false;
+            if (boxesOverlap(boxes[i], boxes[j], slack)) return false;
     Moments sum;
     for (const SdfObject& o : sdf.objects) {
         const Moments own = objectMoments(o);
@@ -282,6 +244,17 @@ bool disjointUnionMoments(const GroupShape& shape, Moments* out) {
     }
     *out = sum;
     return true;
+}
+
+std::vector<OrientedBox> unionParts(const GroupShape& shape) {
+    const SceneSdf& sdf = shape.sdf;
+    if (shape.empty() || !sharpUnion(sdf) || copyCount(sdf.groups[0]) != 1) return {};
+    std::vector<OrientedBox> parts;
+    for (const SdfObject& o : sdf.objects) {
+        if (!exactShape(o)) return {};
+        parts.push_back(boxAbout(o));
+    }
+    return parts;
 }
 
 GroupMoments groupMoments(const GroupShape& shape, int depth) {

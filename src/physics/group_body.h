@@ -11,6 +11,7 @@
 #pragma once
 
 #include "mass_moments.h"
+#include "oriented_box.h"
 #include "rigid_probes.h"
 
 #include "marchbox/scene/scene.h"
@@ -45,6 +46,11 @@ struct GroupMoments {
 GroupMoments groupMoments(const GroupShape& shape, int depth = kIntegrationDepth);
 // The union's closed form, where the group is one (false otherwise).
 bool disjointUnionMoments(const GroupShape& shape, Moments* out);
+
+// The boxes about the members of a group whose distance is the least of its members' exact
+// distances (one copy, unmirrored, sharp unions of exact shapes), in its frame: no point is
+// nearer the group than the nearest box. Empty for every other group.
+std::vector<OrientedBox> unionParts(const GroupShape& shape);
 
 // Probes and rims on the combined surface, in the group's frame. At most kMaxGroupProbeIds
 // contact keys: a probe takes one, a rim kRimIds (rimSupport's four, and its sixteen fixed

@@ -170,9 +170,10 @@ ShapeSample searchSurface(const RigidBody& b, const dvec3& p, const dvec3& down,
 // certified where it is no more than |f(p)|, which is no more than the true distance (an exact
 // SDF's first step lands so). Where the steps do not land so (over the cup's mouth they go back
 // and forth between its rim's plane and the carved cylinder's top), the rays find the distance,
-// up to `limit` (searchSurface). Points inside keep the bound: a push out no deeper than the
-// true one.
+// up to `limit` (searchSurface). Points inside keep the bound, landing or not: a push out no
+// deeper than the true one, so they take no steps.
 ShapeSample projectOntoSurface(const RigidBody& b, const dvec3& p, double bound, double limit) {
+    if (bound <= 0.0) return {bound, normalAt(b, p)};
     const double tol = 1e-6 * b.bound;
     dvec3 x = p, down(0.0, -1.0, 0.0);
     double f = bound;
@@ -187,7 +188,6 @@ ShapeSample projectOntoSurface(const RigidBody& b, const dvec3& p, double bound,
     const double gap = glm::length(p - x);
     if (std::abs(f) <= tol && gap <= kCertified * std::abs(bound) + tol)
         return {bound, normalAt(b, p)};
-    if (bound <= 0.0) return {bound, normalAt(b, p)};
     ShapeSample found = searchSurface(b, p, down, limit, tol);
     if (std::abs(f) <= tol && gap < found.distance) found = {gap, (p - x) / gap};
     return found;
@@ -199,6 +199,23 @@ ShapeSample surfaceNear(const RigidBody& b, const dvec3& p, double reach) {
     const double bound = distanceTo(b, p);
     if (b.exact || bound >= reach) return {bound, dvec3(0.0)};
     return projectOntoSurface(b, p, bound, reach);
+}
+
+// Above the float SDF's rounding (~1e-6 of the bound) and a group's probes' distance off its
+// surface (1e-5 of it, groupProbes): the box culls skip only what the SDF puts out of reach too.
+double boxSlack(const RigidBody& b) { return 1e-4 * b.bound; }
+
+// Whether p (world) lies at least `reach` from a group's shape by its parts' boxes, so that its
+// distance there, which would be no less, need not be found. An object's own distance costs no
+// more than a box's, and a group's is only bounded by parts where it has them.
+bool beyondParts(const RigidBody& b, const dvec3& p, double reach) {
+    if (!b.groupShape || b.parts.empty()) return false;
+    const dvec3 local = glm::conjugate(b.orient) * (p - b.pos);
+    const double far = reach + boxSlack(b);
+    if (distanceToBox(b.hull, local) >= far) return true;
+    for (const OrientedBox& part : b.parts)
+        if (distanceToBox(part, local) < far) return false;
+    return true;
 }
 
 dvec3 relativeVelocity(const RigidContact& c) {
@@ -400,6 +417,16 @@ bool rigidObject(const Object& o) {
     return o.dynamic() && (o.type != ShapeType::Sphere || o.shell > 0.0f);
 }
 
+// The shape's parts (in its frame) in the body's, x_body = axes⁻¹·(x_shape − centre), and
+// their hull; set once the body's frame is.
+void setParts(RigidBody& b, const std::vector<OrientedBox>& shapeParts) {
+    const dquat toBody = glm::conjugate(b.axes);
+    b.parts.clear();
+    for (const OrientedBox& part : shapeParts)
+        b.parts.push_back(placed(part, toBody, -(toBody * b.centre)));
+    b.hull = boxAround(b.parts);
+}
+
 void setMass(RigidBody& b, const MassProperties& mp) {
     b.invMass = 1.0 / mp.mass;
     b.inertia = mp.inertia;
@@ -425,6 +452,7 @@ RigidBody objectBody(const Object& o, int index, const World& world) {
     b.object = index;
     b.probes = probesOf(o);
     b.rims = rimsOf(o);
+    if (b.exact) setParts(b, {boxAbout(b.shape)});
     if (b.framed) {
         for (Probe& p : b.probes) p.local -= b.centre;
         for (Rim& r : b.rims) r.centre -= b.centre;
@@ -496,6 +524,7 @@ bool groupBody(const Scene& scene, int g, std::map<std::string, GroupFound>& fou
     b.exact = false;
     b.surface = surfaceOf(group, scene.world);
     b.group = g;
+    setParts(b, unionParts(*shape));
     const dquat toBody = glm::conjugate(b.axes);
     for (const Probe& p : it->second.probes.probes)
         b.probes.push_back({toBody * (p.local - b.centre), p.radius});
@@ -729,6 +758,15 @@ double RigidBodies::reachOf(const RigidBody& a, const RigidBody& b) const {
                dt_;
 }
 
+// Whether a group and a body (or two groups) lie so far apart by their hulls, which hold their
+// probes, that no probe of either comes within the pair's reach of the other's parts: probing
+// would find nothing. Checked before the probes, most of which it spares.
+bool RigidBodies::boxesApart(const RigidBody& a, const RigidBody& b) const {
+    if ((!a.groupShape && !b.groupShape) || a.parts.empty() || b.parts.empty()) return false;
+    const double reach = std::max(reachOf(a, b), reachOf(b, a)) + boxSlack(a) + boxSlack(b);
+    return !boxesOverlap(placed(a.hull, a.orient, a.pos), placed(b.hull, b.orient, b.pos), -reach);
+}
+
 // The prober's probes against the shape's SDF; `flip` where the prober is the pair's a, so
 // every normal points from a to b. Keys: offset + probe.
 void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bool flip,
@@ -738,6 +776,7 @@ void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bo
     // then the four more samples of its normal (or, on a bound, the projection onto its surface).
     auto probe = [&](const dvec3& at, double radius, int key, const dvec3& centre) {
         if (glm::length(at - shape.pos) - radius >= shape.bound + reach) return;
+        if (beyondParts(shape, at, radius + reach)) return;
         const double bound = distanceTo(shape, at);
         if (bound - radius >= reach) return;
         const ShapeSample sample = shape.exact
@@ -761,6 +800,7 @@ void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bo
         // than the distance: a rim whose centre is that far out of reach has nothing to find.
         const double rimReach = rim.radius + rim.tube + reach;
         if (glm::length(c - shape.pos) >= shape.bound + rimReach) continue;
+        if (beyondParts(shape, c, rimReach)) continue;
         if (distanceTo(shape, c) >= rimReach) continue;
         const std::vector<dvec3> support = rimSupport(c, axis, rim.radius, normalAt(shape, c));
         for (size_t k = 0; k < support.size(); ++k)
@@ -790,6 +830,7 @@ void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bo
     const dvec3 semi(prober.shape.size);
     const double longest = std::max({semi.x, semi.y, semi.z});
     if (glm::length(prober.pos - shape.pos) >= shape.bound + longest + reach) return;
+    if (beyondParts(shape, prober.pos, longest + reach)) return;
     if (distanceTo(shape, prober.pos) >= longest + reach) return;
     const dvec3 down = glm::conjugate(prober.orient) * -normalAt(shape, prober.pos);
     const dvec3 at = prober.pos + prober.orient * ellipsoidSupport(semi, down);
@@ -826,6 +867,7 @@ void RigidBodies::collidePair(int i, int j) {
     candidates_.clear();
     const RigidBody &bi = bodies_[size_t(i)], &bj = bodies_[size_t(j)];
     if (!collideAnalytic(bi, bj)) {
+        if (boxesApart(bi, bj)) return;
         probeShape(bj, bi, false, 0);
         probeShape(bi, bj, true, 128);
     }

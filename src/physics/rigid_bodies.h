@@ -25,6 +25,7 @@
 #include "broadphase.h"
 #include "contact_solver.h"
 #include "group_body.h"
+#include "oriented_box.h"
 #include "rigid_probes.h"
 #include "static_collider.h"
 #include "warm_starts.h"
@@ -66,6 +67,11 @@ struct RigidBody {
     int staticIds = 0;          // its first StaticCollider id (probes, rims, then the whole body)
     std::vector<Probe> probes;  // in the body's frame
     std::vector<Rim> rims;      // in the body's frame
+    // Boxes in the body's frame that no point is nearer than its shape (an exact object's own
+    // box, a sharp union's members', unionParts), and the box about them all, which holds its
+    // probes. No parts where its distance is a bound that may lie nearer.
+    std::vector<OrientedBox> parts;
+    OrientedBox hull;
 
     glm::dquat shapeOrient() const;  // the shape's turn in the world (the scene's orient)
     glm::dvec3 origin() const;       // the shape's origin in the world (the scene's pos)
@@ -184,6 +190,7 @@ private:
     void probeShape(const RigidBody& prober, const RigidBody& shape, bool flip, int offset);
     bool collideAnalytic(const RigidBody& a, const RigidBody& b);
     double reachOf(const RigidBody& a, const RigidBody& b) const;
+    bool boxesApart(const RigidBody& a, const RigidBody& b) const;
     void sortBottomUp();
     static RigidContact contactFrom(const Candidate& c, double height, std::uint64_t pair);
     // `centre`: the probe's, where b holds it; else the point itself, a point of b's surface.

@@ -1,0 +1,84 @@
+// oriented_box.cpp — boxes about shapes, their distances and overlaps (oriented_box.h).
+#include "oriented_box.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace mb {
+
+using glm::dmat3;
+using glm::dvec3;
+
+namespace {
+
+dvec3 halfExtents(const SdfObject& o) {
+    const double r = o.radius, h = 0.5 * double(o.height);
+    switch (o.type) {
+        case ShapeType::Sphere:
+            return dvec3(r);
+        case ShapeType::Box:
+        case ShapeType::Ellipsoid:
+            return dvec3(o.size);
+        case ShapeType::Torus:
+            return dvec3(r + o.minor, o.minor, r + o.minor);
+        case ShapeType::Capsule:
+            return dvec3(r, h + r, r);
+        case ShapeType::Cylinder:
+            return dvec3(r, h, r);
+        case ShapeType::Cone:  // widest at its base or at its top
+            return dvec3(std::max(r, double(o.top)), h, std::max(r, double(o.top)));
+    }
+    return dvec3(o.bound);
+}
+
+}  // namespace
+
+OrientedBox boxAbout(const SdfObject& o) {
+    return {dvec3(o.pos), glm::transpose(dmat3(o.toLocal)), halfExtents(o)};
+}
+
+OrientedBox placed(const OrientedBox& b, const glm::dquat& turn, const dvec3& shift) {
+    return {shift + turn * b.centre, glm::mat3_cast(turn) * b.axes, b.half};
+}
+
+// Each box reaches Σ_k half_k·|axis_k| from its centre along the parent's axes.
+OrientedBox boxAround(const std::vector<OrientedBox>& boxes) {
+    if (boxes.empty()) return {};
+    dvec3 lo(1e300), hi(-1e300);
+    for (const OrientedBox& b : boxes) {
+        dvec3 reach(0.0);
+        for (int k = 0; k < 3; ++k) reach += b.half[k] * glm::abs(b.axes[k]);
+        lo = glm::min(lo, b.centre - reach);
+        hi = glm::max(hi, b.centre + reach);
+    }
+    return {0.5 * (lo + hi), dmat3(1.0), 0.5 * (hi - lo)};
+}
+
+double distanceToBox(const OrientedBox& b, const dvec3& p) {
+    const dvec3 local = glm::transpose(b.axes) * (p - b.centre);
+    return glm::length(glm::max(glm::abs(local) - b.half, dvec3(0.0)));
+}
+
+bool boxesOverlap(const OrientedBox& a, const OrientedBox& b, double slack) {
+    const dvec3 d = b.centre - a.centre;
+    auto apart = [&](dvec3 axis) {
+        const double len = glm::length(axis);
+        if (len < 1e-9) return false;
+        axis /= len;
+        double ra = 0.0, rb = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            ra += a.half[k] * std::abs(glm::dot(a.axes[k], axis));
+            rb += b.half[k] * std::abs(glm::dot(b.axes[k], axis));
+        }
+        return std::abs(glm::dot(d, axis)) >= ra + rb - slack;
+    };
+    for (int i = 0; i < 3; ++i)
+        if (apart(a.axes[i]) || apart(b.axes[i])) return false;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (apart(glm::cross(a.axes[i], b.axes[j]))) return false;
+    return true;
+}
+
+}  // namespace mb
