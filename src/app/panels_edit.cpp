@@ -139,6 +139,8 @@ static void sizeFields(Object& o, FieldEdit& e) {
     if (t == ShapeType::Capsule || t == ShapeType::Cylinder || t == ShapeType::Cone)
         fieldFloat("height", Field::Height, &o.height, e);
     if (t == ShapeType::Cone) fieldFloat("top", Field::Top, &o.top, e);
+    if (hasEdges(t)) fieldFloat("round", Field::Round, &o.round, e);
+    fieldFloat("shell", Field::Shell, &o.shell, e);
     fitShape(o);  // a cone's top below its radius, rounds and walls within the shape
 }
 
@@ -206,6 +208,32 @@ static void objectFields(UiContext& c, int i, Place place) {
     if (e.changed) c.editor.editObjects(before, o, e.key);
 }
 
+// A group's mirror planes and copies: the file's `mirror`, `repeat` and `spacing`.
+static void copiesFields(Group& g, FieldEdit& e) {
+    for (int i = 0; i < 3; ++i) {
+        const char* labels[] = {"mirror x", "y##mirror", "z##mirror"};
+        bool on = g.mirror[i];
+        fieldFlag(labels[i], &on, e,
+                  "Keep the half on the positive side of the group's own plane across this axis,\n"
+                  "and its reflection on the other side.");
+        g.mirror[i] = on;
+        if (i < 2) ImGui::SameLine();
+    }
+    glm::vec3 counts(g.repeat);
+    fieldVec3("repeat", Field::Repeat, &counts, e);
+    const glm::ivec3 wanted(counts);
+    const int copies = wanted.x * wanted.y * wanted.z;
+    if (copies <= kMaxRepeatCopies) {
+        g.repeat = wanted;
+    } else {  // each count in range, their product not: the fields' checks cannot see it
+        *e.error = "repeat makes at most " + std::to_string(kMaxRepeatCopies) + " copies: " +
+                   std::to_string(copies) + " refused";
+        emitEvent("refuse " + *e.error);
+        e.changed = false;
+    }
+    if (g.repeat != glm::ivec3(1)) fieldVec3("spacing", Field::Spacing, &g.spacing, e);
+}
+
 static void groupFields(UiContext& c, int g) {
     const Scene& s = c.editor.scene();
     const Group before = s.groups[size_t(g)];
@@ -222,6 +250,7 @@ static void groupFields(UiContext& c, int g) {
               });
     posField(r, e);
     turnFields(r, e);
+    copiesFields(r, e);
     if (r.parent < 0) motionFields(r, "group", s.world, e);
     else memberNote(s, r.parent);
     ImGui::PopID();

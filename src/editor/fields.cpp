@@ -73,6 +73,14 @@ static const FieldSpec kSpecs[] = {
      "Smooth-blend radius with the objects before; 0 is sharp."},
     {"top", 0, kFar, false, 0, 5, false, false, "%.3f", "m",
      "A cone's top radius: 0 for a point; kept below its base radius."},
+    {"round", 0, kFar, false, 0, 1, false, false, "%.3f", "m",
+     "Edge radius of a box, cylinder or cone; its faces keep their place."},
+    {"shell", 0, kFar, false, 0, 1, false, false, "%.3f", "m",
+     "Wall thickness: 0 for a solid, else hollow inside the surface."},
+    {"repeat", 1, 64, false, 1, 16, true, false, "%.0f", "",
+     "Copies of the group along x, y and z; at most 4096 in all."},
+    {"spacing", 0, kFar, true, 0.01f, 10, false, false, "%.3f", "m",
+     "Between the group's copies, along x, y and z."},
 };
 static_assert(sizeof kSpecs / sizeof kSpecs[0] == size_t(Field::Count), "one row per Field");
 

@@ -308,6 +308,9 @@ void applyGroupEdit(Scene& s, const std::vector<int>& targets, const Group& befo
         Group& t = s.groups[size_t(g)];
         takeParts(before.pos, after.pos, t.pos);
         takeTurn(before, after, t);
+        takeParts(before.mirror, after.mirror, t.mirror);
+        takeParts(before.repeat, after.repeat, t.repeat);
+        takeParts(before.spacing, after.spacing, t.spacing);
         take(before.op, after.op, t.op);
         take(before.blend, after.blend, t.blend);
         if (t.parent < 0) takeMotion(before, after, t);

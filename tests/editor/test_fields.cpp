@@ -44,7 +44,7 @@ TEST(Fields, NonFiniteIsRefusedEverywhere) {
         EXPECT_FALSE(validateField(Field(f), inf, &why)) << fieldSpec(Field(f)).name;
         EXPECT_FALSE(validateField(Field(f), -inf, &why)) << fieldSpec(Field(f)).name;
     }
-    EXPECT_EQ(why, "top must be between 0 and 10000 m");       // the last field
+    EXPECT_EQ(why, "spacing must be above 0 and at most 10000 m");  // the last field
     EXPECT_FALSE(validateField(Field::Position, 1e39, &why));  // finite double, infinite float
     EXPECT_FALSE(validateField(Field::Radius, nan, &why));
     EXPECT_EQ(why, "radius must be a number");

@@ -186,3 +186,23 @@ TEST(SceneEdit, ACopyIsNamedAsBlenderNamesIt) {
     EXPECT_EQ(copyName("lamp.7", used), "lamp.7.001");  // not Blender's three digits
     EXPECT_EQ(copyName("", used), "");
 }
+
+// A group's mirror, repeat and spacing edited with several groups selected go to each, a
+// vector's parts one by one, as every other field does.
+TEST(SceneEdit, AGroupsCopiesEditedGoToEachSelectedGroup) {
+    Scene s;
+    s.groups.resize(2);
+    s.groups[0].name = "a", s.groups[1].name = "b";
+    s.groups[1].repeat = {1, 3, 1};
+    Group before = s.groups[0], after = before;
+    after.mirror.x = true;
+    after.repeat.x = 4;
+    after.spacing.z = 2.5f;
+    applyGroupEdit(s, {0, 1}, before, after);
+    for (const Group& g : s.groups) {
+        EXPECT_EQ(g.mirror, glm::bvec3(true, false, false)) << g.name;
+        EXPECT_EQ(g.spacing, glm::vec3(1, 1, 2.5f)) << g.name;
+    }
+    EXPECT_EQ(s.groups[0].repeat, glm::ivec3(4, 1, 1));
+    EXPECT_EQ(s.groups[1].repeat, glm::ivec3(4, 3, 1));  // its own y count stays
+}

@@ -52,6 +52,11 @@ enum class Field : int {
     Spin,
     Blend,
     Top,
+    Round,
+    Shell,
+    // group
+    Repeat,
+    Spacing,
     Count
 };
 
