@@ -6,6 +6,7 @@
 #include "imgui_input.h"
 #include "marchbox/editor/events.h"
 #include "marchbox/editor/files.h"
+#include "marchbox/editor/picking.h"
 #include "marchbox/gl/gl.h"
 #include "animation_dialog.h"
 #include "render_dialog.h"
@@ -20,6 +21,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -62,6 +64,7 @@ private:
     // Destroyed bottom-up: the scene view's GL objects go while the window's context lives.
     Window window_;
     SceneView view_;
+    Renumbering shownObjects_;  // the editor's objects to the view's, while some are hidden
     Editor editor_;
     UiState ui_;
     RenderDialog renderDialog_;
@@ -191,11 +194,16 @@ void App::openDrops(UiContext& c) {
 //-----------------------------------------------------------------------------
 // While playing along the keyframes the view shows the path's camera, not the record. The
 // version tells the two apart too, so pausing (which changes no scene) draws the record again.
+// Objects hidden with the Objects list's eye are left out of the view.
 void App::syncView(double now) {
     const uint64_t version = editor_.document().version() * 2 + (editor_.followsPath() ? 1 : 0);
-    if (!editor_.followsPath())
-        return view_.sync(editor_.scene(), version, ui_.render, ui_.quality, now);
-    Scene shown = editor_.scene();
+    const Scene& scene = editor_.scene();
+    const bool anyHidden = std::any_of(scene.objects.begin(), scene.objects.end(),
+                                       [](const Object& o) { return o.hidden; });
+    shownObjects_ = {};
+    if (!editor_.followsPath() && !anyHidden)
+        return view_.sync(scene, version, ui_.render, ui_.quality, now);
+    Scene shown = anyHidden ? visibleScene(scene, &shownObjects_) : scene;
     shown.camera = editor_.shownCamera();
     view_.sync(shown, version, ui_.render, ui_.quality, now);
 }
@@ -208,7 +216,9 @@ void App::present(int width, int height) {
     animationDialog_.work(0.03);
     // A changed scene draws its preview first, so this frame shows the change; bands of
     // refinement wait until after the swap, so the UI never waits for them.
-    const int selected = editor_.selection().object();
+    int selected = editor_.selection().object();  // as the view numbers it
+    if (selected >= 0 && selected < int(shownObjects_.objects.size()))
+        selected = shownObjects_.objects[size_t(selected)];
     double sceneMs =
         timed([&] { return view_.update(width, height, selected, StepKind::Preview); });
     glViewport(0, 0, width, height);

@@ -434,11 +434,62 @@ static void carvedTooltip(const Scene& s, const std::string& row, int cut) {
                          "them, or list the subtraction before it.");
 }
 
+// The eye and the lock before an object's row, drawn as small glyphs, faint while off. A click
+// toggles them for this session (Editor::setHidden, setLocked).
+static bool glyphButton(const char* id, bool on, const std::string& mark, const char* tooltip) {
+    const float side = ImGui::GetFrameHeight();
+    const bool clicked = ImGui::InvisibleButton(id, ImVec2(side, side));
+    markItem(mark);
+    itemTooltip(mark, tooltip);
+    ImGui::SameLine();
+    return clicked;
+}
+
+static void drawEye(ImVec2 at, float side, bool open) {
+    ImDrawList* d = ImGui::GetWindowDrawList();
+    const ImU32 ink = ImGui::GetColorU32(open ? ImGuiCol_Text : ImGuiCol_TextDisabled);
+    const ImVec2 c(at.x + 0.5f * side, at.y + 0.5f * side);
+    const float w = 0.38f * side, h = 0.22f * side;
+    d->AddBezierQuadratic({c.x - w, c.y}, {c.x, c.y - 2 * h}, {c.x + w, c.y}, ink, 1.2f);
+    d->AddBezierQuadratic({c.x - w, c.y}, {c.x, c.y + 2 * h}, {c.x + w, c.y}, ink, 1.2f);
+    if (open) d->AddCircleFilled(c, 0.12f * side, ink);
+    else d->AddLine({c.x - w, c.y + h}, {c.x + w, c.y - h}, ink, 1.2f);
+}
+
+static void drawLock(ImVec2 at, float side, bool locked) {
+    ImDrawList* d = ImGui::GetWindowDrawList();
+    const ImU32 ink = ImGui::GetColorU32(locked ? ImGuiCol_Text : ImGuiCol_TextDisabled);
+    const float x0 = at.x + 0.28f * side, x1 = at.x + 0.72f * side, y = at.y + 0.48f * side;
+    d->AddRectFilled({x0, y}, {x1, at.y + 0.8f * side}, ink, 1.0f);
+    const float r = 0.5f * (x1 - x0) - 1.5f, cx = 0.5f * (x0 + x1) + (locked ? 0.0f : r);
+    d->PathArcTo({cx, y}, r, 3.1416f, 2.0f * 3.1416f);
+    d->PathStroke(ink, 0, 1.5f);
+}
+
+static void viewToggles(UiContext& c, int object) {
+    const Object& o = c.editor.scene().objects[size_t(object)];
+    const float side = ImGui::GetFrameHeight();
+    const std::string row = "Objects/" + std::to_string(object);
+    ImVec2 at = ImGui::GetCursorScreenPos();
+    if (glyphButton("eye", !o.hidden, row + " eye",
+                    "Shown in the view; a click hides it there, for this session."))
+        c.editor.setHidden(object, !o.hidden);
+    drawEye(at, side, !o.hidden);
+    at = ImGui::GetCursorScreenPos();
+    if (glyphButton("lock", o.locked, row + " lock",
+                    "Locked: a click in the view or a box passes it by. A click frees it."))
+        c.editor.setLocked(object, !o.locked);
+    drawLock(at, side, o.locked);
+}
+
 // One row; for a group, whether it is open (its members' rows follow, pushed one level in).
 static bool treeRow(UiContext& c, Item row) {
     const Scene& s = c.editor.scene();
     ImGui::PushID(row.kind == ItemKind::Group ? -1 - row.index : row.index);
     const float swatchSide = ImGui::GetFrameHeight();
+    if (row.kind == ItemKind::Object) viewToggles(c, row.index);
+    else ImGui::Dummy(ImVec2(2.0f * swatchSide + ImGui::GetStyle().ItemSpacing.x, swatchSide));
+    if (row.kind != ItemKind::Object) ImGui::SameLine();
     if (row.kind == ItemKind::Object &&
         s.objects[size_t(row.index)].material < int(s.materials.size()))
         swatch(s.materials[size_t(s.objects[size_t(row.index)].material)]);

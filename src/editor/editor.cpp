@@ -490,6 +490,21 @@ bool Editor::removeSelected(std::string* why) {
     });
 }
 
+// Hidden or locked, an object can no longer be clicked: it leaves the selection, as in Blender.
+void Editor::setHidden(int object, bool hidden) {
+    if (object < 0 || object >= int(scene().objects.size())) return;
+    edit(hidden ? "Hide object" : "Show object",
+         [&](Scene& s) { s.objects[size_t(object)].hidden = hidden; });
+    if (hidden && sel_.has(ItemKind::Object, object)) toggle({ItemKind::Object, object});
+}
+
+void Editor::setLocked(int object, bool locked) {
+    if (object < 0 || object >= int(scene().objects.size())) return;
+    edit(locked ? "Lock object" : "Unlock object",
+         [&](Scene& s) { s.objects[size_t(object)].locked = locked; });
+    if (locked && sel_.has(ItemKind::Object, object)) toggle({ItemKind::Object, object});
+}
+
 std::string Editor::copySelection() const {
     std::string text = copyText(scene(), treeItems(sel_));
     if (!text.empty()) emitEvent("copy " + describe(sel_));

@@ -5,9 +5,18 @@
 
 namespace mb {
 
+// Hidden and locked are no part of Scene equality (the file's), but hiding is an edit to undo.
+static bool sameViewFlags(const Scene& a, const Scene& b) {
+    if (a.objects.size() != b.objects.size()) return false;
+    for (size_t i = 0; i < a.objects.size(); ++i)
+        if (a.objects[i].hidden != b.objects[i].hidden || a.objects[i].locked != b.objects[i].locked)
+            return false;
+    return true;
+}
+
 void History::push(const std::string& label, const Scene& before, const Scene& after,
                    uint64_t mergeKey) {
-    if (before == after) return;
+    if (before == after && sameViewFlags(before, after)) return;
     record(label, before, after, mergeKey);
 }
 

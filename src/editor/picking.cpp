@@ -21,19 +21,47 @@ static float reach(const Scene& scene, const SceneSdf& sdf) {
     return far;
 }
 
-int pickObject(const Scene& scene, glm::vec2 pixel, glm::vec2 viewSize) {
+// Objects that match `leave`, erased; *r renumbers.
+template <typename Leave>
+static Scene without(const Scene& scene, Renumbering* r, Leave leave) {
+    std::vector<Item> gone;
+    for (size_t i = 0; i < scene.objects.size(); ++i)
+        if (leave(scene.objects[i])) gone.push_back({ItemKind::Object, int(i)});
+    Scene s = scene;
+    *r = eraseItems(s, gone);
+    return s;
+}
+
+Scene visibleScene(const Scene& scene, Renumbering* r) {
+    return without(scene, r, [](const Object& o) { return o.hidden; });
+}
+
+// What a click can take: neither hidden nor locked. *original is each object's index in `scene`.
+static Scene pickable(const Scene& scene, std::vector<int>* original) {
+    Renumbering r;
+    Scene s = without(scene, &r, [](const Object& o) { return o.hidden || o.locked; });
+    original->assign(s.objects.size(), -1);
+    for (size_t i = 0; i < r.objects.size(); ++i)
+        if (r.objects[i] >= 0) (*original)[size_t(r.objects[i])] = int(i);
+    return s;
+}
+
+int pickObject(const Scene& all, glm::vec2 pixel, glm::vec2 viewSize) {
     if (viewSize.x <= 0.0f || viewSize.y <= 0.0f) return -1;
+    std::vector<int> original;
+    const Scene scene = pickable(all, &original);
     SceneSdf sdf = makeSceneSdf(scene);
     glm::vec3 dir = cameraRay(cameraBasis(scene.camera), pixel, viewSize);
     RayHit hit = castRay(sdf, scene.camera.pos, dir, scene.render.steps, scene.render.epsilon,
                          reach(scene, sdf));
-    return hit.hit && hit.object >= 0 ? hit.object : -1;
+    return hit.hit && hit.object >= 0 ? original[size_t(hit.object)] : -1;
 }
 
 std::vector<Item> objectsInBox(const Scene& scene, glm::vec2 a, glm::vec2 b, glm::vec2 viewSize) {
     const glm::vec2 lo = glm::min(a, b), hi = glm::max(a, b);
     std::vector<Item> inside;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
+        if (scene.objects[i].hidden || scene.objects[i].locked) continue;
         glm::vec2 at;
         const glm::vec3 centre = worldPose(scene, scene.objects[i]).pos;
         if (projectToPixel(scene.camera, centre, viewSize, &at) &&

@@ -2,6 +2,7 @@
 // cannot change the motion.
 #include "editor_session.h"
 
+#include "marchbox/editor/picking.h"
 #include "marchbox/scene/sdf.h"
 
 #include <cmath>
@@ -140,4 +141,49 @@ TEST(EditsInTime, PlaybackFasterThanTheBakeShowsTheFrameAtThePlayHead) {
         }
         e.togglePlay();
     }
+}
+
+// Nothing could be hidden or locked. The eye and the lock are the session's: undoable, never
+// unsaved, never saved.
+TEST(EditsInTime, AHiddenObjectLeavesTheViewAndTheClicksAndComesBackWithUndo) {
+    const std::string path = writeFile("hide.txt",
+                                       "material r:1 g:0 b:0\n"
+                                       "object type:sphere pos:0,3,0 radius:0.5\n"
+                                       "object type:sphere pos:0,3,2 radius:1\n");
+    Editor e = openEditor(path);
+    e.view() = Camera{{0, 3, -6}, {0, 3, 0}, 50};
+    e.select(ItemKind::Object, 0);
+    e.setHidden(0, true);
+    EXPECT_TRUE(e.selection().empty());  // it can no longer be clicked: it leaves
+    EXPECT_FALSE(e.document().dirty());
+    EXPECT_EQ(e.pick({320.5f, 180.5f}, {640, 360}), 1);  // seen through, to the one behind
+    Renumbering r;
+    const Scene shown = visibleScene(e.scene(), &r);
+    ASSERT_EQ(shown.objects.size(), 1u);
+    EXPECT_EQ(shown.objects[0].radius, 1.0f);
+    EXPECT_EQ(r.objects, (std::vector<int>{-1, 0}));
+    std::string error;
+    ASSERT_TRUE(e.saveAs(path, &error)) << error;
+    EXPECT_EQ(saved(path).objects.size(), 2u);  // the file has both, neither hidden
+    EXPECT_FALSE(saved(path).objects[0].hidden);
+    EXPECT_EQ(e.document().history().undoLabel(), "Hide object");
+    ASSERT_TRUE(e.undo());
+    EXPECT_FALSE(e.scene().objects[0].hidden);
+    EXPECT_EQ(e.pick({320.5f, 180.5f}, {640, 360}), 0);
+}
+
+TEST(EditsInTime, ALockedObjectIsDrawnButPassedByClicksAndBoxes) {
+    Editor e = openEditor(writeFile("lock.txt",
+                                    "material r:1 g:0 b:0\n"
+                                    "object type:sphere pos:0,3,0 radius:0.5\n"
+                                    "object type:sphere pos:0,3,2 radius:1\n"));
+    e.view() = Camera{{0, 3, -6}, {0, 3, 0}, 50};
+    e.setLocked(0, true);
+    Renumbering r;
+    EXPECT_EQ(visibleScene(e.scene(), &r).objects.size(), 2u);
+    EXPECT_EQ(e.pick({320.5f, 180.5f}, {640, 360}), 1);
+    EXPECT_EQ(objectsInBox(e.scene(), {0, 0}, {640, 360}, {640, 360}),
+              (std::vector<Item>{{ItemKind::Object, 1}}));
+    e.setLocked(0, false);
+    EXPECT_EQ(e.pick({320.5f, 180.5f}, {640, 360}), 0);
 }

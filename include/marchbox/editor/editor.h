@@ -110,6 +110,10 @@ public:
     enum class Pick { Replace, Climb, Toggle };
     int pick(glm::vec2 pixel, glm::vec2 viewSize, Pick how = Pick::Replace);
     bool removeSelected(std::string* why);     // everything selected, one step
+    // The Objects list's eye and lock, for this session (Object::hidden, locked): one undo step
+    // each, never unsaved. A hidden or locked object leaves the selection.
+    void setHidden(int object, bool hidden);
+    void setLocked(int object, bool locked);
     // Ctrl+C: the selected objects and groups as scene text (copyText); "" for none.
     std::string copySelection() const;
     // Ctrl+V: scene text's objects and groups added (pasteText) as one step, and selected.

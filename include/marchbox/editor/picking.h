@@ -7,6 +7,7 @@
 
 #include "marchbox/editor/camera_control.h"
 #include "marchbox/editor/scene_edit.h"
+#include "marchbox/editor/scene_tree.h"
 #include "marchbox/scene/scene.h"
 
 #include <glm/vec2.hpp>
@@ -17,12 +18,16 @@ namespace mb {
 
 // Index of the object seen at `pixel` of a view of viewSize, or -1 for the ground or the sky.
 // A group's member is picked as itself, where the world sees it (every copy of a repeated or
-// mirrored group picks the member it copies).
+// mirrored group picks the member it copies). Hidden and locked objects are seen through.
 int pickObject(const Scene& scene, glm::vec2 pixel, glm::vec2 viewSize);
 
 // The objects whose centres, in the world, show inside the box with corners `a` and `b`: what a
-// box drag selects. In the order of the list.
+// box drag selects, hidden and locked ones left out. In the order of the list.
 std::vector<Item> objectsInBox(const Scene& scene, glm::vec2 a, glm::vec2 b, glm::vec2 viewSize);
+
+// The scene as the editor's view draws it: without its hidden objects (Object::hidden), which
+// *r renumbers. Render and export draw them all.
+Scene visibleScene(const Scene& scene, Renumbering* r);
 
 // Where the ray through `pixel` meets the horizontal plane y = height. False when the ray runs
 // parallel to it or away from it.

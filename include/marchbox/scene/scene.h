@@ -118,6 +118,10 @@ struct Object {
     float shell = 0.0f;  // wall thickness: 0 solid, else hollow inside the surface
     int group = -1;      // index in Scene::groups of the group it belongs to; -1: top level
     std::string comment{};  // `{}`: aggregates built without it stay warning-free
+    // The editor's, for this session only: not drawn in its view (hidden), not taken by a click
+    // or a box (locked). No file holds them, and Scene equality, which reads the file's keys,
+    // does not see them: they never make a scene unsaved.
+    bool hidden{}, locked{};
 
     // A dynamic object is moved by the simulator, whatever its type; every other top-level
     // object is a static collider, and a member is part of its group's solid. (A version 1
