@@ -356,11 +356,29 @@ static void objectButtons(UiContext& c) {
     moveButtons(c, activeTreeItem(e.selection()), why);  // Group and Ungroup: Edit and Ctrl+G
 }
 
+// The material the Materials panel shows and its buttons act on: the selection's where it is a
+// material (Add, Duplicate), else the panel's own choice. Choosing one in the list while objects
+// are selected makes it the panel's, so the objects stay selected with their fields.
+static int shownMaterial(UiContext& c) {
+    const Selection& sel = c.editor.selection();
+    const int i = sel.kind == ItemKind::Material ? sel.index : c.ui.material;
+    return i < int(c.editor.scene().materials.size()) ? i : -1;
+}
+
+static void chooseMaterial(UiContext& c, int i) {
+    if (c.editor.selection().kind == ItemKind::Material || c.editor.selection().empty()) {
+        c.editor.select(ItemKind::Material, i);
+        return;
+    }
+    c.ui.material = i;
+    emitEvent("select material " + std::to_string(i) + ", objects kept");
+}
+
 static void listButtons(UiContext& c, ItemKind k) {
     if (k == ItemKind::Object) return objectButtons(c);
     Editor& e = c.editor;
     const Selection& sel = e.selection();
-    const int chosen = sel.kind == k ? sel.index : -1;
+    const int chosen = k == ItemKind::Material ? shownMaterial(c) : sel.kind == k ? sel.index : -1;
     std::string* why = c.ui.messages.at(itemPlace(k));
     if (ImGui::Button("Add")) e.add(k, why);
     markItem(itemPath("Add"));
@@ -563,7 +581,10 @@ static void itemList(UiContext& c, ItemKind k, const char* title) {
             ImGui::SameLine();
         }
         const std::string name = itemName(s, k, i);
-        if (ImGui::Selectable(name.c_str(), c.editor.selection().is(k, i))) c.editor.select(k, i);
+        const bool material = k == ItemKind::Material;
+        const bool chosen = material ? shownMaterial(c) == i : c.editor.selection().is(k, i);
+        if (ImGui::Selectable(name.c_str(), chosen))
+            material ? chooseMaterial(c, i) : c.editor.select(k, i);
         markItem(std::string(title) + "/" + name);
         ImGui::PopID();
     }
@@ -581,7 +602,9 @@ static void itemWindow(UiContext& c, ItemKind k, Panel p, const char* title, boo
         listButtons(c, k);
         itemList(c, k, title);
         const Selection& sel = c.editor.selection();
-        if (shows(k, sel.kind) && sel.index >= 0) itemFields(c, sel.kind, sel.index);
+        if (k == ItemKind::Material && shownMaterial(c) >= 0)
+            itemFields(c, k, shownMaterial(c));
+        else if (shows(k, sel.kind) && sel.index >= 0) itemFields(c, sel.kind, sel.index);
         messageLine(c, itemPlace(k));
     }
     ImGui::End();

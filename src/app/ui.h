@@ -48,6 +48,7 @@ struct UiState {
     // Requests raised by menus and shortcuts, carried out by drawDialogs() this frame.
     bool wantOpen = false, wantSaveAs = false, wantObjectPopup = false, wantScreenshot = false;
     bool placeCopies = false;  // Duplicate made copies: they follow the mouse until a click
+    int material = -1;         // the Materials panel's own choice (shownMaterial())
     std::string pathField;                // the Open and Save As dialogs' path
     FolderView browsed;                   // the folder those dialogs show
     std::vector<BrowsePlace> places;      // the folders beside it: named ones, recent ones

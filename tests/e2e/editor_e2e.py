@@ -1657,6 +1657,28 @@ def case_click_type(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+def case_material_keeps(app, scene):
+    """Choosing a material in the Materials panel keeps the selected sphere selected, its fields
+    still there to type into, while the panel shows the material's."""
+    select_first(app, scene)
+    app.menu('Edit', 'Materials')
+    app.click_widget('Materials/1 blue')
+    app.wait('select material 1, objects kept')
+    app.ctrl_click(*scroll_into(app, 'Objects/radius', panel(app, 'Objects')))
+    app.wait('typing Objects/radius')
+    app.type('0.9')
+    app.key('Return')
+    app.wait('edit Edit object')
+    app.type_parts('Materials/colour', ['0.2', '0.4', '0.6'])
+    app.wait('edit Edit material')
+    app.save()
+    check(scene_values(scene, 'object', 'radius')[0] == [0.9], 'the sphere lost its selection')
+    blue = records(scene, 'material')[1]
+    check([blue['r'], blue['g'], blue['b']] == ['0.2', '0.4', '0.6'], 'blue is %s' % blue)
+    app.key('ctrl+q')
+    check(app.finish() == 0, 'exit status not 0')
+
+
 def is_key_mark(rgb):  # a camera key's diamond on the timeline, (255, 210, 60)
     r, g, b = rgb[:3]
     return r > 230 and 180 < g < 235 and b < 100
