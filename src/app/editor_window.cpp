@@ -9,6 +9,7 @@
 #include "marchbox/editor/picking.h"
 #include "marchbox/gl/gl.h"
 #include "animation_dialog.h"
+#include "export_dialog.h"
 #include "render_dialog.h"
 #include "scene_view.h"
 #include "ui.h"
@@ -69,6 +70,7 @@ private:
     UiState ui_;
     RenderDialog renderDialog_;
     AnimationDialog animationDialog_;
+    ExportDialog exportDialog_;
     FrameStats stats_;
     InputState input_;  // this frame's, taken from the window's queue
     ViewportInput viewport_;
@@ -141,6 +143,7 @@ void App::run() {
 
 bool App::idle() const {
     return view_.done() && !renderDialog_.running() && !animationDialog_.running() &&
+           !exportDialog_.running() &&
            !editor_.simulation().playing() && !ui_.previewOrbit && !viewport_.dragging();
 }
 
@@ -176,6 +179,7 @@ void App::buildUi(UiContext& c, int width, int height, double seconds) {
     drawDialogs(c);
     renderDialog_.draw(c);
     animationDialog_.draw(c);
+    exportDialog_.draw(c);
     // A released widget or drag ends its undo step; the next change starts a new one.
     if (!ImGui::IsAnyItemActive() && !viewport_.dragging()) editor_.endEdit();
     ui_.messages.endFrame(editor_.selection(), ImGui::GetTime());

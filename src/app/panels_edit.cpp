@@ -454,7 +454,7 @@ static void carvedTooltip(const Scene& s, const std::string& row, int cut) {
 
 // The eye and the lock before an object's row, drawn as small glyphs, faint while off. A click
 // toggles them for this session (Editor::setHidden, setLocked).
-static bool glyphButton(const char* id, bool on, const std::string& mark, const char* tooltip) {
+static bool glyphButton(const char* id, const std::string& mark, const char* tooltip) {
     const float side = ImGui::GetFrameHeight();
     const bool clicked = ImGui::InvisibleButton(id, ImVec2(side, side));
     markItem(mark);
@@ -489,12 +489,12 @@ static void viewToggles(UiContext& c, int object) {
     const float side = ImGui::GetFrameHeight();
     const std::string row = "Objects/" + std::to_string(object);
     ImVec2 at = ImGui::GetCursorScreenPos();
-    if (glyphButton("eye", !o.hidden, row + " eye",
+    if (glyphButton("eye", row + " eye",
                     "Shown in the view; a click hides it there, for this session."))
         c.editor.setHidden(object, !o.hidden);
     drawEye(at, side, !o.hidden);
     at = ImGui::GetCursorScreenPos();
-    if (glyphButton("lock", o.locked, row + " lock",
+    if (glyphButton("lock", row + " lock",
                     "Locked: a click in the view or a box passes it by. A click frees it."))
         c.editor.setLocked(object, !o.locked);
     drawLock(at, side, o.locked);

@@ -75,9 +75,11 @@ static void fileMenu(UiContext& c) {
     if (menuItem("File", "Save As...")) c.ui.wantSaveAs = true;
     // The two render windows share one place, so one is open at a time.
     if (menuItem("File", "Render...", nullptr, c.ui.showRender))
-        c.ui.showRender = !c.ui.showRender, c.ui.showAnimation = false;
+        c.ui.showRender = !c.ui.showRender, c.ui.showAnimation = c.ui.showExport = false;
     if (menuItem("File", "Render Animation...", nullptr, c.ui.showAnimation))
-        c.ui.showAnimation = !c.ui.showAnimation, c.ui.showRender = false;
+        c.ui.showAnimation = !c.ui.showAnimation, c.ui.showRender = c.ui.showExport = false;
+    if (menuItem("File", "Export Mesh...", nullptr, c.ui.showExport))
+        c.ui.showExport = !c.ui.showExport, c.ui.showRender = c.ui.showAnimation = false;
     ImGui::Separator();
     if (menuItem("File", "Exit", "Ctrl+Q")) request(c, Leave::Exit);
 }
@@ -436,6 +438,7 @@ static void escape(UiContext& c) {
         emitEvent("escape closes a popup");
     } else if (bool* open = c.ui.showRender      ? &c.ui.showRender
                             : c.ui.showAnimation ? &c.ui.showAnimation
+                            : c.ui.showExport    ? &c.ui.showExport
                             : c.ui.showAbout     ? &c.ui.showAbout
                                                  : nullptr) {
         *open = false;

@@ -43,7 +43,8 @@ struct UiState {
     bool showObjects = true, showMaterials = false, showLights = false;
     bool showSimulation = false, showView = false, showHelp = false, showStats = true;
     bool showTimeline = true;
-    bool showRender = false, showAnimation = false, showAbout = false;  // one Render slot
+    bool showRender = false, showAnimation = false, showExport = false;  // one Render slot
+    bool showAbout = false;
 
     // Requests raised by menus and shortcuts, carried out by drawDialogs() this frame.
     bool wantOpen = false, wantSaveAs = false, wantObjectPopup = false, wantScreenshot = false;

@@ -291,7 +291,8 @@ void markPanel() {
 
 unsigned UiState::openPanels() const {
     const bool shown[kPanelCount] = {showObjects, showMaterials,  showLights,
-                                     showView,    showSimulation, showRender || showAnimation,
+                                     showView,    showSimulation,
+                                     showRender || showAnimation || showExport,
                                      showHelp};
     unsigned open = 0;
     for (int p = 0; p < kPanelCount; ++p) open |= shown[p] ? panelBit(Panel(p)) : 0u;

@@ -174,6 +174,24 @@ ExportResult exportScene(const Scene& scene, const std::string& path, const Expo
     return failed("unknown format");
 }
 
+ExportEstimate estimateExport(const Scene& scene, double voxel) {
+    const SceneSdf sdf = makeSceneSdf(scene);
+    ExportEstimate e;
+    e.voxel = voxel > 0.0 ? voxel : defaultVoxel(sdf);
+    if (e.voxel <= 0.0) return e;
+    double area = 0.0;
+    for (const SdfObject& o : sdf.objects) area += 4.0 * 3.14159265 * double(o.bound) * o.bound;
+    // A surface crosses (|nx| + |ny| + |nz|)·area/S² voxel faces, 3/2 on average over the
+    // directions, and each crossed face is a quad of two triangles.
+    const double faces = 1.5 * area / (e.voxel * e.voxel);
+    e.triangles = 2.0 * faces;
+    // A float and its share of OpenVDB's leaf nodes for each voxel of the band; a vertex, a
+    // normal, an index triple and a colour for each triangle.
+    constexpr double kBytesPerVoxel = 8.0, kBytesPerTriangle = 48.0;
+    e.bytes = faces * 2.0 * kBandVoxels * kBytesPerVoxel + e.triangles * kBytesPerTriangle;
+    return e;
+}
+
 ExportResult exportAnimation(const Scene& scene, const std::string& path,
                              const ExportFrames& frames, const ExportSettings& s) {
     MeshFormat format;

@@ -1679,6 +1679,35 @@ def case_material_keeps(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+def case_export_mesh(app, scene):
+    """File > Export Mesh...: the estimate shows, an STL of the scene now is written while the
+    editor stays live, and a fine export cancelled writes nothing."""
+    app.menu('File', 'Export Mesh...')
+    app.widget('export/estimate')
+    out = os.path.join(app.workdir, 'solids.stl')
+    app.type_into('export/file', out, fresh=False)
+    app.click_widget('export/go', fresh=False)
+    app.wait('export started ' + out)
+    check(app.wait('export ', timeout=120).startswith('export wrote ' + out),
+          'the export did not say it wrote %s' % out)
+    data = open(out, 'rb').read()
+    triangles = int.from_bytes(data[80:84], 'little')
+    check(triangles > 1000 and len(data) == 84 + 50 * triangles,
+          'solids.stl holds %d triangles in %d bytes' % (triangles, len(data)))
+    fine = os.path.join(app.workdir, 'fine.stl')
+    app.screenshot()  # and a frame for the panel to scroll its new status into sight
+    app.type_into('export/file', fine, fresh=False)
+    app.type_into('export/voxel', '0.001', fresh=False)  # minutes of work: Cancel comes first
+    app.click_widget('export/go', fresh=False)
+    app.wait('export started ' + fine)
+    app.click_widget('export/cancel')
+    check(app.wait('export ', timeout=120) == 'export cancelled: nothing written',
+          'Cancel did not stop the export')
+    check(not os.path.exists(fine), 'a cancelled export left %s' % fine)
+    app.key('ctrl+q')
+    check(app.finish() == 0, 'exit status not 0')
+
+
 def is_key_mark(rgb):  # a camera key's diamond on the timeline, (255, 210, 60)
     r, g, b = rgb[:3]
     return r > 230 and 180 < g < 235 and b < 100

@@ -3,6 +3,8 @@
 // they should; the run stops when asked, and refuses a grid too fine for the memory.
 #include "mesh.h"
 
+#include "marchbox/export/export.h"
+
 #include "marchbox/scene/sdf.h"
 
 #include <gtest/gtest.h>
@@ -287,4 +289,20 @@ TEST(Mesh, MaterialsAreTheObjectsTheRendererShades) {
     EXPECT_GT(checked, m.triangles.size() * 9 / 10);
     for (size_t i = 0; i < m.points.size(); ++i)
         ASSERT_EQ(points[i], materialAt(scene, sdf, m.points[i]));
+}
+
+// The editor's estimate, told before an export runs, is 3·area/S² for the solids' bounding
+// spheres (3/2 voxel faces crossed a voxel's area, on average over a sphere's directions, two
+// triangles each): a sphere's own, 12π/S². The mesher's count is within a tenth of it.
+TEST(Mesh, TheEstimateCountsASpheresTriangles) {
+    Object ball = shape(ShapeType::Sphere, vec3(0.3f, 1.2f, -0.7f));
+    ball.radius = 1.0f;
+    const double voxel = 1.0 / 32;
+    const Scene scene = sceneOf({ball});
+    const ExportEstimate e = estimateExport(scene, voxel);
+    EXPECT_EQ(e.voxel, voxel);
+    EXPECT_NEAR(e.triangles, 12.0 * kPi / (voxel * voxel), 1.0);
+    const double made = double(meshOf(scene, voxel).triangles.size());
+    EXPECT_NEAR(made / e.triangles, 1.0, 0.1);
+    EXPECT_GT(e.bytes, 0.0);
 }

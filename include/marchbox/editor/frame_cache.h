@@ -24,7 +24,7 @@ struct RunPiece {
     std::shared_ptr<const std::vector<Object>> objects;  // as edited at `from`; null: the start's
     std::shared_ptr<const RunPiece> before;              // the piece it goes on from; null: none
     bool objectsEdited = false;  // the edit at `from` changed the objects, which the start lacks
-    std::shared_ptr<const std::vector<Group>> groups;  // with `objects`: the groups as edited
+    std::shared_ptr<const std::vector<Group>> groups{};  // with `objects`: the groups as edited
 };
 
 // The piece of `run` that holds time t: the last to begin at or before it (an edit at t

@@ -13,7 +13,7 @@ namespace mb {
 struct Selection {
     ItemKind kind = ItemKind::Object;  // the active item's
     int index = -1;                    // the active item; -1: none
-    std::vector<Item> items;           // objects and groups selected (the active one too), sorted
+    std::vector<Item> items{};         // objects and groups selected (the active one too), sorted
 
     bool empty() const { return index < 0 && items.empty(); }
     bool is(ItemKind k, int i) const { return kind == k && index == i && i >= 0; }  // active

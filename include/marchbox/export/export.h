@@ -63,6 +63,17 @@ struct ExportResult {
     size_t triangles = 0;  // in all the file's meshes
 };
 
+// What an export at `voxel` (0: the default) makes, told before it runs: the voxel, and about
+// how many triangles and bytes. The surface is taken as the solids' bounding spheres' (more
+// than it is), crossing 3/2 voxel faces a voxel's area on average over its directions, two
+// triangles to a face; the grid holds the band about it.
+struct ExportEstimate {
+    double voxel = 0.0;
+    double triangles = 0.0;
+    double bytes = 0.0;
+};
+ExportEstimate estimateExport(const Scene& scene, double voxel);
+
 //-----------------------------------------------------------------------------
 // [SECTION] Exporting
 //-----------------------------------------------------------------------------
