@@ -8,11 +8,12 @@ cd "$(dirname "$0")/.."
 # The tests also need ffmpeg (render to .mp4, ffprobe) and GNU parallel (ranges split across
 # processes): without them those tests skip. `marchbox export` meshes with OpenVDB (which brings
 # TBB, Blosc and Imath; its CMake module also asks for Boost.Iostreams) and writes glTF with
-# TinyGLTF. Bullet runs beside the simulator in `marchbox report physics`.
+# TinyGLTF. Bullet runs beside the simulator in `marchbox report physics`. assimp-utils gives the
+# export tests a second reader of every mesh format (`assimp info`); without it those checks skip.
 PACKAGES=(g++ cmake pkg-config libglfw3-dev libglew-dev libglm-dev libimgui-dev
           libosmesa6-dev libegl-dev libgtest-dev libstb-dev libpng-dev xvfb xauth xdotool
           x11-utils python3 ffmpeg parallel libopenvdb-dev libboost-iostreams-dev libtinygltf-dev
-          libbullet-dev)
+          libbullet-dev assimp-utils)
 
 # install_missing PACKAGE...: apt-get install those not installed; without root, print the
 # command to run and fail.

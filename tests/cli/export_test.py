@@ -9,6 +9,9 @@ Groups, each its own CTest test (cli.export_GROUP):
             --seconds moves the falling ball; piped, standard error stays empty
   gltf      a still and an animated .glb pass the Khronos glTF validator (npm's gltf-validator,
             installed into BUILD/gltf-validator on first use; where npm cannot fetch it, skipped)
+  assimp    each format, and an animated .glb, read by another program's importers (Open Asset
+            Import Library's `assimp info`, Debian's assimp-utils; where it is missing, skipped):
+            exit 0, and the meshes, vertices and faces it counts are those the file says it holds
   animated  --frames A-B: one node per dynamic body, the static solids in one more, a camera,
             and every animation channel keyed at each of the B−A+1 frames, at t = k / fps;
             the ball's keys fall as `simulate --seconds` says
@@ -223,6 +226,78 @@ def gltf(mb, src, build, scene, tmp):
                        stdin=subprocess.DEVNULL, capture_output=True, timeout=RUN_LIMIT_S,
                        env=dict(os.environ, NODE_PATH=modules))
     check(r.returncode == 1, f"the validator passes a broken file: {r.stdout[-300:]!r}")
+
+
+def assimp_counts(path):
+    """`assimp info --raw PATH` (no joining or splitting of vertices): its summary as a dict
+    ("Meshes", "Vertices", "Faces", ...) of whole numbers; None, after a failure, if it fails."""
+    r = subprocess.run(["assimp", "info", path, "--raw"], stdin=subprocess.DEVNULL,
+                       capture_output=True, timeout=RUN_LIMIT_S)
+    out = r.stdout.decode(errors="replace")
+    if not check(r.returncode == 0, f"assimp info {os.path.basename(path)}: exit {r.returncode}: "
+                 f"{(out + r.stderr.decode(errors='replace'))[-300:]!r}"):
+        return None
+    counts = {}
+    for line in out.splitlines():
+        key, _, value = line.partition(":")
+        if value.strip().isdigit():
+            counts[key.strip()] = int(value)
+    return counts
+
+
+def assimp_agrees(path, want):
+    """Checks that assimp counts what WANT says the file holds, and prints its counts."""
+    got = assimp_counts(path)
+    if got is not None:
+        seen = {k: got.get(k) for k in want}
+        check(seen == want, f"assimp reads {os.path.basename(path)} as {seen}, the file holds {want}")
+        print(f"assimp {os.path.basename(path)}: {seen}")
+
+
+def glb_counts(path):
+    """What a .glb holds by its own JSON: primitives, vertices, triangles, animations, ..."""
+    doc = glb_json(path)
+    prims = [p for m in doc["meshes"] for p in m["primitives"]]
+    count = lambda name: doc["accessors"][name]["count"]  # noqa: E731
+    anims = doc.get("animations", [])
+    return {"Meshes": len(prims),
+            "Vertices": sum(count(p["attributes"]["POSITION"]) for p in prims),
+            "Faces": sum(count(p["indices"]) // 3 for p in prims),
+            "Cameras": len(doc.get("cameras", [])),
+            "Lights": len(doc.get("extensions", {}).get("KHR_lights_punctual", {}).get("lights", [])),
+            "Animations": len(anims),
+            "Animation Channels": len({c["target"]["node"] for a in anims for c in a["channels"]})}
+
+
+def assimp(mb, src, build, scene, tmp):
+    if not shutil.which("assimp"):
+        print("the assimp program is not installed (Debian: apt-get install assimp-utils): skipped")
+        return SKIP
+    at = lambda name: os.path.join(tmp, name)  # noqa: E731
+    for ext in ("stl", "obj", "ply", "glb"):
+        export(mb, scene, at("a." + ext), "--voxel", VOXEL)
+    export(mb, scene, at("run.glb"), "--voxel", VOXEL, "--frames", "0-5")
+    # A raw import keeps each file's vertices as they are: STL has three per triangle, and
+    # assimp's OBJ importer gives every face's corners vertices of their own, so both count 3F.
+    triangles = struct.unpack_from("<I", read(at("a.stl")), 80)[0]
+    assimp_agrees(at("a.stl"), {"Meshes": 1, "Vertices": 3 * triangles, "Faces": triangles})
+    obj = read(at("a.obj")).decode().splitlines()
+    faces = sum(1 for l in obj if l.startswith("f "))
+    used = len({l.split()[1] for l in obj if l.startswith("usemtl ")})
+    assimp_agrees(at("a.obj"), {"Meshes": used, "Vertices": 3 * faces, "Faces": faces})
+    # The PLY's counts from its header alone, so that a short file reaches assimp. assimp finds
+    # a PLY cut among its vertices ("File corrupted") but not one cut among its faces: it
+    # counts the header's faces. `formats` checks the PLY's size against its header.
+    header = read(at("a.ply")).split(b"end_header\n")[0].decode().splitlines()
+    nv, nf = (int(next(l for l in header if l.startswith("element " + e)).split()[2])
+              for e in ("vertex", "face"))
+    assimp_agrees(at("a.ply"), {"Meshes": 1, "Vertices": nv, "Faces": nf})
+    for name in ("a.glb", "run.glb"):
+        assimp_agrees(at(name), glb_counts(at(name)))
+    # The counts above come from each file itself; tie them to one another and to the scene.
+    check(triangles == nf == faces == glb_counts(at("a.glb"))["Faces"] > 1000,
+          f"triangles: STL {triangles}, PLY {nf}, OBJ {faces}, glb {glb_counts(at('a.glb'))['Faces']}")
+    check(glb_counts(at("run.glb"))["Animation Channels"] == 3, "the animated glb moves not 3 nodes")
 
 
 def animated(mb, src, build, scene, tmp):
