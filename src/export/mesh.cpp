@@ -56,6 +56,16 @@ double meshVolume(const TriangleMesh& m) {
     return v / 6.0;
 }
 
+float largestVertexError(const TriangleMesh& m, const std::function<float(glm::vec3)>& distance) {
+    float largest = 0.0f;
+    for (const glm::vec3& p : m.points) largest = std::max(largest, std::abs(distance(p)));
+    return largest;
+}
+
+float largestVertexError(const SceneSdf& sdf, const TriangleMesh& m) {
+    return largestVertexError(m, [&](glm::vec3 p) { return mapObjects(sdf, p).d; });
+}
+
 //-----------------------------------------------------------------------------
 // [SECTION] Meshing an SDF
 //-----------------------------------------------------------------------------

@@ -36,6 +36,11 @@ glm::vec3 faceNormal(const TriangleMesh& m, size_t t);  // unit, outward; 0 for 
 // Unit, area-weighted over the triangles around each point (0,1,0 where they cancel).
 std::vector<glm::vec3> pointNormals(const TriangleMesh& m);
 double meshVolume(const TriangleMesh& m);  // divergence theorem: > 0 when normals point out
+// The farthest any vertex lies from the surface: the largest |distance(p)| over m.points, m.
+float largestVertexError(const TriangleMesh& m, const std::function<float(glm::vec3)>& distance);
+// The same by the scene's SDF, mapObjects(sdf, p).d: the error itself where that is exact, and
+// where it is a bound (blends, subtractions), no more than the error.
+float largestVertexError(const SceneSdf& sdf, const TriangleMesh& m);
 
 //-----------------------------------------------------------------------------
 // [SECTION] Meshing an SDF

@@ -72,14 +72,6 @@ long eulerCharacteristic(const TriangleMesh& m) {
     return long(m.points.size()) - long(m.triangles.size()) * 3 / 2 + long(m.triangles.size());
 }
 
-// The farthest any vertex is from the surface, by the exact distance `distance`.
-template <typename F>
-float worstVertex(const TriangleMesh& m, F distance) {
-    float worst = 0.0f;
-    for (const vec3& p : m.points) worst = std::max(worst, std::abs(distance(p)));
-    return worst;
-}
-
 // Outward: each triangle faces away from the solid, along the SDF's gradient at its centroid.
 template <typename F>
 size_t inwardTriangles(const TriangleMesh& m, F sdf) {
@@ -111,6 +103,21 @@ float segmentDistance(vec2 p, vec2 a, vec2 b) {
 // for a sphere; a sharp edge loses (convex) or gains (concave) at most the cells' corner along
 // it, a right triangle of legs S: S²/2 per metre of edge.
 
+// Points placed at known distances from a sphere of radius 1: 0.2 outside, 0.3 inside, on it.
+// The largest is the inside one, so an error taken without its sign's |·| would say 0.2.
+TEST(Mesh, LargestVertexErrorIsTheFarthestPointEitherSide) {
+    const vec3 centre(0.3f, 1.2f, -0.7f);
+    Object ball = shape(ShapeType::Sphere, centre);
+    ball.radius = 1.0f;
+    TriangleMesh m;
+    m.points = {centre + vec3(1.2f, 0, 0), centre + vec3(0, -0.7f, 0), centre + vec3(0, 0, 1)};
+    m.triangles = {{0, 1, 2}};
+    // float rounding of the points, a few ulps of 1
+    EXPECT_NEAR(largestVertexError(makeSceneSdf(sceneOf({ball})), m), 0.3f, 1e-6f);
+    m.points.erase(m.points.begin() + 1);  // the inside one
+    EXPECT_NEAR(largestVertexError(makeSceneSdf(sceneOf({ball})), m), 0.2f, 1e-6f);
+}
+
 TEST(Mesh, SphereIsClosedOutwardNearItsRadiusAndHoldsItsVolume) {
     const vec3 centre(0.3f, 1.2f, -0.7f);  // off the grid's lattice
     Object ball = shape(ShapeType::Sphere, centre);
@@ -121,7 +128,7 @@ TEST(Mesh, SphereIsClosedOutwardNearItsRadiusAndHoldsItsVolume) {
     EXPECT_TRUE(closedAndOriented(m));
     EXPECT_EQ(eulerCharacteristic(m), 2);
     auto sdf = [&](vec3 p) { return sdSphere(p - centre, 1.0f); };
-    const float worst = worstVertex(m, sdf);
+    const float worst = largestVertexError(m, sdf);
     EXPECT_LE(worst, voxel / 2);
     EXPECT_EQ(inwardTriangles(m, sdf), 0u);
     const double exact = 4.0 / 3.0 * kPi, volume = meshVolume(m);
@@ -141,7 +148,7 @@ TEST(Mesh, TurnedBoxIsClosedOutwardNearItsFacesAndHoldsItsVolume) {
     EXPECT_TRUE(closedAndOriented(m));
     EXPECT_EQ(eulerCharacteristic(m), 2);
     auto sdf = [&](vec3 p) { return sdObject(solid, p); };  // exact for a box
-    const float worst = worstVertex(m, sdf);
+    const float worst = largestVertexError(m, sdf);
     EXPECT_LE(worst, voxel / 2);
     EXPECT_EQ(inwardTriangles(m, sdf), 0u);
     const vec3 s = box.size;
@@ -187,7 +194,7 @@ TEST(Mesh, CarvedCupHasItsHole) {
             d = std::min(d, segmentDistance(r, outline[i], outline[i + 1]));
         return d;
     };
-    const float worst = worstVertex(m, distance);
+    const float worst = largestVertexError(m, distance);
     EXPECT_LE(worst, voxel / 2);
     const SceneSdf sdf = makeSceneSdf(scene);
     EXPECT_EQ(inwardTriangles(m, [&](vec3 p) { return mapObjects(sdf, p).d; }), 0u);
