@@ -192,6 +192,18 @@ ExportEstimate estimateExport(const Scene& scene, double voxel) {
     return e;
 }
 
+double exportVertexError(const Scene& scene, double voxel) {
+    const SceneSdf sdf = makeSceneSdf(scene);
+    if (objectBounds(sdf).empty()) return -1.0;
+    TriangleMesh mesh;
+    if (meshPart(scene, voxel > 0.0 ? voxel : defaultVoxel(sdf), ExportSettings(), 0.0, 1.0, &mesh,
+                 nullptr)
+                .status != ExportResult::Written ||
+        mesh.empty())
+        return -1.0;
+    return largestVertexError(sdf, mesh);
+}
+
 ExportResult exportAnimation(const Scene& scene, const std::string& path,
                              const ExportFrames& frames, const ExportSettings& s) {
     MeshFormat format;

@@ -80,6 +80,11 @@ ExportEstimate estimateExport(const Scene& scene, double voxel);
 // The scene's solids after `seconds` of simulation, as one mesh in `path`'s format.
 ExportResult exportScene(const Scene& scene, const std::string& path, const ExportSettings& s);
 
+// The largest |mapObjects| over the vertices of the mesh exportScene makes of `scene` at `voxel`
+// (0: the default) with no simulation, in m: the contract's S/2, measured. Negative where it
+// makes none (no solids, too fine for the memory, every solid thinner than a voxel).
+double exportVertexError(const Scene& scene, double voxel);
+
 // An animated .glb: the static solids as one node; each dynamic body (object or top-level
 // group) meshed once in its own frame (origin at its pos, unturned) as a node moved by its
 // simulated pos and turn at every frame; the camera path as an animated camera where the scene
