@@ -22,7 +22,7 @@ static const char* kUsage =
     "       marchbox check SCENE...\n"
     "       marchbox shader SCENE [--uber]\n"
     "       marchbox bench SCENE [--uber] [--size WxH] [--frames N] [--quality Q]\n"
-    "       marchbox report physics|render\n"
+    "       marchbox report physics|render|export\n"
     "       marchbox --help | --version\n"
     "modes: shaded normals depth steps ao shadow id; post passes: none fxaa fxaa-edges "
     "fxaa-direction\n"

@@ -159,6 +159,23 @@ TEST(Mesh, TurnedBoxIsClosedOutwardNearItsFacesAndHoldsItsVolume) {
     EXPECT_NEAR(volume, exact, edges * voxel * voxel / 2);
 }
 
+// A domino of dominoes.txt, 4.6 voxels thick at the scene's default voxel and off the grid's
+// lattice: volumeToMesh put a vertex 0.56 S from its surface near an edge, past the S/2 every
+// vertex is promised. Each of the six thicknesses and offsets tried must keep it.
+TEST(Mesh, ThinBoxesKeepEveryVertexWithinHalfAVoxel) {
+    const double voxel = 0.0175;
+    for (int k = 0; k < 6; ++k) {
+        Object domino = shape(ShapeType::Box, vec3(0.2f * k + 0.013f * k, 0.3f, 0.0071f * k));
+        domino.size = vec3(0.04f + 0.003f * k, 0.3f, 0.15f);
+        const SdfObject solid = makeSdfObject(domino);
+        const TriangleMesh m = meshOf(sceneOf({domino}), voxel);
+        EXPECT_TRUE(closedAndOriented(m)) << k;
+        auto sdf = [&](vec3 p) { return sdObject(solid, p); };
+        EXPECT_LE(largestVertexError(m, sdf), voxel / 2) << "domino " << k;
+        EXPECT_EQ(inwardTriangles(m, sdf), 0u) << k;
+    }
+}
+
 // A cup as the scene format's example has it: a cylinder carved by a narrower one raised 6 cm,
 // both members of a group, so the hole stops 6 cm above the bottom.
 TEST(Mesh, CarvedCupHasItsHole) {
