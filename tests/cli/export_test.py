@@ -346,6 +346,38 @@ def animated(mb, src, build, scene, tmp):
     check(ball[1] > ball[-2] + 0.1, f"the ball does not fall: y {ball[1]:.3f} then {ball[-2]:.3f}")
 
 
+def blender(mb, src, build, scene, tmp):
+    """Debian's Blender imports an animated glb headlessly: the three parts as meshes, the
+    camera, the two lights, and an action for each of the three nodes that move. Blender is no dependency of
+    Marchbox (67 packages, 77 MB to download, 16 s to install here, and python3-numpy for its
+    glTF importer): without it this skips."""
+    if not shutil.which("blender"):
+        print("Blender is not installed (Debian: apt-get install blender): skipped")
+        return SKIP
+    out = os.path.join(tmp, "run.glb")
+    export(mb, scene, out, "--voxel", VOXEL, "--frames", "0-5")
+    # What the import adds to Blender's start-up scene (a cube, a camera, a light). Debian's
+    # Blender 3.4 importer still names numpy's `np.bool`, which Debian's numpy 1.24 dropped: the
+    # alias is put back first, or every import fails in Blender's own code.
+    expr = ("import numpy; numpy.bool = bool; "
+            "import bpy, sys; before = set(bpy.data.objects); "
+            "bpy.ops.import_scene.gltf(filepath=sys.argv[-1]); "
+            "new = [o.type for o in bpy.data.objects if o not in before]; "
+            "print('IMPORTED', new.count('MESH'), new.count('CAMERA'), new.count('LIGHT'), "
+            "len(bpy.data.actions))")
+    # Debian's Blender embeds Debian's Python, which finds its library through the first python3
+    # on PATH: a pyenv or venv one ahead of it hides Debian's numpy, which the importer needs.
+    system = dict(os.environ, PATH="/usr/bin:/bin")
+    r = subprocess.run([shutil.which("blender"), "-b", "--factory-startup", "--python-expr", expr,
+                        "--", out], capture_output=True, timeout=240, env=system)
+    said = [l for l in r.stdout.decode(errors="replace").splitlines() if l.startswith("IMPORTED")]
+    check(r.returncode == 0 and said, f"Blender did not import {out}: {r.stderr.decode()[-300:]}")
+    if said:
+        meshes, cameras, lights, actions = map(int, said[0].split()[1:])
+        check((meshes, cameras, lights, actions) == (3, 1, 2, 3),
+              f"Blender made {meshes} meshes, {cameras} cameras, {lights} lights, {actions} actions")
+
+
 def expect(status, argv, says, tmp):
     """argv exits with `status` and one line on standard error containing `says`; tmp unchanged."""
     def snapshot():
