@@ -233,6 +233,42 @@ TEST(Mesh, CarvedCupHasItsHole) {
     EXPECT_NEAR(volume, exact, edges * voxel * voxel / 2 + walls * sag);
 }
 
+// Shapes with a handle: a torus, and a box with a round hole bored through it. Each mesh is
+// closed and oriented with the Euler characteristic of genus 1 (0), every vertex within S/2,
+// and its volume within 1% of the closed form.
+TEST(Mesh, TorusHasOneHandleAndHoldsItsVolume) {
+    Object ring = shape(ShapeType::Torus, vec3(0.1f, 0.7f, -0.3f));
+    ring.radius = 0.8f;
+    ring.minor = 0.25f;
+    ring.rot = vec3(30, 0, 10);
+    const double voxel = 1.0 / 64;
+    const TriangleMesh m = meshOf(sceneOf({ring}), voxel);
+    EXPECT_TRUE(closedAndOriented(m));
+    EXPECT_EQ(eulerCharacteristic(m), 0);
+    const SdfObject solid = makeSdfObject(ring);
+    EXPECT_LE(largestVertexError(m, [&](vec3 p) { return sdObject(solid, p); }), voxel / 2);
+    const double exact = 2.0 * kPi * kPi * 0.8 * 0.25 * 0.25;
+    EXPECT_NEAR(meshVolume(m), exact, 0.01 * exact);
+}
+
+TEST(Mesh, HoledBoxHasOneHandleAndHoldsItsVolume) {
+    Object box = shape(ShapeType::Box, vec3(0.3f, 0.6f, 0.1f));
+    box.size = vec3(0.5f, 0.4f, 0.5f);
+    Object bore = shape(ShapeType::Cylinder, box.pos);
+    bore.radius = 0.2f;
+    bore.height = 1.2f;  // through the box's 0.8 m and out both sides
+    bore.op = CsgOp::Subtract;
+    const double voxel = 1.0 / 64;
+    const Scene scene = sceneOf({box, bore});
+    const TriangleMesh m = meshOf(scene, voxel);
+    EXPECT_TRUE(closedAndOriented(m));
+    EXPECT_EQ(eulerCharacteristic(m), 0);
+    const SceneSdf sdf = makeSceneSdf(scene);  // a bound: |f| is at most the distance
+    EXPECT_LE(largestVertexError(sdf, m), voxel / 2);
+    const double exact = 1.0 * 0.8 * 1.0 - kPi * 0.2 * 0.2 * 0.8;
+    EXPECT_NEAR(meshVolume(m), exact, 0.01 * exact);
+}
+
 TEST(Mesh, DefaultVoxelIsTheLongestSideOver256) {
     Object box = shape(ShapeType::Box, vec3(1, 2, 3));
     box.size = vec3(0.5f, 2.0f, 1.0f);
