@@ -229,8 +229,9 @@ void ViewportInput::drawSelection(const UiContext& c) const {
     }
 }
 
-// As in Blender, the copies hang on the mouse over the ground at their height, the active one
-// where the mouse is now, the others about it as they stood.
+// As in Blender, the copies move with the mouse over the ground at their height from where
+// their originals stand: a click with the mouse unmoved puts each on its original. Esc leaves
+// them where Duplicate put them, beside.
 void ViewportInput::beginPlacing(UiContext& c) {
     const ImGuiIO& io = ImGui::GetIO();
     const Scene& s = c.editor.scene();
@@ -255,7 +256,7 @@ void ViewportInput::place(UiContext& c) {
     glm::vec3 pos;
     if (!drop &&
         ground_.follow(c.editor.scene().camera, pixel({io.MousePos.x, io.MousePos.y}), view_, &pos))
-        d.move = pos - placedFrom_;
+        d.move = pos - placedFrom_ - kCopyAside;
     c.editor.dragSelection(hold_, d, "Place copies", dragKey());
     if (!drop && !ImGui::IsMouseClicked(ImGuiMouseButton_Left)) return;
     c.editor.endEdit();

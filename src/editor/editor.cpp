@@ -526,7 +526,7 @@ bool Editor::duplicateSelected(std::string* why) {
     if (items.empty()) return sel_.index >= 0 && duplicate(sel_.kind, sel_.index, why);
     std::vector<Item> copies;
     const bool ok = treeEdit(itemsLabel("Duplicate", items), [&](Scene& s, Renumbering* r) {
-        return duplicateItems(s, items, glm::vec3(1.0f, 0.0f, 0.0f), &copies, r, why);
+        return duplicateItems(s, items, kCopyAside, &copies, r, why);
     });
     if (ok) selectItems(copies, false);
     return ok;

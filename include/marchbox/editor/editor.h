@@ -19,12 +19,16 @@
 #include "marchbox/editor/simulation.h"
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <string>
 #include <vector>
 
 namespace mb {
 
 enum class Leave : int { None, NewScene, Open, Exit };
+
+// Where Duplicate puts a copy, in the world, from its original: beside it, 1 m along x.
+inline const glm::vec3 kCopyAside(1.0f, 0.0f, 0.0f);
 
 class Editor {
 public:
