@@ -61,10 +61,15 @@ private:
     void screenshot(int width, int height);
     std::string title() const;
     void syncView(double now);
+    void showScene(uint64_t version);  // shown_ for the document at `version`
 
     // Destroyed bottom-up: the scene view's GL objects go while the window's context lives.
     Window window_;
     SceneView view_;
+    // The scene the view draws where it is not the editor's own (syncView()), as of a version.
+    Scene shown_;
+    bool ownScene_ = false;
+    uint64_t shownVersion_ = ~uint64_t(0);
     Renumbering shownObjects_;  // the editor's objects to the view's, while some are hidden
     Editor editor_;
     UiState ui_;
@@ -198,18 +203,27 @@ void App::openDrops(UiContext& c) {
 //-----------------------------------------------------------------------------
 // While playing along the keyframes the view shows the path's camera, not the record. The
 // version tells the two apart too, so pausing (which changes no scene) draws the record again.
-// Objects hidden with the Objects list's eye are left out of the view.
+// Objects hidden with the Objects list's eye are left out of the view. The scene shown is made
+// again only when the version changes, not every frame.
 void App::syncView(double now) {
     const uint64_t version = editor_.document().version() * 2 + (editor_.followsPath() ? 1 : 0);
+    if (version != shownVersion_) showScene(version);
+    view_.sync(ownScene_ ? shown_ : editor_.scene(), version, ui_.render, ui_.quality, now);
+}
+
+void App::showScene(uint64_t version) {
     const Scene& scene = editor_.scene();
     const bool anyHidden = std::any_of(scene.objects.begin(), scene.objects.end(),
                                        [](const Object& o) { return o.hidden; });
+    shownVersion_ = version;
     shownObjects_ = {};
-    if (!editor_.followsPath() && !anyHidden)
-        return view_.sync(scene, version, ui_.render, ui_.quality, now);
-    Scene shown = anyHidden ? visibleScene(scene, &shownObjects_) : scene;
-    shown.camera = editor_.shownCamera();
-    view_.sync(shown, version, ui_.render, ui_.quality, now);
+    ownScene_ = editor_.followsPath() || anyHidden;
+    if (!ownScene_) {
+        shown_ = Scene{};
+        return;
+    }
+    shown_ = anyHidden ? visibleScene(scene, &shownObjects_) : scene;
+    shown_.camera = editor_.shownCamera();
 }
 
 void App::present(int width, int height) {
