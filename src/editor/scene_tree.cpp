@@ -146,26 +146,21 @@ void reframe(Scene& s, Item it, const Placement& from) {
     setItemPose(s, it, compose(from, ownPose(s, it)));
 }
 
-// A member has no motion: its keys go back to their defaults, as a file would load it.
-template <class R>
-void dropMotion(R& r) {
-    const R none{};
-    r.mass = none.mass;
-    r.vel = none.vel;
-    r.spin = none.spin;
-    r.isStatic = none.isStatic;
-    r.friction = none.friction;
-    r.restitution = none.restitution;
-}
-
-template <class R>
-void takeMotion(R& r, const Group& from) {
+// The motion keys: mass, vel, spin, static, friction and restitution.
+template <class R, class From>
+void takeMotion(R& r, const From& from) {
     r.mass = from.mass;
     r.vel = from.vel;
     r.spin = from.spin;
     r.isStatic = from.isStatic;
     r.friction = from.friction;
     r.restitution = from.restitution;
+}
+
+// A member has no motion: its keys go back to their defaults, as a file would load it.
+template <class R>
+void dropMotion(R& r) {
+    takeMotion(r, R{});
 }
 
 // After `it` changed parent from `oldParent`: joining a group drops its motion; leaving for the
