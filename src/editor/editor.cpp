@@ -491,18 +491,18 @@ bool Editor::removeSelected(std::string* why) {
 }
 
 // Hidden or locked, an object can no longer be clicked: it leaves the selection, as in Blender.
-void Editor::setHidden(int object, bool hidden) {
+void Editor::setViewFlag(int object, bool Object::*flag, bool on, const char* label) {
     if (object < 0 || object >= int(scene().objects.size())) return;
-    edit(hidden ? "Hide object" : "Show object",
-         [&](Scene& s) { s.objects[size_t(object)].hidden = hidden; });
-    if (hidden && sel_.has(ItemKind::Object, object)) toggle({ItemKind::Object, object});
+    edit(label, [&](Scene& s) { s.objects[size_t(object)].*flag = on; });
+    if (on && sel_.has(ItemKind::Object, object)) toggle({ItemKind::Object, object});
+}
+
+void Editor::setHidden(int object, bool hidden) {
+    setViewFlag(object, &Object::hidden, hidden, hidden ? "Hide object" : "Show object");
 }
 
 void Editor::setLocked(int object, bool locked) {
-    if (object < 0 || object >= int(scene().objects.size())) return;
-    edit(locked ? "Lock object" : "Unlock object",
-         [&](Scene& s) { s.objects[size_t(object)].locked = locked; });
-    if (locked && sel_.has(ItemKind::Object, object)) toggle({ItemKind::Object, object});
+    setViewFlag(object, &Object::locked, locked, locked ? "Lock object" : "Unlock object");
 }
 
 std::string Editor::copySelection() const {

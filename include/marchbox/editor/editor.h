@@ -172,6 +172,7 @@ public:
 
 private:
     void leaveNow(Leave what, const std::string& path);
+    void setViewFlag(int object, bool Object::*flag, bool on, const char* label);
     void replace(const Scene& scene, const std::string& path);  // New or Open
     void reload(const Scene& disk);                              // the file changed on disk
     void edited();  // after any change of the scene outside the simulator
