@@ -80,10 +80,14 @@ void ExportDialog::collect() {
     if (!worker_.joinable() || !finished_) return;
     worker_.join();
     const ExportResult& r = result_;
-    if (r.status == ExportResult::Written)
-        status_ = "wrote " + path_ + ": " + std::to_string(r.triangles) + " triangles";
-    else status_ = r.status == ExportResult::Stopped ? "cancelled: nothing written" : r.error;
-    emitEvent("export " + status_);
+    if (r.status != ExportResult::Written) {
+        status_ = r.status == ExportResult::Stopped ? "cancelled: nothing written" : r.error;
+        return emitEvent("export " + status_);
+    }
+    // The file field above holds the whole path; wrapped here it would scroll the form away.
+    const std::string told = ": " + std::to_string(r.triangles) + " triangles";
+    status_ = "wrote " + std::filesystem::path(path_).filename().string() + told;
+    emitEvent("export wrote " + path_ + told);
 }
 
 void ExportDialog::progress() {

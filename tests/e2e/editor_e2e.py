@@ -1121,15 +1121,16 @@ def overlap(a, b):
     return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
-def scroll_into(app, name, rect, timeout=20):
-    """Turns the wheel over rect until widget name shows inside it; returns its centre."""
+def scroll_into(app, name, rect, timeout=20, up=False):
+    """Turns the wheel over rect (down, or up) until widget name shows inside it; returns its
+    centre."""
     app.move((rect[0] + rect[2]) // 2, (rect[1] + rect[3]) // 2)
     deadline = time.time() + timeout
     while time.time() < deadline:
         at = app.shown_at(name, fresh=False)
         if at and rect[1] + 20 < at[1] < rect[3] - 10:
             return at
-        xdotool('click', 5)  # the wheel, down
+        xdotool('click', 4 if up else 5)  # the wheel's buttons
         time.sleep(0.2)
     raise Failure('%s stayed at %s, outside %s, however the wheel turned' % (name, at or 'hidden', rect))
 
@@ -1696,7 +1697,11 @@ def case_export_mesh(app, scene):
           'solids.stl holds %d triangles in %d bytes' % (triangles, len(data)))
     fine = os.path.join(app.workdir, 'fine.stl')
     app.screenshot()  # and a frame for the panel to scroll its new status into sight
-    app.type_into('export/file', fine, fresh=False)
+    # A small window leaves the panel shorter than its form: the status may scroll the field up.
+    app.ctrl_click(*scroll_into(app, 'export/file', panel(app, 'Export Mesh'), up=True))
+    app.wait('typing export/file')
+    app.type(fine)
+    app.key('Return')
     app.type_into('export/voxel', '0.001', fresh=False)  # minutes of work: Cancel comes first
     app.click_widget('export/go', fresh=False)
     app.wait('export started ' + fine)
