@@ -201,9 +201,9 @@ vec2 nearerHit(vec2 best, float t, float id) { return t >= 0.0 && t < best.x ? v
 
 #if PLAIN == 2
 // The plain members' own grid (src/scene/object_grid.cpp over them alone): each cell lists the
-// members whose bounding spheres touch it, and uPlainShapes holds each object's shape in three
-// texels: (centre, radius or major radius), (half-extents, or height and tube radius; type),
-// and the quaternion that turns world into the object's frame.
+// members whose bounding spheres touch it, and uPlainShapes holds each object in three texels:
+// (centre, radius), (0, 0, 0, type) and the quaternion that turns world into the object's frame.
+// Its sizes are its record's in uObjects.
 vec3 turnedByQuat(vec4 q, vec3 v) {
     vec3 u = cross(q.xyz, v) * 2.0;
     return v + q.w * u + cross(q.xyz, u);
@@ -211,34 +211,22 @@ vec3 turnedByQuat(vec4 q, vec3 v) {
 
 bool plainMember(int id) { return id >= 0 && texelFetch(uPlainShapes, 3 * id + 1).w >= 0.0; }
 
-// Only the types with a hit here can be plain members (exactlyMet in src/gl/plain_members.cpp):
-// cones and ellipsoids are marched, so they count for none of the sums below.
+// Object o's exact hit along the ray r + t·d in its frame: the per-type switch over the types
+// with a hit in include/marchbox/scene/shapes.h, written with the scene (scene_compiler.cpp).
+float hitShape(Object o, vec3 r, vec3 d);
+
+// PLAIN_SPHERES_ONLY: of the types a plain member can be, the scene has spheres alone.
 float hitPlainMember(int id, vec3 ro, vec3 rd) {
     vec4 a = texelFetch(uPlainShapes, 3 * id);
     vec3 o = ro - a.xyz;
-#if HAS_SPHERE && (HAS_BOX + HAS_TORUS + HAS_CAPSULE + HAS_CYLINDER == 0)
-    return hitSphere(o, rd, a.w);  // spheres alone: one texel, nothing to turn
+#if PLAIN_SPHERES_ONLY
+    return hitSphere(o, rd, a.w);  // one texel, nothing to turn
 #else
-    vec4 b = texelFetch(uPlainShapes, 3 * id + 1);
-    int type = int(b.w);
 #if HAS_SPHERE
-    if (type == 0) return hitSphere(o, rd, a.w);
+    if (texelFetch(uPlainShapes, 3 * id + 1).w == 0.0) return hitSphere(o, rd, a.w);
 #endif
     vec4 q = texelFetch(uPlainShapes, 3 * id + 2);
-    vec3 lo = turnedByQuat(q, o), ld = turnedByQuat(q, rd);
-#if HAS_BOX
-    if (type == 1) return hitBox(lo, ld, b.xyz);
-#endif
-#if HAS_TORUS
-    if (type == 2) return hitTorus(lo, ld, a.w, b.y);
-#endif
-#if HAS_CAPSULE
-    if (type == 3) return hitCapsule(lo, ld, b.x, a.w);
-#endif
-#if HAS_CYLINDER
-    if (type == 4) return hitCylinder(lo, ld, b.x, a.w);
-#endif
-    return -1.0;
+    return hitShape(uObjects[id], turnedByQuat(q, o), turnedByQuat(q, rd));
 #endif
 }
 

@@ -63,11 +63,10 @@ float shapeClearance(Object o, vec3 ro, vec3 rd, float far, float k) {
     return least;
 }
 
-// Member id's clearance: a ball's from its texel, another shape's from its record. Plain members
-// are of the types intersect.glsl meets exactly: a cone or an ellipsoid is never one.
+// Member id's clearance: a ball's from its texel, another shape's from its record.
 float memberClearance(int id, vec3 ro, vec3 rd, float far, float k) {
     vec4 a = texelFetch(uPlainShapes, 3 * id);
-#if HAS_SPHERE && (HAS_BOX + HAS_TORUS + HAS_CAPSULE + HAS_CYLINDER == 0)
+#if PLAIN_SPHERES_ONLY
     return sphereClearance(ro - a.xyz, rd, a.w, far);  // spheres alone: one texel
 #else
 #if HAS_SPHERE

@@ -10,6 +10,7 @@
 
 #include "marchbox/editor/carved.h"
 #include "marchbox/editor/events.h"
+#include "marchbox/scene/shapes.h"
 
 #include <algorithm>
 #include <imgui.h>
@@ -17,8 +18,7 @@
 
 namespace mb {
 
-static const char* const kShapeNames[kShapeTypeCount] = {
-    "sphere", "box", "torus", "capsule", "cylinder", "cone", "ellipsoid"};
+static constexpr auto kShapeNames = shapeColumn<&ShapeRow::name>();
 static const char* const kOpNames[] = {"union", "subtract", "intersect"};
 static const char* const kLightKinds[] = {"point", "directional"};
 static const char* kObjectPopup = "object popup";
@@ -132,13 +132,11 @@ static void turnFields(R& r, FieldEdit& e) {
 
 static void sizeFields(Object& o, FieldEdit& e) {
     const ShapeType t = o.type;
-    if (t == ShapeType::Box || t == ShapeType::Ellipsoid)
-        fieldVec3("size", Field::HalfExtent, &o.size, e);
-    else fieldFloat("radius", Field::Radius, &o.radius, e);
-    if (t == ShapeType::Torus) fieldFloat("minor", Field::Minor, &o.minor, e);
-    if (t == ShapeType::Capsule || t == ShapeType::Cylinder || t == ShapeType::Cone)
-        fieldFloat("height", Field::Height, &o.height, e);
-    if (t == ShapeType::Cone) fieldFloat("top", Field::Top, &o.top, e);
+    if (reads(t, kSizeKey)) fieldVec3("size", Field::HalfExtent, &o.size, e);
+    if (reads(t, kRadiusKey)) fieldFloat("radius", Field::Radius, &o.radius, e);
+    if (reads(t, kMinorKey)) fieldFloat("minor", Field::Minor, &o.minor, e);
+    if (reads(t, kHeightKey)) fieldFloat("height", Field::Height, &o.height, e);
+    if (reads(t, kTopKey)) fieldFloat("top", Field::Top, &o.top, e);
     if (hasEdges(t)) fieldFloat("round", Field::Round, &o.round, e);
     fieldFloat("shell", Field::Shell, &o.shell, e);
     fitShape(o);  // a cone's top below its radius, rounds and walls within the shape
@@ -146,7 +144,7 @@ static void sizeFields(Object& o, FieldEdit& e) {
 
 static void shapeFields(const Scene& s, int i, Object& o, FieldEdit& e) {
     int type = int(o.type);
-    fieldCombo("type", &type, kShapeNames, kShapeTypeCount, e,
+    fieldCombo("type", &type, kShapeNames.data(), kShapeTypeCount, e,
                "The shape; its size fields follow.");
     if (ShapeType(type) != o.type) o = retypedIn(s, i, ShapeType(type));  // resting where it stood
     posField(o, e);

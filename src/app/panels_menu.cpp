@@ -3,6 +3,7 @@
 #include "widgets.h"
 
 #include "marchbox/editor/events.h"
+#include "marchbox/scene/shapes.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -84,9 +85,6 @@ static void fileMenu(UiContext& c) {
     if (menuItem("File", "Exit", "Ctrl+Q")) request(c, Leave::Exit);
 }
 
-static const char* const kShapeMenuNames[kShapeTypeCount] = {
-    "Sphere", "Box", "Torus", "Capsule", "Cylinder", "Cone", "Ellipsoid"};
-
 // Why Group or Ungroup refused: in Objects when it is open, else on the status line.
 static std::string* objectsMessage(UiContext& c) {
     return c.ui.messages.at(c.ui.messages.onScreen(Place::Objects) ? Place::Objects
@@ -139,9 +137,8 @@ static void editMenu(UiContext& c) {
     ImGui::Separator();
     if (ImGui::BeginMenu("Add")) {  // on the ground below the camera's target, clear of others
         std::string* why = c.ui.messages.at(Place::Status);
-        for (int t = 0; t < kShapeTypeCount; ++t)
-            if (menuItem("Add", kShapeMenuNames[t]))
-                e.add(ItemKind::Object, why, ShapeType(t), viewWindow(c.ui));
+        for (const ShapeRow& row : kShapes)
+            if (menuItem("Add", row.label)) e.add(ItemKind::Object, why, row.type, viewWindow(c.ui));
         if (menuItem("Add", "Light")) e.add(ItemKind::Light, why);
         ImGui::EndMenu();
     } else {

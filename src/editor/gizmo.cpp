@@ -4,6 +4,7 @@
 #include "marchbox/editor/scene_tree.h"
 #include "marchbox/scene/camera.h"
 #include "marchbox/scene/sdf.h"
+#include "marchbox/scene/shapes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -260,22 +261,12 @@ bool GizmoDrag::follow(const Camera& c, glm::vec2 pixel, glm::vec2 viewSize, boo
     return true;
 }
 
-// The length a drag along the object's own axis `axis` sizes, for each shape.
+// The length a drag along the object's own axis `axis` sizes: a size along its axis; the
+// height, or a torus's tube (the ring lies in local xz), along y; else the radius.
 static float* sizedLength(Object& o, int axis) {
-    switch (o.type) {
-        case ShapeType::Sphere:
-            return &o.radius;
-        case ShapeType::Box:
-            return &o.size[axis];
-        case ShapeType::Torus:  // the ring lies in local xz; y is across the tube
-            return axis == 1 ? &o.minor : &o.radius;
-        case ShapeType::Capsule:
-        case ShapeType::Cylinder:
-        case ShapeType::Cone:
-            return axis == 1 ? &o.height : &o.radius;
-        case ShapeType::Ellipsoid:
-            return &o.size[axis];
-    }
+    if (reads(o.type, kSizeKey)) return &o.size[axis];
+    if (axis == 1 && reads(o.type, kHeightKey)) return &o.height;
+    if (axis == 1 && reads(o.type, kMinorKey)) return &o.minor;
     return &o.radius;
 }
 
@@ -283,7 +274,7 @@ static void sizeAlongAxis(Object& o, int axis, float factor, const GizmoSettings
     float* length = sizedLength(o, axis);
     const float was = *length;
     *length = std::max(was * factor, k.minSize);
-    if (o.type == ShapeType::Cone && length == &o.radius) o.top *= *length / was;  // its shape
+    if (reads(o.type, kTopKey) && length == &o.radius) o.top *= *length / was;  // its shape
     fitShape(o);
 }
 
@@ -300,20 +291,12 @@ Object applyGizmo(Object o, const GizmoDelta& d, const GizmoSettings& k) {
 
 // The lengths the object's type uses, which sizing it changes (the file keeps no others).
 static std::vector<float*> lengthsOf(Object& o) {
-    switch (o.type) {
-        case ShapeType::Sphere:
-            return {&o.radius};
-        case ShapeType::Box:
-        case ShapeType::Ellipsoid:
-            return {&o.size.x, &o.size.y, &o.size.z};
-        case ShapeType::Torus:
-            return {&o.radius, &o.minor};
-        case ShapeType::Capsule:
-        case ShapeType::Cylinder:
-        case ShapeType::Cone:
-            return {&o.radius, &o.height};
-    }
-    return {&o.radius};
+    std::vector<float*> lengths;
+    if (reads(o.type, kSizeKey)) lengths = {&o.size.x, &o.size.y, &o.size.z};
+    if (reads(o.type, kRadiusKey)) lengths.push_back(&o.radius);
+    if (reads(o.type, kMinorKey)) lengths.push_back(&o.minor);
+    if (reads(o.type, kHeightKey)) lengths.push_back(&o.height);
+    return lengths;
 }
 
 // The least factor that keeps each of the object's lengths at minSize or more.

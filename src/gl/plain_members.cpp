@@ -2,19 +2,15 @@
 #include "marchbox/gl/plain_members.h"
 
 #include "marchbox/gl/scene_tree.h"
+#include "marchbox/scene/shapes.h"
 
 #include <algorithm>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
-#include <iterator>
 
 namespace mb {
 
 namespace {
-
-// The types intersect.glsl meets in closed form (scene_compiler.cpp's kHitCall).
-constexpr bool kMetExactly[] = {true, true, true, true, true, false, false};
-static_assert(std::size(kMetExactly) == kShapeTypeCount, "say for every ShapeType");
 
 bool sharpUnion(CsgOp op, float blend) { return op == CsgOp::Union && blend <= 0.0f; }
 
@@ -56,18 +52,16 @@ std::vector<ChainItem> chainItems(const Scene& scene, const SceneSdf& sdf) {
 // intersect.glsl's three texels: (centre, radius or major radius), (half-extents, or height and
 // tube radius; type), the world-to-object quaternion.
 void packShape(const SdfObject& o, float* texels) {
-    bool box = o.type == ShapeType::Box;
-    glm::vec3 b = box ? o.size : glm::vec3(o.height, o.minor, 0.0f);
     glm::quat q = glm::quat_cast(o.toLocal);
     const float values[12] = {
-        o.pos.x, o.pos.y, o.pos.z, o.radius, b.x, b.y, b.z, float(int(o.type)), q.x, q.y, q.z, q.w};
+        o.pos.x, o.pos.y, o.pos.z, o.radius, 0.0f, 0.0f, 0.0f, float(int(o.type)), q.x, q.y, q.z, q.w};
     std::copy(values, values + 12, texels);
 }
 
 }  // namespace
 
 bool exactlyMet(const Object& o) {
-    return kMetExactly[int(o.type)] && o.round <= 0.0f && o.shell <= 0.0f;
+    return shapeRow(o.type).hit != nullptr && o.round <= 0.0f && o.shell <= 0.0f;
 }
 
 std::vector<bool> plainMembers(const Scene& scene) {

@@ -3,6 +3,7 @@
 
 #include "marchbox/gl/plain_members.h"
 #include "marchbox/gl/scene_tree.h"
+#include "marchbox/scene/shapes.h"
 
 #include <algorithm>
 #include <functional>
@@ -13,43 +14,6 @@
 namespace mb {
 
 namespace {
-
-// Each type's SDF call, once: `$o` is the object's record, `$q` the point in its frame.
-const char* const kShapeCall[] = {
-    "sdSphere($q, $o.shape.x)",                         // radius
-    "sdBox($q, $o.sizeMinor.xyz)",                      // half-extents
-    "sdTorus($q, $o.shape.x, $o.sizeMinor.w)",          // major radius, tube radius
-    "sdCapsule($q, $o.shape.y, $o.shape.x)",            // height, radius
-    "sdCylinder($q, $o.shape.y, $o.shape.x)",           // height, radius
-    "sdCone($q, $o.shape.y, $o.shape.x, $o.detail.x)",  // height, base and top radii
-    "sdEllipsoid($q, $o.sizeMinor.xyz)",                // semi-axes
-};
-static_assert(std::size(kShapeCall) == kShapeTypeCount, "an SDF call for every ShapeType");
-
-// The same with rounded edges (`round`, $o.detail.y), for the types that have edges.
-const char* const kRoundedCall[] = {
-    nullptr,
-    "sdRoundedBox($q, $o.sizeMinor.xyz, $o.detail.y)",
-    nullptr,
-    nullptr,
-    "sdRoundedCylinder($q, $o.shape.y, $o.shape.x, $o.detail.y)",
-    "sdRoundedCone($q, $o.shape.y, $o.shape.x, $o.detail.x, $o.detail.y)",
-    nullptr,
-};
-static_assert(std::size(kRoundedCall) == kShapeTypeCount, "a rounded call or none for every type");
-
-// Each type's exact hit (shaders/intersect.glsl): `$r` and `$d` are the ray in the object's
-// frame. None where no plain member can be of the type (exactlyMet in plain_members.h).
-const char* const kHitCall[] = {
-    "hitSphere($r, $d, $o.shape.x)",
-    "hitBox($r, $d, $o.sizeMinor.xyz)",
-    "hitTorus($r, $d, $o.shape.x, $o.sizeMinor.w)",
-    "hitCapsule($r, $d, $o.shape.y, $o.shape.x)",
-    "hitCylinder($r, $d, $o.shape.y, $o.shape.x)",
-    nullptr,
-    nullptr,
-};
-static_assert(std::size(kHitCall) == kShapeTypeCount, "a hit call or none for every type");
 
 // Each operator's join onto the chain (shaders/sdf.glsl).
 const char* const kJoin[] = {"joinUnion", "joinSubtract", "joinIntersect"};
@@ -64,7 +28,7 @@ std::string replaceAll(std::string s, const std::string& from, const std::string
 // The object's distance: its type's call, rounded and hollowed where its layout says so.
 std::string shapeCall(ShapeType type, bool rounded, bool shelled, const std::string& record,
                       const std::string& point) {
-    std::string call = rounded ? kRoundedCall[int(type)] : kShapeCall[int(type)];
+    std::string call = rounded ? shapeRow(type).rounded : shapeRow(type).sdf;
     if (shelled) call = "opShell(" + call + ", $o.detail.z)";
     return replaceAll(replaceAll(call, "$o", record), "$q", point);
 }
@@ -102,7 +66,7 @@ std::string rayCall(const std::string& call, const ObjectLayout& o, int i) {
 }
 
 std::string hitLine(const ObjectLayout& o, int i) {
-    return "    best = nearerHit(best, " + rayCall(kHitCall[int(o.type)], o, i) + ", " +
+    return "    best = nearerHit(best, " + rayCall(shapeRow(o.type).hit, o, i) + ", " +
            std::to_string(i) + ".0);" + comment(o, i) + "\n";
 }
 
@@ -334,7 +298,7 @@ SceneLayout sceneLayout(const Scene& scene) {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
         layout.objects.push_back({o.type, o.op, turns(scene, o), o.blend > 0.0f, plain[i],
-                                  o.round > 0.0f && kRoundedCall[int(o.type)] != nullptr,
+                                  o.round > 0.0f && shapeRow(o.type).rounded != nullptr,
                                   o.shell > 0.0f, o.group});
     }
     const std::vector<int> end = groupEnds(scene);
@@ -397,13 +361,21 @@ std::string compileShapeSwitch(unsigned shapes, bool round, bool shell) {
         // A rounded form with no rounding (round 0) is its shape to the bit: one call, where
         // a choice of two would run both for a SIMD group whose objects differ.
         s << "    if (type == " << t << ") return "
-          << shapeCall(type, round && kRoundedCall[t], false, "o", "q") << ";\n";
+          << shapeCall(type, round && kShapes[t].rounded != nullptr, false, "o", "q") << ";\n";
     }
     s << "    return 1e10;\n}\n";
     if (shell)
         s << "\nfloat sdShape(Object o, vec3 q) {\n    float d = sdSolid(o, q);\n"
              "    return o.detail.z > 0.0 ? opShell(d, o.detail.z) : d;\n}\n";
     s << "\nfloat sdObjectLocal(int i, vec3 q) { return sdShape(uObjects[i], q); }\n";
+    // The grid of plain members meets them through their records (intersect.glsl).
+    s << "\n#if PLAIN == 2\nfloat hitShape(Object o, vec3 r, vec3 d) {\n    int type = o.info.x;\n";
+    for (int t = 0; t < kShapeTypeCount; ++t)
+        if ((shapes >> t & 1u) && kShapes[t].hit)
+            s << "    if (type == " << t << ") return "
+              << replaceAll(replaceAll(replaceAll(kShapes[t].hit, "$o", "o"), "$r", "r"), "$d", "d")
+              << ";\n";
+    s << "    return -1.0;\n}\n#endif\n";
     return s.str();
 }
 

@@ -9,6 +9,7 @@
 #include "marchbox/gl/shader.h"
 
 #include "marchbox/scene/sdf.h"
+#include "marchbox/scene/shapes.h"
 
 #include <algorithm>
 #include <cctype>
@@ -45,7 +46,13 @@ static bool anyMirror(const Scene& s) {
 }
 
 // The shapes of format version 2: every scene before cones, ellipsoids, round and shell.
-constexpr unsigned kClassicShapes = (1u << int(ShapeType::Cone)) - 1;
+constexpr unsigned classicShapes() {
+    unsigned shapes = 0;
+    for (const ShapeRow& row : kShapes)
+        if (row.since < 3) shapes |= 1u << int(row.type);
+    return shapes;
+}
+constexpr unsigned kClassicShapes = classicShapes();
 
 // Whether the scene has a cone, an ellipsoid, or a rounded or hollow shape.
 static bool usesVersion3Shapes(const Scene& s) {
@@ -210,22 +217,23 @@ std::vector<std::string> describeFeatures(const ShaderFeatures& f) {
 
 // MODE_SHADED, MODE_NORMALS, ... MODE_ID: the names the shaders compare MODE with, made from
 // the command line's names so that RenderMode is the one list of modes.
-static std::string modeMacro(int mode) {
-    std::string name = "MODE_";
-    for (const char* c = kModeNames[mode]; *c; ++c)
-        name += char(std::toupper(static_cast<unsigned char>(*c)));
-    return name;
+static std::string upperCase(std::string s) {
+    for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+    return s;
 }
+
+static std::string modeMacro(int mode) { return upperCase(std::string("MODE_") + kModeNames[mode]); }
 
 // The macros in the order the prefix lists them.
 static std::vector<std::pair<std::string, long>> featureDefines(const ShaderFeatures& f) {
     std::vector<std::pair<std::string, long>> d = {{"UBER", f.uber}, {"MODE", long(f.mode)}};
     for (int m = 0; m < kRenderModeCount; ++m) d.push_back({modeMacro(m), m});
-    static const char* const shapeDefs[] = {"HAS_SPHERE",   "HAS_BOX",      "HAS_TORUS",
-                                            "HAS_CAPSULE",  "HAS_CYLINDER", "HAS_CONE",
-                                            "HAS_ELLIPSOID"};
-    static_assert(std::size(shapeDefs) == kShapeTypeCount, "a HAS_ macro for every ShapeType");
-    for (int i = 0; i < kShapeTypeCount; ++i) d.push_back({shapeDefs[i], (f.shapes >> i) & 1});
+    unsigned hits = 0;  // the types present that a plain member can be
+    for (const ShapeRow& row : kShapes) {
+        d.push_back({upperCase("HAS_" + std::string(row.name)), (f.shapes >> int(row.type)) & 1});
+        if (row.hit) hits |= f.shapes & 1u << int(row.type);
+    }
+    d.push_back({"PLAIN_SPHERES_ONLY", hits == 1u << int(ShapeType::Sphere)});
     d.insert(d.end(), {{"HAS_SUBTRACT", f.subtract},
                        {"HAS_INTERSECT", f.intersect},
                        {"HAS_BLEND", f.blend},

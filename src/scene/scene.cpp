@@ -2,26 +2,21 @@
 #include "marchbox/scene/scene.h"
 
 #include "marchbox/scene/sdf.h"
+#include "marchbox/scene/shapes.h"
 
 #include <algorithm>
 #include <glm/gtc/quaternion.hpp>
 
 namespace mb {
 
-const char* shapeTypeName(ShapeType t) {
-    static const char* names[kShapeTypeCount] = {"sphere", "box",      "torus", "capsule",
-                                                  "cylinder", "cone", "ellipsoid"};
-    return names[int(t)];
-}
+const char* shapeTypeName(ShapeType t) { return shapeRow(t).name; }
 
 const char* csgOpName(CsgOp op) {
     static const char* names[kCsgOpCount] = {"union", "subtract", "intersect"};
     return names[int(op)];
 }
 
-bool hasEdges(ShapeType t) {
-    return t == ShapeType::Box || t == ShapeType::Cylinder || t == ShapeType::Cone;
-}
+bool hasEdges(ShapeType t) { return shapeRow(t).edges; }
 
 float halfThinnest(const Object& o) {
     switch (o.type) {

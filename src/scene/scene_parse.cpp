@@ -10,6 +10,7 @@
 
 #include "marchbox/scene/printable.h"
 #include "marchbox/scene/sdf.h"
+#include "marchbox/scene/shapes.h"
 
 #include "scene_schema.h"
 
@@ -22,6 +23,7 @@
 #include <limits>
 #include <map>
 #include <regex>
+#include <vector>
 
 namespace mb {
 namespace {
@@ -142,11 +144,27 @@ Expect readValue(std::string_view s, std::optional<T>& v) {
     return nullptr;
 }
 
-// "a, b, ... or c", from the names of the type table.
+// "a, b or c".
+std::string listed(const std::vector<std::string>& names) {
+    std::string s = names.front();
+    for (size_t i = 1; i < names.size(); ++i) s += (i + 1 < names.size() ? ", " : " or ") + names[i];
+    return s;
+}
+
+// The type's names, from the table of shapes: "sphere, box, ... or 0 to 6".
 std::string typeChoices() {
-    std::string s;
-    for (int n = 0; n < kShapeTypeCount; ++n) s += std::string(shapeTypeName(ShapeType(n))) + ", ";
-    return s.substr(0, s.size() - 2) + " or 0 to " + std::to_string(kShapeTypeCount - 1);
+    std::vector<std::string> names;
+    for (const ShapeRow& row : kShapes) names.push_back(row.name);
+    names.push_back("0 to " + std::to_string(kShapeTypeCount - 1));
+    return listed(names);
+}
+
+// The shapes `round` applies to: "box, cylinder or cone".
+std::string edgedShapes() {
+    std::vector<std::string> names;
+    for (const ShapeRow& row : kShapes)
+        if (row.edges) names.push_back(row.name);
+    return listed(names);
 }
 
 Expect readValue(std::string_view s, ShapeType& v) {
@@ -401,8 +419,9 @@ void Parser::object(Fields& fields, std::string comment) {
     objectLines_.push_back(line_);
     Object& o = scene.objects.back();
     o.group = parent;
-    if (o.type >= ShapeType::Cone && version_ < 3)
-        error(quote(shapeTypeName(o.type)) + " needs scene version:3");
+    if (version_ < shapeRow(o.type).since)
+        error(quote(shapeTypeName(o.type)) + " needs scene version:" +
+              std::to_string(shapeRow(o.type).since));
     checkShape(o);
     tree_.push_back({false, int(scene.objects.size()) - 1});
 }
@@ -410,7 +429,7 @@ void Parser::object(Fields& fields, std::string comment) {
 void Parser::checkShape(const Object& o) {
     const bool edged = hasEdges(o.type);
     if (o.round > 0.0f && !edged)
-        error("'round' is for a box, cylinder or cone, not a " +
+        error("'round' is for a " + edgedShapes() + ", not a " +
               std::string(shapeTypeName(o.type)));
     else if (o.round > 0.0f && o.round >= halfThinnest(o))
         error("'round' must be less than " + formatFloat(halfThinnest(o)) +

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "marchbox/scene/scene.h"
+#include "marchbox/scene/shapes.h"
 
 #include <limits>
 #include <string>
@@ -74,18 +75,11 @@ inline bool hasName(const Object& o) { return !o.name.empty(); }
 inline bool movesAlone(const Object& o) { return o.group < 0; }
 inline bool movesAlone(const Group& g) { return g.parent < 0; }
 // Each type writes the size keys it uses.
-inline bool usesRadius(const Object& o) {
-    return o.type != ShapeType::Box && o.type != ShapeType::Ellipsoid;
-}
-inline bool usesSize(const Object& o) {
-    return o.type == ShapeType::Box || o.type == ShapeType::Ellipsoid;
-}
-inline bool usesMinor(const Object& o) { return o.type == ShapeType::Torus; }
-inline bool usesHeight(const Object& o) {
-    return o.type == ShapeType::Capsule || o.type == ShapeType::Cylinder ||
-           o.type == ShapeType::Cone;
-}
-inline bool usesTop(const Object& o) { return o.type == ShapeType::Cone && o.top != 0.0f; }
+inline bool usesRadius(const Object& o) { return reads(o.type, kRadiusKey); }
+inline bool usesSize(const Object& o) { return reads(o.type, kSizeKey); }
+inline bool usesMinor(const Object& o) { return reads(o.type, kMinorKey); }
+inline bool usesHeight(const Object& o) { return reads(o.type, kHeightKey); }
+inline bool usesTop(const Object& o) { return reads(o.type, kTopKey) && o.top != 0.0f; }
 inline bool isRounded(const Object& o) { return o.round != 0.0f; }
 inline bool isShelled(const Object& o) { return o.shell != 0.0f; }
 inline bool isMirrored(const Group& g) { return glm::any(g.mirror); }

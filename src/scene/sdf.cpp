@@ -1,6 +1,7 @@
 // sdf.cpp — signed distance functions and the scene's CSG chain: the CPU mirror of
 // shaders/sdf.glsl and shaders/scene_map.glsl (see sdf.h for where the two differ).
 #include "marchbox/scene/sdf.h"
+#include "marchbox/scene/shapes.h"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -173,7 +174,7 @@ SdfObject makeSdfObject(const Object& o, const Placement& parent) {
     return s;
 }
 
-bool exactShape(const SdfObject& o) { return o.type != ShapeType::Ellipsoid && o.shell <= 0.0f; }
+bool exactShape(const SdfObject& o) { return shapeRow(o.type).exact && o.shell <= 0.0f; }
 
 namespace {
 

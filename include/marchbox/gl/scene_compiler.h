@@ -68,7 +68,8 @@ std::string compileSceneMap(const SceneLayout& layout, bool softShadows);
 
 // sdShape(o, q) and sdObjectLocal(i, q) for the loop, the outline and a plain member's normal: one
 // case per type whose bit is set in `shapes`; `round` and `shell` add the rounded and the hollow
-// forms, chosen by the object's numbers.
+// forms, chosen by the object's numbers. Then hitShape(o, r, d), the exact hit of each of those
+// types that has one, for the grid of plain members (intersect.glsl).
 std::string compileShapeSwitch(unsigned shapes, bool round, bool shell);
 
 }  // namespace mb
