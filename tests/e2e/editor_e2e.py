@@ -810,7 +810,8 @@ def case_render(app, scene):
     check(not [l for l in app.events() if l.startswith('render started')], 'rendered before refusing')
     x, y = app.widget('render/status')
     check(text_in(app.screenshot(), x, y), 'no message in the dialog at %d,%d' % (x, y))
-    app.click_widget('render/file', fresh=False)
+    # The message names the whole path: wrapped, it may have scrolled the field up out of sight.
+    app.click(*scroll_into(app, 'render/file', panel(app, 'Render'), up=True))
     app.key('ctrl+a')
     app.type('render.png')
     app.click_widget('render/start', fresh=False)
