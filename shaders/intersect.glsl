@@ -33,6 +33,16 @@ vec2 ballSpan(vec3 ro, vec3 rd, vec3 c, float r) {
     return vec2(-b - h, -b + h);
 }
 
+// The part of the ray inside the slab lo <= y <= hi.
+vec2 slabSpan(vec3 ro, vec3 rd, float lo, float hi) {
+    float inv = 1.0 / (abs(rd.y) > 1e-20 ? rd.y : 1e-20);
+    vec2 ends = vec2((lo - ro.y) * inv, (hi - ro.y) * inv);
+    return vec2(min(ends.x, ends.y), max(ends.x, ends.y));
+}
+
+// The part of span inside s; empty (x > y) where they do not overlap.
+vec2 meetSpans(vec2 span, vec2 s) { return vec2(max(span.x, s.x), min(span.y, s.y)); }
+
 // The infinite cylinder x² + z² <= r², cut to |y| <= halfHeight: a capped cylinder.
 vec2 cylinderSpan(vec3 ro, vec3 rd, float r, float halfHeight) {
     float a = dot(rd.xz, rd.xz), b = dot(ro.xz, rd.xz), c = dot(ro.xz, ro.xz) - r * r;
@@ -43,9 +53,7 @@ vec2 cylinderSpan(vec3 ro, vec3 rd, float r, float halfHeight) {
     } else if (c > 0.0) {
         side = kNoSpan;
     }
-    float inv = 1.0 / (abs(rd.y) > 1e-20 ? rd.y : 1e-20);
-    vec2 caps = vec2((-halfHeight - ro.y) * inv, (halfHeight - ro.y) * inv);
-    return vec2(max(side.x, min(caps.x, caps.y)), min(side.y, max(caps.x, caps.y)));
+    return meetSpans(side, slabSpan(ro, rd, -halfHeight, halfHeight));
 }
 
 // A convex solid's span gives its hit: the entry, 0 from inside, -1 for a miss.
@@ -84,6 +92,51 @@ float hitCapsule(vec3 ro, vec3 rd, float height, float r) {
     float h = 0.5 * height;
     vec2 s = joinSpans(cylinderSpan(ro, rd, r, h), ballSpan(ro, rd, vec3(0.0, h, 0.0), r));
     return spanHit(joinSpans(s, ballSpan(ro, rd, vec3(0.0, -h, 0.0), r)));
+}
+#endif
+
+#if HAS_CONE
+// The frustum, base r1 at y = -h/2 and top r2 at h/2. Inside its slab the radius R(y) = R0 + s·y
+// is never negative, so there the solid is x² + z² <= R(y)²: a quadratic a·t² + 2b·t + c <= 0
+// along the ray. With a < 0 it holds on two rays, one of them the cone's other nappe, which
+// lies beyond the apex and outside the slab (at most its apex point is on the slab's edge).
+vec2 coneSpan(vec3 ro, vec3 rd, float height, float r1, float r2) {
+    float s = (r2 - r1) / height, Ro = 0.5 * (r1 + r2) + s * ro.y, Rd = s * rd.y;
+    float a = dot(rd.xz, rd.xz) - Rd * Rd, b = dot(ro.xz, rd.xz) - Ro * Rd;
+    float c = dot(ro.xz, ro.xz) - Ro * Ro, h = b * b - a * c;
+    vec2 slab = slabSpan(ro, rd, -0.5 * height, 0.5 * height);
+    if (abs(a) < 1e-12) {  // along a generator: 2b·t + c <= 0
+        if (abs(b) < 1e-20) return c <= 0.0 ? slab : kNoSpan;
+        float t = -0.5 * c / b;
+        return meetSpans(slab, b > 0.0 ? vec2(-1e30, t) : vec2(t, 1e30));
+    }
+    if (h < 0.0) return a < 0.0 ? slab : kNoSpan;
+    vec2 roots = (vec2(-b, -b) + vec2(-1.0, 1.0) * sqrt(h)) / a;
+    if (a > 0.0) return meetSpans(slab, roots);
+    vec2 before = meetSpans(slab, vec2(-1e30, roots.y)), after = meetSpans(slab, vec2(roots.x, 1e30));
+    return before.y - before.x >= after.y - after.x ? before : after;
+}
+
+// Solved from the bounding sphere's entry, where the quadratic's terms are of the shape's size.
+float hitCone(vec3 ro, vec3 rd, float height, float r1, float r2) {
+    float start = spanHit(ballSpan(ro, rd, vec3(0.0), length(vec2(0.5 * height, r1))));
+    if (start < 0.0) return -1.0;
+    float t = spanHit(coneSpan(ro + start * rd, rd, height, r1, r2));
+    return t < 0.0 ? -1.0 : start + t;
+}
+#endif
+
+#if HAS_ELLIPSOID
+// The unit ball in the frame scaled by 1/r, where the ray's direction d is no longer of unit
+// length: |o + t·d| = 1 at t = -b ± sqrt((1 - |q|²) / d·d), q the point of closest approach.
+float hitEllipsoid(vec3 ro, vec3 rd, vec3 r) {
+    vec3 o = ro / r, d = rd / r;
+    float dd = dot(d, d), b = dot(o, d) / dd;
+    vec3 q = o - b * d;
+    float h = 1.0 - dot(q, q);
+    if (h < 0.0) return -1.0;
+    h = sqrt(h / dd);
+    return spanHit(vec2(-b - h, -b + h));
 }
 #endif
 

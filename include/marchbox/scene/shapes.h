@@ -55,9 +55,10 @@ inline constexpr ShapeRow kShapes[] = {
      "hitCylinder($r, $d, $o.shape.y, $o.shape.x)"},
     {ShapeType::Cone, "cone", "Cone", 3, kRadiusKey | kHeightKey | kTopKey, true, true,  //
      "sdCone($q, $o.shape.y, $o.shape.x, $o.detail.x)",
-     "sdRoundedCone($q, $o.shape.y, $o.shape.x, $o.detail.x, $o.detail.y)", nullptr},
+     "sdRoundedCone($q, $o.shape.y, $o.shape.x, $o.detail.x, $o.detail.y)",
+     "hitCone($r, $d, $o.shape.y, $o.shape.x, $o.detail.x)"},
     {ShapeType::Ellipsoid, "ellipsoid", "Ellipsoid", 3, kSizeKey, false, false,  //
-     "sdEllipsoid($q, $o.sizeMinor.xyz)", nullptr, nullptr},
+     "sdEllipsoid($q, $o.sizeMinor.xyz)", nullptr, "hitEllipsoid($r, $d, $o.sizeMinor.xyz)"},
 };
 static_assert(std::size(kShapes) == kShapeTypeCount, "a row for every ShapeType");
 
