@@ -72,4 +72,15 @@ void expectMatchesGolden(const Image& actual, const std::string& name) {
                   << outputPath(name + ".actual.png") << " and .diff.png";
 }
 
+bool interior(const Image& ids, const ReferenceImage& ref, int x, int row) {
+    int id = ref.objectAt(x, row);
+    uint64_t region = ref.regionAt(x, row);
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+            if (objectIdAt(ids, x + dx, row + dy) != id || ref.objectAt(x + dx, row + dy) != id ||
+                ref.regionAt(x + dx, row + dy) != region)
+                return false;
+    return true;
+}
+
 }  // namespace mb::test

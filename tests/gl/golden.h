@@ -3,6 +3,7 @@
 
 #include "marchbox/gl/renderer.h"
 #include "marchbox/gl/image.h"
+#include "marchbox/reference/reference_render.h"
 #include "marchbox/scene/scene.h"
 
 #include <string>
@@ -31,5 +32,10 @@ std::vector<std::string> sceneNames();  // every scenes/*.txt, by stem, sorted
 // Compares with tests/golden/NAME.png. On a mismatch writes NAME.actual.png and NAME.diff.png
 // under build/test-output/. With MARCHBOX_UPDATE_GOLDEN=1 it rewrites the golden instead.
 void expectMatchesGolden(const Image& actual, const std::string& name);
+
+// Whether the GPU's ids and the reference see one object, and the reference one region
+// (reference_render.h), in the whole 3x3 block about (x, row): no edge is near, so a sub-pixel
+// shift between the two cannot show there.
+bool interior(const Image& ids, const ReferenceImage& ref, int x, int row);
 
 }  // namespace mb::test

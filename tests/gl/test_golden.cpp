@@ -18,7 +18,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
                                            "shadows_soft", "reflections", "lights", "legacy",
                                            "extremes", "inside", "pile", "fog", "ao_aa", "sun",
                                            "fog_sun", "mixed_pile", "box_stack", "dominoes",
-                                           "ring_on_peg"),
+                                           "ring_on_peg", "vocabulary"),
                          [](const auto& info) { return std::string(info.param); });
 
 // FXAA is a view setting, not a scene key: its golden is the default scene with the post pass.

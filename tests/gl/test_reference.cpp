@@ -52,19 +52,6 @@ constexpr double kMaxOpen = 3.0;
 constexpr double kMaxPenumbraMean = 2.5;
 constexpr double kMaxPenumbra = 12.0;
 
-// Both sides see one object, and the reference sees one region (reference_render.h), in the
-// whole 3x3 block: no edge is near, so a sub-pixel shift between the two cannot show.
-bool interior(const Image& ids, const ReferenceImage& ref, int x, int row) {
-    int id = ref.objectAt(x, row);
-    uint64_t region = ref.regionAt(x, row);
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx)
-            if (objectIdAt(ids, x + dx, row + dy) != id || ref.objectAt(x + dx, row + dy) != id ||
-                ref.regionAt(x + dx, row + dy) != region)
-                return false;
-    return true;
-}
-
 double largestChannelDiff(const Image& gpu, const ReferenceImage& ref, int x, int row,
                           double* sum) {
     double worst = 0;
@@ -96,7 +83,7 @@ Agreement compare(const Image& gpu, const Image& ids, const ReferenceImage& ref)
     double sum = 0;
     for (int row = 1; row < kH - 1; ++row)
         for (int x = 1; x < kW - 1; ++x) {
-            if (!interior(ids, ref, x, row)) continue;
+            if (!test::interior(ids, ref, x, row)) continue;
             double worst = largestChannelDiff(gpu, ref, x, row, &sum);
             perPixel.push_back(worst);
             if (ref.penumbraAt(x, row)) {
