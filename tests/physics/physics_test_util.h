@@ -2,9 +2,14 @@
 #pragma once
 
 #include "marchbox/physics/physics.h"
+#include "marchbox/scene/scene_io.h"
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <string>
+#include <vector>
 
 namespace mb {
 
@@ -16,6 +21,16 @@ inline Object staticShape(ShapeType type, glm::vec3 pos, glm::vec3 rot = glm::ve
     o.rot = rot;
     o.isStatic = true;
     return o;
+}
+
+// A scene from its text (version 3 where it says so), with a material for its objects to name.
+inline Scene sceneFromText(const std::string& text) {
+    Scene s;
+    std::vector<SceneError> errors;
+    const bool ok = parseScene(text + "material r:0.8 g:0.8 b:0.8\n", &s, &errors);
+    EXPECT_TRUE(ok) << (errors.empty() ? "" : errors[0].message) << " at line "
+                    << (errors.empty() ? 0 : errors[0].line);
+    return s;
 }
 
 inline int stepsFor(double seconds, const PhysicsSettings& s) {

@@ -26,16 +26,6 @@ namespace {
 
 constexpr double kG = 9.81;
 
-// A version 3 scene from its text, with a material for its objects to name.
-Scene load(const std::string& text) {
-    Scene s;
-    std::vector<SceneError> errors;
-    const bool ok = parseScene(text + "material r:0.8 g:0.8 b:0.8\n", &s, &errors);
-    EXPECT_TRUE(ok) << (errors.empty() ? "" : errors[0].message) << " at line "
-                    << (errors.empty() ? 0 : errors[0].line);
-    return s;
-}
-
 void run(PhysicsWorld& w, double seconds) {
     for (int i = 0; i < stepsFor(seconds, w.settings()); ++i) w.step();
 }
@@ -127,7 +117,7 @@ TEST(GroupBodies, TubeRollsDownASlopeAtItsClosedFormAcceleration) {
 // orient·axes⁻¹): the centre found from it wanders by 0.08 m; the body started in the group's
 // turn, not in its principal axes (orient = turn, not turn·axes): 0.09 off the group's turn.
 TEST(GroupBodies, FreeGroupKeepsItsCentreAndAngularMomentum) {
-    Scene s = load(
+    Scene s = sceneFromText(
         "scene version:3\n"
         "world gravity:0 ground:0\n"
         "group name:pair pos:0,2,0 rot:10,20,30 mass:3 spin:1.5,-2,3\n"
@@ -193,7 +183,7 @@ TEST(GroupBodies, FreeGroupKeepsItsCentreAndAngularMomentum) {
 // the ball is measured from the true surface. Planted: the bound taken as the distance (no
 // projection): the ball rests on the lid, its centre 1 m up.
 TEST(GroupBodies, CupCatchesABall) {
-    Scene s = load("scene version:3\nworld gravity:9.81 restitution:0.3 friction:0.5\n" +
+    Scene s = sceneFromText("scene version:3\nworld gravity:9.81 restitution:0.3 friction:0.5\n" +
                    cup("cup", dvec3(0, 0.4, 0), 0.5) +
                    "object type:sphere pos:0.05,2,0 radius:0.2 mass:0.3\n");
     PhysicsWorld w(s);
@@ -267,7 +257,7 @@ TEST(GroupBodies, HoledBoxMassPropertiesMatchTheClosedFormWithinTheBound) {
 // as its own frame does (it sinks through the ground).
 TEST(GroupBodies, ConeAndEllipsoidRestAtTheHeightTheirShapeGives) {
     const double h = 0.6, r = 0.3;
-    Scene s = load(
+    Scene s = sceneFromText(
         "scene version:3\nworld restitution:0.2 friction:0.6\n"
         "object type:cone pos:-2,0.35,0 radius:0.3 top:0.1 height:0.6 mass:1\n"
         "object type:cone pos:0,0.5,0 radius:0.3 height:0.6 rot:0,0,90 mass:1\n"
@@ -295,7 +285,7 @@ TEST(GroupBodies, ConeAndEllipsoidRestAtTheHeightTheirShapeGives) {
 // the other shapes (RigidWorld). Planted: writeBack storing the body's centre as the scene's
 // pos (the group's origin 0.19 m off after the reload, the frustum's 0.13 m).
 TEST(GroupBodies, ASceneSavedMidRunContinuesAsTheRunDoes) {
-    const Scene s = load(
+    const Scene s = sceneFromText(
         "scene version:3\nworld ground:0\n"
         "group name:ell pos:0,8,0 rot:10,0,0 mass:2 vel:1,2,0 spin:2,-3,5\n"
         "object in:ell type:box pos:0.2,0,0 size:0.2,0.05,0.1\n"
