@@ -1,6 +1,8 @@
 // group_body.cpp — a dynamic group's shape, mass properties and probes (group_body.h).
 #include "group_body.h"
 
+#include "marchbox/scene/shapes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -144,9 +146,8 @@ struct Sampler {
     }
 };
 
-bool revolved(const SdfObject& o) {
-    return o.type == ShapeType::Cylinder || o.type == ShapeType::Cone;
-}
+// A side of revolution between flat caps: a cylinder's or a cone's.
+bool revolved(const SdfObject& o) { return shapeRow(o.type).revolved && shapeRow(o.type).edges; }
 
 // Distance from p to a rim's circle (and the sphere it sweeps).
 double toRim(const Rim& r, const dvec3& p) {

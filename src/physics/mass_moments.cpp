@@ -1,6 +1,8 @@
 // mass_moments.cpp — closed-form and integrated moments of solids, and the principal frame.
 #include "mass_moments.h"
 
+#include "marchbox/scene/shapes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -137,7 +139,7 @@ Moments insideOf(const SdfObject& o, double t) {
             return r > t && h > 2.0 * t ? cylinder(r - t, h - 2.0 * t) : Moments{};
         case ShapeType::Cone:
             return coneInside(h, r, o.top, t);
-        case ShapeType::Ellipsoid:
+        case ShapeType::Ellipsoid:  // a bound (closedFormMoments does not ask)
             break;
     }
     return {};
@@ -217,7 +219,8 @@ Moments moved(const Moments& m, const dmat3& turn, const dvec3& move) {
 }
 
 bool closedFormMoments(const SdfObject& o, Moments* out) {
-    if (o.round > 0.0f || (o.shell > 0.0f && o.type == ShapeType::Ellipsoid)) return false;
+    // A bound's level set at −t is no shape moved in: only an exact SDF's wall has a closed form.
+    if (o.round > 0.0f || (o.shell > 0.0f && !shapeRow(o.type).exact)) return false;
     *out = solidOf(o);
     if (o.shell > 0.0f) *out -= insideOf(o, double(o.shell));
     return true;

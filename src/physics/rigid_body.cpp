@@ -2,6 +2,7 @@
 #include "rigid_body.h"
 
 #include "marchbox/scene/sdf.h"
+#include "marchbox/scene/shapes.h"
 
 #include <string>
 
@@ -156,12 +157,11 @@ MassProperties symmetricMass(const Object& o) {
                 .value;
         });
     }
-    m.first = dvec3(0.0, o.type == ShapeType::Cone ? m.first.y : 0.0, 0.0);
+    m.first = dvec3(0.0, shapeRow(o.type).centred ? 0.0 : m.first.y, 0.0);
     for (int c = 0; c < 3; ++c)
         for (int r = 0; r < 3; ++r)
             if (r != c) m.second[c][r] = 0.0;
-    if (o.type == ShapeType::Cylinder || o.type == ShapeType::Cone ||
-        o.type == ShapeType::Capsule || o.type == ShapeType::Torus)
+    if (shapeRow(o.type).revolved)
         m.second[0][0] = m.second[2][2] = 0.5 * (m.second[0][0] + m.second[2][2]);
     return massFromMoments(m, double(o.mass));
 }

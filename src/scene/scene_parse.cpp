@@ -437,7 +437,7 @@ void Parser::checkShape(const Object& o) {
     if (o.shell > 0.0f && o.shell >= halfThinnest(o))
         error("'shell' must be less than " + formatFloat(halfThinnest(o)) +
               ", half the shape's smallest extent");
-    if (o.type == ShapeType::Cone && o.top >= o.radius)
+    if (reads(o.type, kTopKey) && o.top >= o.radius)
         error("'top' must be less than 'radius' (" + formatFloat(o.radius) + ")");
 }
 

@@ -28,37 +28,49 @@ struct ShapeRow {
     ShapeType type;
     const char* name;   // the file's word and the editor's: "cone"
     const char* label;  // the Add menu's: "Cone"
-    int since;          // the first format version that has it
-    unsigned keys;      // SizeKey bits
-    bool exact;         // its SDF is the true distance; otherwise a bound, exact on the surface
-    bool edges;         // `round` rounds its edges (the others have none)
-    const char* sdf;
-    const char* rounded;  // the SDF with rounded edges ($o.detail.y), where it has edges
-    const char* hit;      // the exact ray hit (< 0: a miss), or none where it is marched
+    int since = 1;      // the first format version that has it
+    unsigned keys = 0;  // SizeKey bits
+    bool exact = true;  // its SDF is the true distance; otherwise a bound, exact on the surface
+    bool edges = false;    // `round` rounds its edges (the others have none)
+    bool revolved = false;  // a solid of revolution about local y: its x and z moments are equal
+    bool centred = true;    // its centre of mass is its origin (else on its y axis)
+    const char* sdf = nullptr;
+    const char* rounded = nullptr;  // the SDF with rounded edges ($o.detail.y), where it has edges
+    const char* hit = nullptr;      // the exact ray hit (< 0: a miss), or none where it is marched
 };
 
 inline constexpr ShapeRow kShapes[] = {
-    {ShapeType::Sphere, "sphere", "Sphere", 1, kRadiusKey, true, false,  //
-     "sdSphere($q, $o.shape.x)", nullptr, "hitSphere($r, $d, $o.shape.x)"},
-    {ShapeType::Box, "box", "Box", 1, kSizeKey, true, true,  //
-     "sdBox($q, $o.sizeMinor.xyz)", "sdRoundedBox($q, $o.sizeMinor.xyz, $o.detail.y)",
-     "hitBox($r, $d, $o.sizeMinor.xyz)"},
-    {ShapeType::Torus, "torus", "Torus", 1, kRadiusKey | kMinorKey, true, false,  //
-     "sdTorus($q, $o.shape.x, $o.sizeMinor.w)", nullptr,
-     "hitTorus($r, $d, $o.shape.x, $o.sizeMinor.w)"},
-    {ShapeType::Capsule, "capsule", "Capsule", 1, kRadiusKey | kHeightKey, true, false,  //
-     "sdCapsule($q, $o.shape.y, $o.shape.x)", nullptr,
-     "hitCapsule($r, $d, $o.shape.y, $o.shape.x)"},
-    {ShapeType::Cylinder, "cylinder", "Cylinder", 1, kRadiusKey | kHeightKey, true, true,  //
-     "sdCylinder($q, $o.shape.y, $o.shape.x)",
-     "sdRoundedCylinder($q, $o.shape.y, $o.shape.x, $o.detail.y)",
-     "hitCylinder($r, $d, $o.shape.y, $o.shape.x)"},
-    {ShapeType::Cone, "cone", "Cone", 3, kRadiusKey | kHeightKey | kTopKey, true, true,  //
-     "sdCone($q, $o.shape.y, $o.shape.x, $o.detail.x)",
-     "sdRoundedCone($q, $o.shape.y, $o.shape.x, $o.detail.x, $o.detail.y)",
-     "hitCone($r, $d, $o.shape.y, $o.shape.x, $o.detail.x)"},
-    {ShapeType::Ellipsoid, "ellipsoid", "Ellipsoid", 3, kSizeKey, false, false,  //
-     "sdEllipsoid($q, $o.sizeMinor.xyz)", nullptr, "hitEllipsoid($r, $d, $o.sizeMinor.xyz)"},
+    {.type = ShapeType::Sphere, .name = "sphere", .label = "Sphere", .keys = kRadiusKey,
+     .revolved = true,
+     .sdf = "sdSphere($q, $o.shape.x)",
+     .hit = "hitSphere($r, $d, $o.shape.x)"},
+    {.type = ShapeType::Box, .name = "box", .label = "Box", .keys = kSizeKey, .edges = true,
+     .sdf = "sdBox($q, $o.sizeMinor.xyz)",
+     .rounded = "sdRoundedBox($q, $o.sizeMinor.xyz, $o.detail.y)",
+     .hit = "hitBox($r, $d, $o.sizeMinor.xyz)"},
+    {.type = ShapeType::Torus, .name = "torus", .label = "Torus", .keys = kRadiusKey | kMinorKey,
+     .revolved = true,
+     .sdf = "sdTorus($q, $o.shape.x, $o.sizeMinor.w)",
+     .hit = "hitTorus($r, $d, $o.shape.x, $o.sizeMinor.w)"},
+    {.type = ShapeType::Capsule, .name = "capsule", .label = "Capsule",
+     .keys = kRadiusKey | kHeightKey, .revolved = true,
+     .sdf = "sdCapsule($q, $o.shape.y, $o.shape.x)",
+     .hit = "hitCapsule($r, $d, $o.shape.y, $o.shape.x)"},
+    {.type = ShapeType::Cylinder, .name = "cylinder", .label = "Cylinder",
+     .keys = kRadiusKey | kHeightKey, .edges = true, .revolved = true,
+     .sdf = "sdCylinder($q, $o.shape.y, $o.shape.x)",
+     .rounded = "sdRoundedCylinder($q, $o.shape.y, $o.shape.x, $o.detail.y)",
+     .hit = "hitCylinder($r, $d, $o.shape.y, $o.shape.x)"},
+    {.type = ShapeType::Cone, .name = "cone", .label = "Cone", .since = 3,
+     .keys = kRadiusKey | kHeightKey | kTopKey, .edges = true, .revolved = true,
+     .centred = false,
+     .sdf = "sdCone($q, $o.shape.y, $o.shape.x, $o.detail.x)",
+     .rounded = "sdRoundedCone($q, $o.shape.y, $o.shape.x, $o.detail.x, $o.detail.y)",
+     .hit = "hitCone($r, $d, $o.shape.y, $o.shape.x, $o.detail.x)"},
+    {.type = ShapeType::Ellipsoid, .name = "ellipsoid", .label = "Ellipsoid", .since = 3,
+     .keys = kSizeKey, .exact = false,
+     .sdf = "sdEllipsoid($q, $o.sizeMinor.xyz)",
+     .hit = "hitEllipsoid($r, $d, $o.sizeMinor.xyz)"},
 };
 static_assert(std::size(kShapes) == kShapeTypeCount, "a row for every ShapeType");
 
