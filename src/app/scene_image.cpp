@@ -14,8 +14,7 @@ static double msSince(std::chrono::steady_clock::time_point t) {
 bool SceneImage::update(Renderer& r, Renderer* draft, const PictureKey& key, StepKind only) {
     if (key != key_) {
         key_ = key;
-        draftPreview_ = draft != nullptr;
-        policy_.restart(key.width, key.height, key.aa, key.canAverage, draftPreview_);
+        policy_.restart(key.width, key.height, key.aa, key.canAverage, draft != nullptr);
         changedAt_ = Clock::now();
         passMs_ = 0.0;
     }
@@ -23,7 +22,7 @@ bool SceneImage::update(Renderer& r, Renderer* draft, const PictureKey& key, Ste
     if (step.kind == StepKind::None || step.kind != only) return false;
     double ms = 0.0;
     // A draft renderer ready only since the restart must not draw what the policy takes for a pass.
-    const bool drafted = step.kind == StepKind::Preview && draftPreview_ && draft;
+    const bool drafted = step.kind == StepKind::Preview && policy_.draftPreview() && draft;
     if (draw(drafted ? *draft : r, step, &ms)) {
         policy_.finished(step, ms);
         report(step, ms);

@@ -57,7 +57,6 @@ private:
     PictureKey key_;
     ColorTarget picture_;        // RGBA8, the preview's size or the window's
     bool valid_ = false;         // picture_ holds a drawn image
-    bool draftPreview_ = false;  // the restart planned the preview at draft quality
     Clock::time_point changedAt_;
     double passMs_ = 0.0;  // the bands of the pass under way, so far
     PictureStatus status_;

@@ -69,12 +69,12 @@ glm::vec2 samplePosition(int k, int aa) {
     return grid[size_t(std::clamp(k, 0, aa * aa - 1))];
 }
 
-void Refinement::restart(int width, int height, int aa, bool canAverage, bool draftPreview) {
+void Refinement::restart(int width, int height, int aa, bool canAverage, bool draftAvailable) {
     started_ = true;
     previewed_ = false;
-    draftPreview_ = draftPreview;
     width_ = std::max(1, width);
     height_ = std::max(1, height);
+    draftPreview_ = draftAvailable && !fullSizeFits();
     aa_ = canAverage ? std::max(1, aa) : 1;  // ids: the one sample at the pixel's centre
     samples_ = sampleCount(aa, canAverage, s_);
     sample_ = rowsDone_ = 0;
@@ -120,6 +120,15 @@ ViewStep Refinement::next() const {
     step.weight = 1.0f / float(sample_ + 1);
     step.startsFrame = sample_ == 0 && rowsDone_ == 0;
     return step;
+}
+
+// Whether the view's own full-size frame, at the passes' cost, fits the budget: then a change is
+// drawn whole at the view's quality (a GPU's case), not as a draft. Once so, it stays so while
+// the frame is at most a quarter over, so the picture does not flicker between the two.
+bool Refinement::fullSizeFits() const {
+    if (!cost_.known()) return false;
+    const double slack = draftPreview_ ? 1.0 : 1.25;
+    return estimateMs(cost_.value(), width_, height_, 1) <= slack * budgetMs();
 }
 
 double Refinement::budgetMs() const {

@@ -87,9 +87,11 @@ public:
         : s_(s), cost_(s.learnRate), draftCost_(s.learnRate), otherMs_(s.learnRate) {}
 
     // The picture is out of date: the next step is a preview of the whole width × height view.
-    // With draftPreview it is drawn at cheaper settings than the passes, so even a full-size
-    // preview is not the first pass: the bands draw that too.
-    void restart(int width, int height, int aa, bool canAverage, bool draftPreview = false);
+    // Where a draft renderer is available and the view's own full-size frame does not fit the
+    // budget, the preview is a draft: drawn at cheaper settings than the passes, so even a
+    // full-size one is not the first pass (the bands draw that too).
+    void restart(int width, int height, int aa, bool canAverage, bool draftAvailable = false);
+    bool draftPreview() const { return draftPreview_; }  // the preview planned at the restart
     ViewStep next() const;                           // what to draw now; None once done
     void finished(const ViewStep& step, double ms);  // it was drawn, taking ms
     void otherWork(double ms);  // the rest of a frame (UI, showing the picture, the swap) took ms
@@ -109,6 +111,7 @@ public:
 
 private:
     RefinementSettings s_;
+    bool fullSizeFits() const;
     const RunningMean& previewCost() const;
     const RunningMean& passCost() const;
 
