@@ -108,9 +108,21 @@ unsigned shadowCasters(const Scene& s, float cutoff) {
     return mask;
 }
 
+// The weighted count of the objects a ray may meet exactly: top-level objects of the types with
+// a hit, joined by a sharp union (a group's members are marched with it). Where they stand is
+// left out, so a running scene keeps its program.
+static float straightHitCost(const Scene& s) {
+    float cost = 0.0f;
+    for (const Object& o : s.objects)
+        if (o.group < 0 && exactlyMet(o) && o.op == CsgOp::Union && o.blend <= 0.0f)
+            cost += shapeRow(o.type).hitCost;
+    return cost;
+}
+
 bool usesGrid(const Scene& s, const RenderQuality& q) {
     int n = int(s.objects.size());
-    return q.grid < 0 ? n > kGridMinObjects : q.grid == 1 && n > 0;
+    if (q.grid >= 0) return q.grid == 1 && n > 0;
+    return n > kGridMinObjects || straightHitCost(s) > kStraightHitsMost;
 }
 
 // Plain members are met exactly where the chain is compiled (a line each) or walks the grid;

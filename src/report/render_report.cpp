@@ -123,8 +123,8 @@ Scene sphereField(int n) {
 }
 
 // The targets for many bodies, from this run: n spheres against 10, each as the renderer draws it
-// (straight-line code up to kGridMinObjects objects, the grid past it), and the example pile
-// against the default scene.
+// (straight-line code or the grid, as usesGrid chooses), and the example pile against the
+// default scene.
 std::string scalingTargets(Renderer& r, const std::string& root,
                            const std::map<int, double>& drawn) {
     Scene pile, start;
@@ -165,7 +165,7 @@ std::string scalingTable(Renderer& r, const std::string& root, const std::string
         if (ub > 0) seriesUber.points.emplace_back(n, ub);
         if (flat > 0) seriesFlat.points.emplace_back(n, flat);
         seriesGrid.points.emplace_back(n, grid);
-        drawnMs[n] = n > kGridMinObjects || flat <= 0 ? grid : flat;
+        drawnMs[n] = usesGrid(s, RenderQuality{}) || flat <= 0 ? grid : flat;
     }
     writeTextFile(docs + "/render-scaling.svg",
                   logLogPlotSvg("Frame time against sphere count (480x270)", "spheres",

@@ -127,3 +127,33 @@ TEST(Specialised, FourThousandNinetySixSpheresRender) {
     // About 2 pixels a sphere: a few at the edges may fall between pixel centres.
     EXPECT_GE(seen.size(), 4050u) << "nearly all 4096 spheres must show, the last ones too";
 }
+
+// Exact hits tested one after another on every ray cost more than the plain members' grid walk
+// past 16 spheres' worth, each type weighted by its hitCost (shader_source.h's measurements):
+// 16 spheres stay compiled a line each, 17 walk the grid; 10 boxes stay, 11 walk (16.5); 4 tori
+// stay, 5 walk (20); 20 boxes carved by a subtraction are marched, not met, and stay compiled.
+// Planted: the fixed 64 alone (dominoes.txt's 20 boxes compiled, 2.6 times the grid's time).
+TEST(Specialised, ManyObjectsMetExactlyWalkTheirGrid) {
+    auto walks = [](ShapeType type, int n, CsgOp op = CsgOp::Union) {
+        Scene s;
+        s.materials.push_back({});
+        for (int i = 0; i < n; ++i) {
+            Object o;
+            o.type = type;
+            o.pos = {float(i % 8), 0.5f, float(i / 8)};
+            o.op = i > 0 ? op : CsgOp::Union;
+            s.objects.push_back(o);
+        }
+        const ShaderFeatures f = shaderFeatures(s, RenderMode::Shaded, false, 65536);
+        EXPECT_NE(f.grid, f.compiled);
+        return f.grid;
+    };
+    EXPECT_FALSE(walks(ShapeType::Sphere, 16));
+    EXPECT_TRUE(walks(ShapeType::Sphere, 17));
+    EXPECT_FALSE(walks(ShapeType::Box, 10));
+    EXPECT_TRUE(walks(ShapeType::Box, 11));
+    EXPECT_FALSE(walks(ShapeType::Torus, 4));
+    EXPECT_TRUE(walks(ShapeType::Torus, 5));
+    EXPECT_FALSE(walks(ShapeType::Box, 20, CsgOp::Subtract));
+    EXPECT_TRUE(walks(ShapeType::Box, 65, CsgOp::Subtract));  // past kGridMinObjects, whatever
+}
