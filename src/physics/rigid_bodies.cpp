@@ -944,7 +944,10 @@ void RigidBodies::collideSphere(int i, PhysicsBody& sphere, int sphereIndex) {
 }
 
 // A sleeping body that a moving one touches wakes: a rigid body at once (its rows were made
-// with it fixed, so they are made again next step), a sphere with its island.
+// with it fixed, so they are made again next step), a sphere with its island. A rigid body
+// wakes the sleeping ones within reach of it, and they theirs, as an island wakes: a row of
+// sleeping boxes hit at one end would otherwise hold the first against the next, still fixed,
+// and stop what hit it dead. Sleeping pairs make no contacts, so reach is the broad phase's.
 void RigidBodies::wake(std::vector<PhysicsBody>& spheres) {
     std::vector<int> islands;
     for (const RigidContact& c : contacts_) {
@@ -955,11 +958,24 @@ void RigidBodies::wake(std::vector<PhysicsBody>& spheres) {
         if (!sphere.awake && (touching_[size_t(first)] & 2)) islands.push_back(sphere.island);
     }
     wakeIslands(spheres, islands);
+    std::vector<int> woken;
     for (size_t i = 0; i < bodies_.size(); ++i)
-        if (!bodies_[i].awake && (touching_[i] & 1)) {
-            bodies_[i].awake = true;
-            bodies_[i].sleepTime = 0.0;
-        }
+        if (!bodies_[i].awake && (touching_[i] & 1)) woken.push_back(int(i));
+    if (woken.empty()) return;
+    std::vector<std::vector<int>> near(bodies_.size());
+    for (auto [i, j] : pairs_)
+        if (j < count() && !(bodies_[size_t(i)].awake && bodies_[size_t(j)].awake))
+            near[size_t(i)].push_back(j), near[size_t(j)].push_back(i);
+    for (size_t k = 0; k < woken.size(); ++k) {  // woken grows as the island is found
+        RigidBody& b = bodies_[size_t(woken[k])];
+        b.awake = true;
+        b.sleepTime = 0.0;
+        for (int other : near[size_t(woken[k])])
+            if (!bodies_[size_t(other)].awake && !(touching_[size_t(other)] & 1)) {
+                touching_[size_t(other)] |= 1;  // queued once
+                woken.push_back(other);
+            }
+    }
 }
 
 // A point: its approach speed and last step's push. Its friction is its manifold's.

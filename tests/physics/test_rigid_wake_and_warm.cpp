@@ -1,6 +1,7 @@
 // test_rigid_wake_and_warm.cpp — waking and warm starting as a whole world shows them: a sphere
-// asleep on the ground that a box hits rolls away, and rigid contacts that start each point from
-// its own last impulse hold what static friction holds, and a stack kept awake, still.
+// asleep on the ground that a box hits rolls away, a row of sleeping boxes hit at one end moves
+// as one, and rigid contacts that start each point from its own last impulse hold what static
+// friction holds, and a stack kept awake, still.
 // (test_solver_gaps.cpp holds the rigid bodies' own cases: a sleeping box hit by a ball or a box,
 // and each corner's warm start read off the first substep.)
 #include "marchbox/physics/physics.h"
@@ -98,4 +99,41 @@ TEST(RigidWakeAndWarm, TenBoxStackKeptAwakeStandsAMinute) {
     std::printf("awake stack: settled %.4g m, then the top moved %.3g m in 60 s\n",
                 glm::length(settled - placed), moved);
     EXPECT_LT(moved, 0.002) << "the stack's top drifted";
+}
+
+// A frictionless box (1 kg, 2 m/s) slides into a row of three 1 kg boxes asleep side by side,
+// face to face, on the ground (μ = 0.5, e = 0). The row must wake whole: the four then move as
+// one at u = v/4 = 0.5 m/s, and the ground's friction on the three, 3·μ·m·g over the four
+// masses, stops them in u²/(2·¾·μ·g) = 3.4 cm. The same row kept awake is the reference: the
+// far box ends within 5 mm of where it ends then, and so does the slider. Measured: 3.29 cm
+// asleep, 3.30 awake; the slider 4.4 mm apart (the soft contacts' squeeze). Planted: a woken
+// box leaving its sleeping neighbours asleep (sleeping pairs make no contacts, so the first box
+// is held by the second, still fixed): the far box does not move and the slider bounces back
+// 0.29 m.
+TEST(RigidWakeAndWarm, ARowOfSleepingBoxesHitAtOneEndMovesAsOne) {
+    auto run3s = [](bool sleep) {
+        Scene s = physicsWorld(9.81f, 0.0f, 0.5f, true);
+        for (int k = 0; k < 3; ++k)
+            s.objects.push_back(dynamicBox({0.2f * float(k), 0.1f, 0}, {0.1f, 0.1f, 0.1f}, 1.0f));
+        Object slider = dynamicBox({-3.0f, 0.1f, 0}, {0.1f, 0.1f, 0.1f}, 1.0f);
+        slider.vel = {2.0f, 0, 0};
+        slider.friction = 0.0f;
+        s.objects.push_back(slider);
+        PhysicsSettings settings;
+        settings.sleep = sleep;
+        PhysicsWorld w(s, settings);
+        run(w, 1.3);  // the row asleep before the slider comes (1.4 s)
+        if (sleep) {
+            EXPECT_EQ(w.stats().awake, 1) << "the row should sleep before it is hit";
+        }
+        run(w, 1.7);
+        return std::pair{w.rigid(2).pos.x - 0.4, w.rigid(3).pos.x};
+    };
+    const auto [slept, sliderSlept] = run3s(true);
+    const auto [awake, sliderAwake] = run3s(false);
+    const double mu = 0.5, g = 9.81, u = 0.5, closedForm = u * u / (2.0 * 0.75 * mu * g);
+    std::printf("far box moved %.4f m asleep, %.4f m awake (closed form %.4f); slider at %.4f "
+                "and %.4f\n", slept, awake, closedForm, sliderSlept, sliderAwake);
+    EXPECT_NEAR(slept, awake, 5e-3) << "the sleeping row did not move as the awake one";
+    EXPECT_NEAR(sliderSlept, sliderAwake, 5e-3) << "the slider stopped at the sleeping row";
 }
