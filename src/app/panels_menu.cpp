@@ -138,7 +138,8 @@ static void editMenu(UiContext& c) {
     if (ImGui::BeginMenu("Add")) {  // on the ground below the camera's target, clear of others
         std::string* why = c.ui.messages.at(Place::Status);
         for (const ShapeRow& row : kShapes)
-            if (menuItem("Add", row.label)) e.add(ItemKind::Object, why, row.type, viewWindow(c.ui));
+            if (menuItem("Add", row.label))
+                e.add(ItemKind::Object, why, row.type, viewWindow(c.ui));
         if (menuItem("Add", "Light")) e.add(ItemKind::Light, why);
         ImGui::EndMenu();
     } else {

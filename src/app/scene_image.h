@@ -55,8 +55,8 @@ private:
 
     Refinement policy_;
     PictureKey key_;
-    ColorTarget picture_;        // RGBA8, the preview's size or the window's
-    bool valid_ = false;         // picture_ holds a drawn image
+    ColorTarget picture_;  // RGBA8, the preview's size or the window's
+    bool valid_ = false;   // picture_ holds a drawn image
     Clock::time_point changedAt_;
     double passMs_ = 0.0;  // the bands of the pass under way, so far
     PictureStatus status_;

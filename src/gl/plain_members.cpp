@@ -49,12 +49,13 @@ std::vector<ChainItem> chainItems(const Scene& scene, const SceneSdf& sdf) {
     return items;
 }
 
-// intersect.glsl's three texels: (centre, radius or major radius), (half-extents, or height and
-// tube radius; type), the world-to-object quaternion.
+// intersect.glsl's three texels: (centre, radius), (0, 0, 0, type), the world-to-object
+// quaternion. A ball is met from the first alone; other shapes read their sizes from uObjects.
 void packShape(const SdfObject& o, float* texels) {
     glm::quat q = glm::quat_cast(o.toLocal);
-    const float values[12] = {
-        o.pos.x, o.pos.y, o.pos.z, o.radius, 0.0f, 0.0f, 0.0f, float(int(o.type)), q.x, q.y, q.z, q.w};
+    const float values[12] = {o.pos.x, o.pos.y, o.pos.z, o.radius,
+                              0.0f,    0.0f,    0.0f,    float(int(o.type)),
+                              q.x,     q.y,     q.z,     q.w};
     std::copy(values, values + 12, texels);
 }
 

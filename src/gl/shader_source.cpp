@@ -234,7 +234,9 @@ static std::string upperCase(std::string s) {
     return s;
 }
 
-static std::string modeMacro(int mode) { return upperCase(std::string("MODE_") + kModeNames[mode]); }
+static std::string modeMacro(int mode) {
+    return upperCase(std::string("MODE_") + kModeNames[mode]);
+}
 
 // The macros in the order the prefix lists them.
 static std::vector<std::pair<std::string, long>> featureDefines(const ShaderFeatures& f) {

@@ -334,7 +334,8 @@ Orbit orbit(Refinement& r, int width, int height, double msPerPixel, int frames)
 // Still: every step drawn, the wobble still on; the frames it took (one step a frame).
 int refine(Refinement& r, double msPerPixel, std::vector<double>* ms) {
     int frames = 0;
-    for (ViewStep s = r.next(); s.kind != StepKind::None && frames < 10000; s = r.next(), ++frames) {
+    for (ViewStep s = r.next(); s.kind != StepKind::None && frames < 10000;
+         s = r.next(), ++frames) {
         ms->push_back(double(s.pixels()) * msPerPixel * wobble(frames));
         r.finished(s, ms->back());
         r.otherWork(kUiMs);

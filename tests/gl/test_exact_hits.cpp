@@ -80,7 +80,8 @@ bool inside(const Image& ids, int x, int y) {
 
 int channelDifference(const Image& a, const Image& b, int x, int y) {
     int most = 0;
-    for (int c = 0; c < 3; ++c) most = std::max(most, std::abs(a.pixel(x, y)[c] - b.pixel(x, y)[c]));
+    for (int c = 0; c < 3; ++c)
+        most = std::max(most, std::abs(a.pixel(x, y)[c] - b.pixel(x, y)[c]));
     return most;
 }
 
@@ -96,7 +97,8 @@ void expectHitsAsMarched(const Scene& s, int grid, const char* how) {
     marched.uber = true;
     const Image a = test::renderOrDie(s, exact, kW, kH), b = test::renderOrDie(s, marched, kW, kH);
     exact.mode = marched.mode = RenderMode::Normals;
-    const Image na = test::renderOrDie(s, exact, kW, kH), nb = test::renderOrDie(s, marched, kW, kH);
+    const Image na = test::renderOrDie(s, exact, kW, kH),
+                nb = test::renderOrDie(s, marched, kW, kH);
     int drawn = 0, differ = 0, away = 0, grazing = 0, turned = 0;
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) {
@@ -106,9 +108,10 @@ void expectHitsAsMarched(const Scene& s, int grid, const char* how) {
             else if (p < 0 && q >= 0) ++(besides(a, x, y, q) ? grazing : away);
             else if (inside(a, x, y)) turned += channelDifference(na, nb, x, y) > kNormalTolerance;
         }
-    std::printf("%s: %zu objects, %d pixels drawn exactly, %d of them marched otherwise; %d "
-                "marched alone, %d of them away from the object's edge; %d normals turned\n",
-                how, s.objects.size(), drawn, differ, grazing + away, away, turned);
+    std::printf(
+        "%s: %zu objects, %d pixels drawn exactly, %d of them marched otherwise; %d "
+        "marched alone, %d of them away from the object's edge; %d normals turned\n",
+        how, s.objects.size(), drawn, differ, grazing + away, away, turned);
     EXPECT_GT(drawn, 1000) << how;
     EXPECT_EQ(differ, 0) << how;
     EXPECT_EQ(away, 0) << how;

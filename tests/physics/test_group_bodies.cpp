@@ -184,8 +184,8 @@ TEST(GroupBodies, FreeGroupKeepsItsCentreAndAngularMomentum) {
 // projection): the ball rests on the lid, its centre 1 m up.
 TEST(GroupBodies, CupCatchesABall) {
     Scene s = sceneFromText("scene version:3\nworld gravity:9.81 restitution:0.3 friction:0.5\n" +
-                   cup("cup", dvec3(0, 0.4, 0), 0.5) +
-                   "object type:sphere pos:0.05,2,0 radius:0.2 mass:0.3\n");
+                            cup("cup", dvec3(0, 0.4, 0), 0.5) +
+                            "object type:sphere pos:0.05,2,0 radius:0.2 mass:0.3\n");
     PhysicsWorld w(s);
     ASSERT_EQ(w.rigidCount(), 1);
     ASSERT_EQ(w.bodyCount(), 1);

@@ -132,8 +132,10 @@ TEST(RigidWakeAndWarm, ARowOfSleepingBoxesHitAtOneEndMovesAsOne) {
     const auto [slept, sliderSlept] = run3s(true);
     const auto [awake, sliderAwake] = run3s(false);
     const double mu = 0.5, g = 9.81, u = 0.5, closedForm = u * u / (2.0 * 0.75 * mu * g);
-    std::printf("far box moved %.4f m asleep, %.4f m awake (closed form %.4f); slider at %.4f "
-                "and %.4f\n", slept, awake, closedForm, sliderSlept, sliderAwake);
+    std::printf(
+        "far box moved %.4f m asleep, %.4f m awake (closed form %.4f); slider at %.4f "
+        "and %.4f\n",
+        slept, awake, closedForm, sliderSlept, sliderAwake);
     EXPECT_NEAR(slept, awake, 5e-3) << "the sleeping row did not move as the awake one";
     EXPECT_NEAR(sliderSlept, sliderAwake, 5e-3) << "the slider stopped at the sleeping row";
 }

@@ -119,8 +119,9 @@ TEST(ShapeClosedForms, PointedConeRestsOnItsBaseWithItsCentreAQuarterUp) {
 // its side); the change comes between θc − 0.5° (stands, 0.18°) and θc − 0.25° (tips), the
 // soft contacts' compression on the downhill side. The slope turns about z, so the base's flat
 // rim stands on four points one of which points straight downhill (rimSupport); on a slope
-// falling between x and z none does, and the cone tips about 2° early. Planted: the centre of mass at h/3 above the base (as in the test above; θc becomes
-// 26.6°): at θc − 1° the cone tips (99.5°, its base 0.94 m away).
+// falling between x and z none does, and the cone tips about 2° early. Planted: the centre of mass
+// at h/3 above the base (as in the test above; θc becomes 26.6°): at θc − 1° the cone tips (99.5°,
+// its base 0.94 m away).
 TEST(ShapeClosedForms, PointedConeTipsOnASlopeWhereTanThetaIsFourROverH) {
     const double r = 0.15, h = 0.9;
     const double critical = std::atan(4.0 * r / h) / kDegree;
@@ -130,9 +131,9 @@ TEST(ShapeClosedForms, PointedConeTipsOnASlopeWhereTanThetaIsFourROverH) {
     auto standOn = [&](double degrees) {
         const Slope slope(degrees);
         const dvec3 start = slope.onTop(0.0, 0.5 * h + 0.001);
-        Scene s =
-            sceneFromText(slope.text(1.5) + "object type:cone pos:" + vec(start) + " radius:" + num(r) +
-                 " height:" + num(h) + " rot:0,0," + num(degrees) + " mass:1\n");
+        Scene s = sceneFromText(slope.text(1.5) + "object type:cone pos:" + vec(start) +
+                                " radius:" + num(r) + " height:" + num(h) + " rot:0,0," +
+                                num(degrees) + " mass:1\n");
         PhysicsWorld w(s);
         EXPECT_EQ(w.rigidCount(), 1);
         Outcome o{0.0, 0.0};
@@ -168,8 +169,9 @@ TEST(ShapeClosedForms, PointedConeTipsOnASlopeWhereTanThetaIsFourROverH) {
 TEST(ShapeClosedForms, HollowBallRollsDownASlopeAtItsClosedFormAcceleration) {
     const double r0 = 0.2, t = 0.02, degrees = 10.0;
     const Slope slope(degrees);
-    Scene s = sceneFromText(slope.text(0.8) + "object type:sphere pos:" + vec(slope.onTop(3.0, r0)) +
-                   " radius:" + num(r0) + " shell:" + num(t) + " mass:1\n");
+    Scene s =
+        sceneFromText(slope.text(0.8) + "object type:sphere pos:" + vec(slope.onTop(3.0, r0)) +
+                      " radius:" + num(r0) + " shell:" + num(t) + " mass:1\n");
     PhysicsWorld w(s);
     ASSERT_EQ(w.rigidCount(), 1) << "a hollow ball is a rigid body, not a solid sphere";
     const double outer = double(s.objects[1].radius), inner = outer - double(s.objects[1].shell);

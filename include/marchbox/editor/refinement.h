@@ -92,8 +92,8 @@ public:
     // full-size one is not the first pass (the bands draw that too).
     void restart(int width, int height, int aa, bool canAverage, bool draftAvailable = false);
     bool draftPreview() const { return draftPreview_; }  // the preview planned at the restart
-    ViewStep next() const;                           // what to draw now; None once done
-    void finished(const ViewStep& step, double ms);  // it was drawn, taking ms
+    ViewStep next() const;                               // what to draw now; None once done
+    void finished(const ViewStep& step, double ms);      // it was drawn, taking ms
     void otherWork(double ms);  // the rest of a frame (UI, showing the picture, the swap) took ms
     double budgetMs() const;    // the scene's share: the frame budget less the rest, measured
 

@@ -26,12 +26,12 @@ enum SizeKey : unsigned {
 // shape.y height, sizeMinor.xyz size, sizeMinor.w minor, detail.x top, detail.y round).
 struct ShapeRow {
     ShapeType type;
-    const char* name;   // the file's word and the editor's: "cone"
-    const char* label;  // the Add menu's: "Cone"
-    int since = 1;      // the first format version that has it
-    unsigned keys = 0;  // SizeKey bits
-    bool exact = true;  // its SDF is the true distance; otherwise a bound, exact on the surface
-    bool edges = false;    // `round` rounds its edges (the others have none)
+    const char* name;       // the file's word and the editor's: "cone"
+    const char* label;      // the Add menu's: "Cone"
+    int since = 1;          // the first format version that has it
+    unsigned keys = 0;      // SizeKey bits
+    bool exact = true;      // its SDF is the true distance; otherwise a bound, exact on the surface
+    bool edges = false;     // `round` rounds its edges (the others have none)
     bool revolved = false;  // a solid of revolution about local y: its x and z moments are equal
     bool centred = true;    // its centre of mass is its origin (else on its y axis)
     // What testing a ray against its exact hit costs, a sphere's being 1 (shader_source.cpp's
@@ -44,35 +44,63 @@ struct ShapeRow {
 };
 
 inline constexpr ShapeRow kShapes[] = {
-    {.type = ShapeType::Sphere, .name = "sphere", .label = "Sphere", .keys = kRadiusKey,
-     .revolved = true, .hitCost = 1.0f,
+    {.type = ShapeType::Sphere,
+     .name = "sphere",
+     .label = "Sphere",
+     .keys = kRadiusKey,
+     .revolved = true,
+     .hitCost = 1.0f,
      .sdf = "sdSphere($q, $o.shape.x)",
      .hit = "hitSphere($r, $d, $o.shape.x)"},
-    {.type = ShapeType::Box, .name = "box", .label = "Box", .keys = kSizeKey, .edges = true,
+    {.type = ShapeType::Box,
+     .name = "box",
+     .label = "Box",
+     .keys = kSizeKey,
+     .edges = true,
      .sdf = "sdBox($q, $o.sizeMinor.xyz)",
      .rounded = "sdRoundedBox($q, $o.sizeMinor.xyz, $o.detail.y)",
      .hit = "hitBox($r, $d, $o.sizeMinor.xyz)"},
-    {.type = ShapeType::Torus, .name = "torus", .label = "Torus", .keys = kRadiusKey | kMinorKey,
-     .revolved = true, .hitCost = 4.0f,
+    {.type = ShapeType::Torus,
+     .name = "torus",
+     .label = "Torus",
+     .keys = kRadiusKey | kMinorKey,
+     .revolved = true,
+     .hitCost = 4.0f,
      .sdf = "sdTorus($q, $o.shape.x, $o.sizeMinor.w)",
      .hit = "hitTorus($r, $d, $o.shape.x, $o.sizeMinor.w)"},
-    {.type = ShapeType::Capsule, .name = "capsule", .label = "Capsule",
-     .keys = kRadiusKey | kHeightKey, .revolved = true,
+    {.type = ShapeType::Capsule,
+     .name = "capsule",
+     .label = "Capsule",
+     .keys = kRadiusKey | kHeightKey,
+     .revolved = true,
      .sdf = "sdCapsule($q, $o.shape.y, $o.shape.x)",
      .hit = "hitCapsule($r, $d, $o.shape.y, $o.shape.x)"},
-    {.type = ShapeType::Cylinder, .name = "cylinder", .label = "Cylinder",
-     .keys = kRadiusKey | kHeightKey, .edges = true, .revolved = true,
+    {.type = ShapeType::Cylinder,
+     .name = "cylinder",
+     .label = "Cylinder",
+     .keys = kRadiusKey | kHeightKey,
+     .edges = true,
+     .revolved = true,
      .sdf = "sdCylinder($q, $o.shape.y, $o.shape.x)",
      .rounded = "sdRoundedCylinder($q, $o.shape.y, $o.shape.x, $o.detail.y)",
      .hit = "hitCylinder($r, $d, $o.shape.y, $o.shape.x)"},
-    {.type = ShapeType::Cone, .name = "cone", .label = "Cone", .since = 3,
-     .keys = kRadiusKey | kHeightKey | kTopKey, .edges = true, .revolved = true,
+    {.type = ShapeType::Cone,
+     .name = "cone",
+     .label = "Cone",
+     .since = 3,
+     .keys = kRadiusKey | kHeightKey | kTopKey,
+     .edges = true,
+     .revolved = true,
      .centred = false,
      .sdf = "sdCone($q, $o.shape.y, $o.shape.x, $o.detail.x)",
      .rounded = "sdRoundedCone($q, $o.shape.y, $o.shape.x, $o.detail.x, $o.detail.y)",
      .hit = "hitCone($r, $d, $o.shape.y, $o.shape.x, $o.detail.x)"},
-    {.type = ShapeType::Ellipsoid, .name = "ellipsoid", .label = "Ellipsoid", .since = 3,
-     .keys = kSizeKey, .exact = false,
+    {.type = ShapeType::Ellipsoid,
+     .name = "ellipsoid",
+     .label = "Ellipsoid",
+     .since = 3,
+     .keys = kSizeKey,
+     .exact = false,
      .sdf = "sdEllipsoid($q, $o.sizeMinor.xyz)",
      .hit = "hitEllipsoid($r, $d, $o.sizeMinor.xyz)"},
 };
