@@ -12,8 +12,6 @@ namespace mb {
 
 namespace {
 
-bool sharpUnion(CsgOp op, float blend) { return op == CsgOp::Union && blend <= 0.0f; }
-
 // One item of the top-level chain: an object, or a group that does not flatten, whole.
 struct ChainItem {
     int object = -1;  // its index; -1 for a group, which is never plain
@@ -65,13 +63,14 @@ bool exactlyMet(const Object& o) {
     return shapeRow(o.type).hit != nullptr && o.round <= 0.0f && o.shell <= 0.0f;
 }
 
+bool mayBePlain(const Object& o) { return sharpUnion(o.op, o.blend) && exactlyMet(o); }
+
 std::vector<bool> plainMembers(const Scene& scene) {
     std::vector<bool> plain(scene.objects.size());
     const std::vector<ChainItem> items = chainItems(scene, makeSceneSdf(scene));
     for (const ChainItem& item : items)
         if (item.object >= 0)
-            plain[size_t(item.object)] =
-                sharpUnion(item.op, item.blend) && exactlyMet(scene.objects[size_t(item.object)]);
+            plain[size_t(item.object)] = mayBePlain(scene.objects[size_t(item.object)]);
     for (size_t j = 0; j < items.size(); ++j) {
         if (sharpUnion(items[j].op, items[j].blend)) continue;
         for (size_t i = 0; i < j; ++i)

@@ -57,12 +57,17 @@ std::string objectLine(const ObjectLayout& o, int i, const std::string& indent =
            comment(o, i) + "\n";
 }
 
-// A ray call of object i: `$r` and `$d` become the ray in its frame, `$o` its record.
+// A ray call with `$o` the object's record and `$r`, `$d` the ray in its frame.
+std::string rayCall(const std::string& call, const std::string& record, const std::string& ray,
+                    const std::string& direction) {
+    return replaceAll(replaceAll(replaceAll(call, "$o", record), "$r", ray), "$d", direction);
+}
+
+// The same for object i of the compiled scene, from the world's ray.
 std::string rayCall(const std::string& call, const ObjectLayout& o, int i) {
-    std::string rec = "o" + std::to_string(i);
-    std::string s = replaceAll(call, "$o", rec);
-    s = replaceAll(s, "$r", inFrame(o, rec, "ro - " + rec + ".posBound.xyz"));
-    return replaceAll(s, "$d", inFrame(o, rec, "rd"));
+    const std::string rec = "o" + std::to_string(i);
+    return rayCall(call, rec, inFrame(o, rec, "ro - " + rec + ".posBound.xyz"),
+                   inFrame(o, rec, "rd"));
 }
 
 std::string hitLine(const ObjectLayout& o, int i) {
@@ -372,8 +377,7 @@ std::string compileShapeSwitch(unsigned shapes, bool round, bool shell) {
     s << "\n#if PLAIN == 2\nfloat hitShape(Object o, vec3 r, vec3 d) {\n    int type = o.info.x;\n";
     for (int t = 0; t < kShapeTypeCount; ++t)
         if ((shapes >> t & 1u) && kShapes[t].hit)
-            s << "    if (type == " << t << ") return "
-              << replaceAll(replaceAll(replaceAll(kShapes[t].hit, "$o", "o"), "$r", "r"), "$d", "d")
+            s << "    if (type == " << t << ") return " << rayCall(kShapes[t].hit, "o", "r", "d")
               << ";\n";
     s << "    return -1.0;\n}\n#endif\n";
     return s.str();

@@ -5,9 +5,9 @@
 
 namespace mb {
 
-namespace {
-
 bool sharpUnion(CsgOp op, float blend) { return op == CsgOp::Union && blend <= 0.0f; }
+
+namespace {
 
 bool ownTurn(const std::optional<glm::quat>& orient, glm::vec3 rot) {
     return orient ? *orient != glm::quat(1.0f, 0.0f, 0.0f, 0.0f) : rot != glm::vec3(0.0f);

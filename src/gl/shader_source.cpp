@@ -108,14 +108,12 @@ unsigned shadowCasters(const Scene& s, float cutoff) {
     return mask;
 }
 
-// The weighted count of the objects a ray may meet exactly: top-level objects of the types with
-// a hit, joined by a sharp union (a group's members are marched with it). Where they stand is
-// left out, so a running scene keeps its program.
+// The weighted count of the top-level objects that may be plain members (a group's members are
+// marched with it). Where they stand is left out, so a running scene keeps its program.
 static float straightHitCost(const Scene& s) {
     float cost = 0.0f;
     for (const Object& o : s.objects)
-        if (o.group < 0 && exactlyMet(o) && o.op == CsgOp::Union && o.blend <= 0.0f)
-            cost += shapeRow(o.type).hitCost;
+        if (o.group < 0 && mayBePlain(o)) cost += shapeRow(o.type).hitCost;
     return cost;
 }
 
@@ -227,12 +225,13 @@ std::vector<std::string> describeFeatures(const ShaderFeatures& f) {
     return lines;
 }
 
-// MODE_SHADED, MODE_NORMALS, ... MODE_ID: the names the shaders compare MODE with, made from
-// the command line's names so that RenderMode is the one list of modes.
 static std::string upperCase(std::string s) {
     for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
     return s;
 }
+
+// MODE_SHADED, MODE_NORMALS, ... MODE_ID: the names the shaders compare MODE with, made from
+// the command line's names so that RenderMode is the one list of modes.
 
 static std::string modeMacro(int mode) {
     return upperCase(std::string("MODE_") + kModeNames[mode]);

@@ -16,10 +16,12 @@
 
 namespace mb {
 
-// Whether a ray can meet the object's shape in closed form (shaders/intersect.glsl has a hit
-// for its type): a sphere, box, torus, capsule or cylinder, neither rounded nor hollow. Cones,
-// ellipsoids, rounded and hollow shapes are marched.
+// Whether a ray can meet the object's shape in closed form: its type has a hit (shapes.h, in
+// shaders/intersect.glsl) and it is neither rounded nor hollow; those are marched.
 bool exactlyMet(const Object& o);
+// Whether the object is a plain member unless a later item of the chain reaches it: exactly met
+// and joined by a sharp union. Where it stands does not matter.
+bool mayBePlain(const Object& o);
 
 // Which of the scene's objects are plain members, in tree order. A later item of the chain
 // reaches an earlier object when it is an intersection (which keeps only its overlap), or when

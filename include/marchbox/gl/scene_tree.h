@@ -16,6 +16,9 @@
 
 namespace mb {
 
+// A union with no blend: what joins a plain chain, and what leaves its objects' surfaces whole.
+bool sharpUnion(CsgOp op, float blend);
+
 // For every group, whether its members may join its parent's chain directly (a group with no
 // members adds nothing: it flattens). A group flattens only where its member groups do.
 std::vector<bool> flatGroups(const Scene& scene);
