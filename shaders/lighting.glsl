@@ -46,9 +46,32 @@ struct Surface {
     float kr;    // mirror reflectivity
 };
 
-Surface surfaceAt(vec3 p, int id) {
-    if (float(id) == HIT_GROUND) {  // 1 m checkers aligned to x and z
-        float c = mod(floor(p.x) + floor(p.z), 2.0);
+// The floor's 1 m checkers, light where floor(x) + floor(z) is even, are averaged over the
+// square a sample covers on the floor (docs/shading-model.md §4), so that far squares blend to
+// grey instead of aliasing. Along one axis the pattern is a ±1 wave of period 2, +1 on even
+// squares; its integral is a triangle wave, so a box's mean is a difference of two of them.
+vec2 waveIntegral(vec2 x) { return 1.0 - abs(1.0 - mod(x, 2.0)); }
+
+// The dark share under a box of sides w about p: the light/dark sign is the product of the
+// axes' waves, and over a box the mean of that product is the product of their means.
+float darkShare(vec2 p, vec2 w) {
+    p = mod(p, 2.0);  // nearer zero, so the difference below keeps its digits
+    vec2 mean = (waveIntegral(p + 0.5 * w) - waveIntegral(p - 0.5 * w)) / w;
+    return 0.5 - 0.5 * mean.x * mean.y;
+}
+
+// The box a sample's cone, radius r where it meets the floor, covers there: r across the ray,
+// stretched by 1/|rd.y| along it.
+vec2 floorFootprint(vec3 rd, float r) {
+    vec2 along = dot(rd.xz, rd.xz) > 1e-12 ? normalize(rd.xz) : vec2(1.0, 0.0);
+    vec2 across = vec2(-along.y, along.x);
+    return max(2.0 * r * (abs(along) / max(abs(rd.y), 1e-4) + abs(across)), vec2(1e-4));
+}
+
+// cone: the sample's radius at p, uSampleRadius times the path's length from the eye.
+Surface surfaceAt(vec3 p, int id, vec3 rd, float cone) {
+    if (float(id) == HIT_GROUND) {
+        float c = darkShare(p.xz, floorFootprint(rd, cone));
         return Surface(mix(vec3(0.80), vec3(0.35), c), vec4(0.1, 0.8, 0.1, 16.0), 0.0);
     }
     int m = uObjects[id].info.z;

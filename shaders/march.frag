@@ -11,10 +11,11 @@ out vec4 fragColor;
 
 #if MODE == MODE_SHADED
 // The colour where a ray stops, fogged by its distance; s, p and n feed the next bounce.
-vec3 surfaceColor(vec3 ro, vec3 rd, vec3 hit, out Surface s, out vec3 p, out vec3 n) {
+// travelled: the path's length from the eye to ro, which widens the sample's cone.
+vec3 surfaceColor(vec3 ro, vec3 rd, vec3 hit, float travelled, out Surface s, out vec3 p, out vec3 n) {
     p = ro + rd * hit.x;
     n = hitNormal(p, hit.y);
-    s = surfaceAt(p, int(hit.y));
+    s = surfaceAt(p, int(hit.y), rd, uSampleRadius * (travelled + hit.x));
     return applyFog(shade(s, p, n, rd), rd, hit.x);
 }
 
@@ -24,18 +25,20 @@ vec3 render(vec3 ro, vec3 rd, vec3 hit) {
     if (missed(hit.y)) return sky(rd);
     Surface s;
     vec3 p, n;
-    return surfaceColor(ro, rd, hit, s, p, n);
+    return surfaceColor(ro, rd, hit, 0.0, s, p, n);
 }
 #else
-// Mirror bounces: each surface keeps (1 - Kr) of its own colour and passes Kr on.
+// Mirror bounces: each surface keeps (1 - Kr) of its own colour and passes Kr on. The cone
+// spreads on along the whole path, as if every mirror were flat.
 vec3 render(vec3 ro, vec3 rd, vec3 hit) {
     vec3 acc = vec3(0.0), weight = vec3(1.0);
+    float travelled = 0.0;
     for (int bounce = 0; bounce <= REFLECTIONS; ++bounce) {
         if (bounce > 0) hit = castRay(ro, rd);
         if (missed(hit.y)) return acc + weight * sky(rd);
         Surface s;
         vec3 p, n;
-        vec3 col = surfaceColor(ro, rd, hit, s, p, n);
+        vec3 col = surfaceColor(ro, rd, hit, travelled, s, p, n);
         bool last = bounce == REFLECTIONS || s.kr <= 0.0;
 #if UBER
         last = last || bounce >= uReflections;
@@ -45,6 +48,7 @@ vec3 render(vec3 ro, vec3 rd, vec3 hit) {
         weight *= s.kr;
         ro = p + n * 4.0 * normalStep(p);
         rd = reflect(rd, n);
+        travelled += hit.x;
     }
     return acc;
 }

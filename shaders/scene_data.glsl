@@ -64,6 +64,7 @@ uniform vec2 uSubpixel;        // this pass's sample position inside the pixel, 
 uniform float uSampleWeight;   // 1 / samples: the passes add up in the accumulation target
 uniform float uEpsilon;
 uniform float uPixelRadius;  // half a pixel's footprint per metre along a primary ray
+uniform float uSampleRadius; // and half a supersample's: uPixelRadius / aa
 uniform float uMaxDist;
 uniform vec3 uBoundLo, uBoundHi;  // a box holding every object's reach (objectBounds)
 uniform vec3 uRestLo, uRestHi;    // the same for the marched objects: all but the plain members

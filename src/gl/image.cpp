@@ -50,9 +50,8 @@ std::string encodePng(const Image& img) {
         return {};
     }
     png_set_write_fn(png, &out, appendBytes, flushNothing);
-    png_set_IHDR(png, info, png_uint_32(img.width), png_uint_32(img.height), 8,
-                 PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-                 PNG_FILTER_TYPE_DEFAULT);
+    png_set_IHDR(png, info, png_uint_32(img.width), png_uint_32(img.height), 8, PNG_COLOR_TYPE_RGBA,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_compression_level(png, 1);
     png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
     png_write_info(png, info);
@@ -129,5 +128,18 @@ double psnrFromRmse(double rmse) {
 }
 
 double psnr(const Image& a, const Image& b) { return psnrFromRmse(rmse(a, b)); }
+
+Image boxDownsample(const Image& big, int n) {
+    Image small = makeImage(big.width / n, big.height / n);
+    for (int y = 0; y < small.height; ++y)
+        for (int x = 0; x < small.width; ++x)
+            for (int c = 0; c < 4; ++c) {
+                int sum = 0;
+                for (int j = 0; j < n; ++j)
+                    for (int i = 0; i < n; ++i) sum += big.pixel(n * x + i, n * y + j)[c];
+                small.pixel(x, y)[c] = uint8_t((sum + n * n / 2) / (n * n));
+            }
+    return small;
+}
 
 }  // namespace mb

@@ -69,12 +69,20 @@ void Renderer::marchViewport(int x, int y, int w, int h) {
     glScissor(x, y, w, h);
 }
 
+// A pixel spans 2·tan(fov/2)/height per metre along a primary ray, and each of its n×n samples
+// stands for 1/n of that across: the floor's checkers are averaged over the sample's share.
+void Renderer::setFrameSize(const Program& p) const {
+    const float pixelRadius = tanHalfFov_ / float(frameHeight_);
+    p.set("uResolution", glm::vec2(frameWidth_, frameHeight_));
+    p.set("uPixelRadius", pixelRadius);
+    p.set("uSampleRadius", pixelRadius / float(frameSamples_));
+}
+
 void Renderer::drawRegion(int x, int y, int w, int h) {
     if (!current_ || w <= 0 || h <= 0) return;
     const Program& p = *current_;
     glUseProgram(p.id());
-    p.set("uResolution", glm::vec2(frameWidth_, frameHeight_));
-    p.set("uPixelRadius", tanHalfFov_ / float(frameHeight_));  // half a pixel per metre away
+    setFrameSize(p);
     p.set("uSampleWeight", 1.0f / float(frameSamples_ * frameSamples_));
     marchViewport(x, y, w, h);
     if (accumulating_ && blending_) {
@@ -120,8 +128,7 @@ void Renderer::drawSample(int x, int y, int w, int h, glm::vec2 subpixel, float 
     if (!current_ || !accumulating_ || w <= 0 || h <= 0) return;
     const Program& p = *current_;
     glUseProgram(p.id());
-    p.set("uResolution", glm::vec2(frameWidth_, frameHeight_));
-    p.set("uPixelRadius", tanHalfFov_ / float(frameHeight_));
+    setFrameSize(p);
     p.set("uSampleWeight", 1.0f);  // the blend below weighs the sample
     p.set("uSubpixel", subpixel);
     marchViewport(x, y, w, h);

@@ -31,7 +31,8 @@ struct Model {
     dvec3 horizon{0.0};  // the horizon's colour, tinted by the brightest light
     double epsilon = 0.001;
     double softness = 8.0;
-    double far = 100.0;  // a directional light's shadow rays end here (the GPU's uMaxDist)
+    double far = 100.0;         // a directional light's shadow rays end here (the GPU's uMaxDist)
+    double sampleRadius = 0.0;  // half a sample's width per metre of path (§4); 0 point-samples
 };
 
 Model prepareModel(const Scene& scene, const ReferenceOptions& options);

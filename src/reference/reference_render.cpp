@@ -67,6 +67,7 @@ ReferenceImage renderReference(const Scene& scene, int width, int height,
     CameraBasis basis = cameraBasis(scene.camera);
     dvec3 eye(basis.pos);
     int aa = std::clamp(options.aa > 0 ? options.aa : scene.render.aa, 1, 4);
+    m.sampleRadius = double(glm::length(basis.up)) / (double(height) * aa);  // up: tan(fov/2)
     ReferenceImage img;
     img.width = width, img.height = height;
     img.rgb.resize(size_t(width) * size_t(height));

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 
 namespace mb::reference {
 
@@ -15,20 +17,35 @@ struct SurfaceMaterial {
     double ka = 0, kd = 0, ks = 0, shininess = 1, kr = 0;
 };
 
-// 1 m squares aligned to x and z, light where floor(x) + floor(z) is even.
-struct CheckerSquare {
-    long long x, z;
-    bool dark() const { return ((x + z) & 1) != 0; }  // two's complement: odd negatives too
-};
-
 // Clamped so a ray that grazes the plane cannot overflow the cast: squares that far out are noise.
 long long squareIndex(double v) { return (long long)std::floor(std::clamp(v, -1e15, 1e15)); }
-CheckerSquare checkerSquare(dvec3 p) { return {squareIndex(p.x), squareIndex(p.z)}; }
 
-SurfaceMaterial materialAt(const Model& m, dvec3 p, int object) {
+// Along x or z the checkers are a ±1 wave, +1 on even squares, of period 2; its integral from 0
+// is a triangle wave, and the mean over [a, b] is the integral's change over b − a. Width 0
+// takes the wave's value.
+double waveMean(double centre, double width) {
+    if (width <= 0.0) return squareIndex(centre) % 2 == 0 ? 1.0 : -1.0;
+    auto integral = [](double x) { return 1.0 - std::abs(1.0 - (x - 2.0 * std::floor(x / 2.0))); };
+    return (integral(centre + width / 2) - integral(centre - width / 2)) / width;
+}
+
+// The x-z box a sample's cone of radius r covers where the ray d meets the floor: 2r across the
+// ray, 2r/|d.y| along its level direction (§3); none for a ray with no pixel (r = 0).
+glm::dvec2 floorFootprint(dvec3 d, double r) {
+    if (r <= 0.0) return glm::dvec2(0.0);
+    double level = std::hypot(d.x, d.z);
+    double ux = level > 1e-6 ? d.x / level : 1.0, uz = level > 1e-6 ? d.z / level : 0.0;
+    double stretch = 1.0 / std::max(std::abs(d.y), 1e-4);
+    return glm::max(2.0 * r *
+                        glm::dvec2(std::abs(ux) * stretch + std::abs(uz),
+                                   std::abs(uz) * stretch + std::abs(ux)),
+                    glm::dvec2(1e-4));
+}
+
+SurfaceMaterial materialAt(const Model& m, dvec3 p, int object, glm::dvec2 footprint) {
     if (object == kHitGround) {
-        double grey = checkerSquare(p).dark() ? 0.35 : 0.80;
-        return {dvec3(grey), 0.1, 0.8, 0.1, 16.0, 0.0};
+        double dark = 0.5 - 0.5 * waveMean(p.x, footprint.x) * waveMean(p.z, footprint.y);
+        return {dvec3(0.80 + (0.35 - 0.80) * dark), 0.1, 0.8, 0.1, 16.0, 0.0};
     }
     const Scene& s = *m.scene;
     int index = std::clamp(s.objects[size_t(object)].material, 0, int(s.materials.size()) - 1);
@@ -74,15 +91,16 @@ dvec3 shade(const Model& m, const SurfaceMaterial& s, dvec3 p, dvec3 n, dvec3 d,
 }
 
 // A surface on the path: its object, whether its normal is a crease's blend, and on the ground
-// its checker square itself, since parity alone repeats every other square and so aliases far out.
+// its checker square itself, since parity alone repeats every other square. Averaged over a
+// sample's footprint the squares' edges are a pixel wide, but a curved mirror spreads its rays
+// wider than the cone that footprint assumes, and there they still alias.
 void noteSurface(PathResult* path, const Hit& hit, dvec3 p, bool crease) {
     mixKey(&path->region, uint64_t(int64_t(hit.object)));
     if (!hit.hit) return;
     mixKey(&path->region, crease);
     if (hit.object != kHitGround) return;
-    CheckerSquare square = checkerSquare(p);
-    mixKey(&path->region, uint64_t(square.x));
-    mixKey(&path->region, uint64_t(square.z));
+    mixKey(&path->region, uint64_t(squareIndex(p.x)));
+    mixKey(&path->region, uint64_t(squareIndex(p.z)));
 }
 
 }  // namespace
@@ -93,6 +111,7 @@ PathResult tracePath(const Model& m, dvec3 origin, dvec3 dir) {
     PathResult out;
     out.region = 14695981039346656037ull;
     dvec3 weight(1.0), o = origin, d = dir;
+    double travelled = 0.0;  // from the eye to o: the cone widens along the whole path
     int bounces = std::max(m.scene->render.reflections, 0);
     for (int bounce = 0; bounce <= bounces; ++bounce) {
         Hit hit = firstHit(m, o, d);
@@ -105,7 +124,8 @@ PathResult tracePath(const Model& m, dvec3 origin, dvec3 dir) {
         dvec3 p = o + d * hit.t;
         SurfaceNormal normal = normalAt(m, p, hit.object);
         dvec3 n = normal.n;
-        SurfaceMaterial s = materialAt(m, p, hit.object);
+        SurfaceMaterial s =
+            materialAt(m, p, hit.object, floorFootprint(d, m.sampleRadius * (travelled + hit.t)));
         noteSurface(&out, hit, p, normal.crease);
         dvec3 color = applyFog(m, shade(m, s, p, n, d, &out), d, hit.t);
         if (bounce == bounces || s.kr <= 0.0) {
@@ -116,6 +136,7 @@ PathResult tracePath(const Model& m, dvec3 origin, dvec3 dir) {
         weight *= s.kr;
         o = liftOff(p, n, m.epsilon);
         d = d - 2.0 * glm::dot(d, n) * n;
+        travelled += hit.t;
     }
     return out;
 }

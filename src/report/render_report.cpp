@@ -200,20 +200,6 @@ struct Result {
     double error = 0;  // RMSE against the reference, 0..255
 };
 
-// n×n box filter: an image rendered at n times the size, averaged down.
-Image downsample(const Image& big, int n) {
-    Image small = makeImage(big.width / n, big.height / n);
-    for (int y = 0; y < small.height; ++y)
-        for (int x = 0; x < small.width; ++x)
-            for (int c = 0; c < 4; ++c) {
-                int sum = 0;
-                for (int j = 0; j < n; ++j)
-                    for (int i = 0; i < n; ++i) sum += big.pixel(n * x + i, n * y + j)[c];
-                small.pixel(x, y)[c] = uint8_t((sum + n * n / 2) / (n * n));
-            }
-    return small;
-}
-
 // Draws every variant once (compiling, warming up, and keeping the image), then kFrames rounds
 // in which each variant draws one timed frame in turn.
 std::vector<Result> measure(Renderer& r, const std::vector<Variant>& variants,
@@ -393,7 +379,7 @@ std::string aliasingSection(Renderer& r, const std::string& name, const Scene& s
     Scene ref = scene;
     ref.render.aa = kAliasReferenceAa;
     const int n = kAliasReferenceScale;
-    Image reference = downsample(renderImage(r, ref, {}, n * w, n * h), n);
+    Image reference = boxDownsample(renderImage(r, ref, {}, n * w, n * h), n);
     std::vector<Variant> variants;
     for (int aa = 1; aa <= 4; ++aa) {
         Variant v{"aa", std::to_string(aa) + "x" + std::to_string(aa), scene, {}};

@@ -43,6 +43,14 @@ Scene loadSceneOrDie(const std::string& relative) {
     return scene;
 }
 
+Scene parseSceneOrDie(const std::string& text) {
+    Scene s;
+    std::vector<SceneError> errors;
+    EXPECT_TRUE(parseScene(text, &s, &errors))
+        << (errors.empty() ? "" : std::to_string(errors[0].line) + ": " + errors[0].message);
+    return s;
+}
+
 Image renderOrDie(const Scene& scene, const RenderOptions& options, int width, int height) {
     Image img;
     std::string error;

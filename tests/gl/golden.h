@@ -24,6 +24,7 @@ std::string sourcePath(const std::string& relative);  // inside the source tree
 std::string outputPath(const std::string& name);      // under build/test-output/
 
 Scene loadSceneOrDie(const std::string& relative);  // fails the test on a load error
+Scene parseSceneOrDie(const std::string& text);     // and on a parse error, at its line
 Image renderOrDie(const Scene& scene, const RenderOptions& options = {}, int width = kGoldenWidth,
                   int height = kGoldenHeight);
 

@@ -20,14 +20,6 @@ using namespace mb;
 
 namespace {
 
-Scene parseOrDie(const std::string& text) {
-    Scene s;
-    std::vector<SceneError> errors;
-    EXPECT_TRUE(parseScene(text, &s, &errors))
-        << (errors.empty() ? "" : std::to_string(errors[0].line) + ": " + errors[0].message);
-    return s;
-}
-
 const char* const kHeader =
     "scene version:3\n"
     "camera pos:0,1.2,-3.2 target:0,0.5,0 fov:45\n"
@@ -119,9 +111,9 @@ const char* const kTable =
 TEST(Groups, AMembersSubtractLeavesObjectsOutsideItsGroupWhole) {
     const int w = 160, h = 90;
     RenderOptions ids = test::options(RenderMode::ObjectId);
-    Scene alone = parseOrDie(localCsgScene(false, false));
-    Scene carved = parseOrDie(localCsgScene(true, true));
-    Scene whole = parseOrDie(localCsgScene(true, false));
+    Scene alone = test::parseSceneOrDie(localCsgScene(false, false));
+    Scene carved = test::parseSceneOrDie(localCsgScene(true, true));
+    Scene whole = test::parseSceneOrDie(localCsgScene(true, false));
     Image aloneIds = test::renderOrDie(alone, ids, w, h);
     const int ball = pixelsOf(aloneIds, 0), ellipsoid = pixelsOf(aloneIds, 1);
     ASSERT_GT(ball, 150) << "the ball fills part of the frame";
@@ -144,7 +136,7 @@ TEST(Groups, AMembersSubtractLeavesObjectsOutsideItsGroupWhole) {
 // group's placed in the world, or a path that leaves a group's members out of its bounds.
 TEST(Groups, GroupsThatFlattenDrawAlikeThroughEveryPath) {
     const int w = 160, h = 90;
-    Scene s = parseOrDie(std::string(kHeader) + kTable);
+    Scene s = test::parseSceneOrDie(std::string(kHeader) + kTable);
     ASSERT_TRUE(flatChain(s));
     std::vector<int> cpu = mirrorIds(s, w, h);
     ASSERT_GT(std::count(cpu.begin(), cpu.end(), 0), 150) << "the table top shows";
@@ -166,12 +158,12 @@ TEST(Groups, GroupsThatFlattenDrawAlikeThroughEveryPath) {
 // by its own members alone, its member groups' carving, blends or copies let into the flat chain.
 TEST(Groups, OnlySharpUnionsAllTheWayDownFlatten) {
     const std::string table = std::string(kHeader) + kTable;
-    EXPECT_TRUE(flatChain(parseOrDie(table)));
+    EXPECT_TRUE(flatChain(test::parseSceneOrDie(table)));
     for (const char* leg : {" op:subtract\n", " op:intersect\n", " blend:0.1\n"}) {
         std::string text = table;
         const std::string first = "height:0.7\n";
         text.replace(text.find(first), first.size(), std::string("height:0.7") + leg);
-        Scene s = parseOrDie(text);
+        Scene s = test::parseSceneOrDie(text);
         EXPECT_FALSE(flatChain(s)) << "a leg of the nested group with" << leg;
         EXPECT_EQ(flatGroups(s), (std::vector<bool>{false, false})) << leg;
     }
@@ -179,9 +171,10 @@ TEST(Groups, OnlySharpUnionsAllTheWayDownFlatten) {
         std::string text = table;
         const std::string legs = "group name:legs in:table pos:0,0.35,0";
         text.replace(text.find(legs), legs.size(), legs + key);
-        EXPECT_FALSE(flatChain(parseOrDie(text))) << key;
+        EXPECT_FALSE(flatChain(test::parseSceneOrDie(text))) << key;
         // The same group with no members adds nothing: it flattens.
-        Scene s = parseOrDie(std::string(kHeader) + "group name:empty static:1" + key + "\n");
+        Scene s =
+            test::parseSceneOrDie(std::string(kHeader) + "group name:empty static:1" + key + "\n");
         EXPECT_TRUE(flatChain(s)) << key;
     }
 }
@@ -242,11 +235,12 @@ TEST(Groups, TheShaderReadsAsTheTree) {
 // Play moves a body's group through its uniforms alone: the same program, new pixels. Its
 // members are compiled turned from the start, as a body of its own is.
 TEST(Groups, MovingABodysGroupCompilesNothing) {
-    Scene s = parseOrDie(std::string(kHeader) +
-                         "group name:cup pos:0,0.45,0 mass:0.5\n"
-                         "object in:cup type:cylinder material:0 pos:0,0,0 radius:0.4 height:0.9\n"
-                         "object in:cup type:cylinder material:1 pos:0,0.08,0 radius:0.32 "
-                         "height:0.9 op:subtract\n");
+    Scene s = test::parseSceneOrDie(
+        std::string(kHeader) +
+        "group name:cup pos:0,0.45,0 mass:0.5\n"
+        "object in:cup type:cylinder material:0 pos:0,0,0 radius:0.4 height:0.9\n"
+        "object in:cup type:cylinder material:1 pos:0,0.08,0 radius:0.32 "
+        "height:0.9 op:subtract\n");
     ASSERT_TRUE(s.groups[0].dynamic());
     ShaderFeatures before = shaderFeatures(s, RenderMode::ObjectId, false, 65536);
     for (const ObjectLayout& o : before.layout.objects) EXPECT_TRUE(o.rotated);

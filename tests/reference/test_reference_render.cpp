@@ -84,6 +84,29 @@ TEST(ReferenceRender, LitFloorIsAmbientPlusDiffusePlusSpecular) {
     }
 }
 
+// A pixel sees the floor's checkers averaged over its sample's footprint (§3). A 1x1 picture
+// looking straight down from 1 m has one sample, whose footprint is 2·tan(fov/2) m square: with
+// fov 90° that is a whole period along x and along z, grey (0.80 + 0.35)/2 wherever it lies;
+// with tan(fov/2) = ½ it is one square's size, the light square's or the dark one's colour when
+// centred on it and the mean when centred on an edge.
+TEST(ReferenceRender, APixelSeesTheFloorAveragedOverItsFootprint) {
+    Scene s = openFloor(sunFrom(dvec3(0, -1, 0)));
+    const double mean = (kLight + kDark) / 2, squareFov = 2.0 * std::atan(0.5) * 180.0 / M_PI;
+    struct Case {
+        double fov, x, z, albedo;
+    };
+    for (Case c :
+         {Case{90, 0.3, 0.2, mean}, Case{90, -7.77, 3.1, mean}, Case{squareFov, 0.5, 0.5, kLight},
+          Case{squareFov, 1.5, 0.5, kDark}, Case{squareFov, 1.0, 0.5, mean}}) {
+        s.camera.pos = glm::vec3(float(c.x), 1.0f, float(c.z));
+        s.camera.target = glm::vec3(float(c.x), 0.0f, float(c.z));
+        s.camera.fov = float(c.fov);
+        ReferenceImage img = renderReference(s, 1, 1);
+        dvec3 down(0, -1, 0), expected = floorPhong(c.albedo, -down, down, 1.0);
+        expectColor(dvec3(img.color(0, 0)), expected, 1e-4, "floor under the pixel");
+    }
+}
+
 TEST(ReferenceRender, SpecularPeaksAlongTheMirrorDirection) {
     // Light straight above a bulb-lit point, eye on the mirror ray: (r·v)^C = 1.
     dvec3 p(0.5, 0, 0.5), bulb(0.5, 4, 0.5);
@@ -235,7 +258,9 @@ TEST(ReferenceRender, PixelsFollowTheCameraRayAndTopRowFirst) {
         glm::vec3 dir = cameraRay(basis, glm::vec2(x + 0.5f, h - 1 - row + 0.5f), glm::vec2(w, h));
         ReferenceSample r = traceReference(s, dvec3(basis.pos), dvec3(dir));
         EXPECT_EQ(img.objectAt(x, row), r.object);
-        // cameraRay is float, the reference's own rays double: a few 1e-5 apart on the floor.
+        // A pixel averages the floor's squares over its footprint, which a lone ray has not.
+        if (r.object == kHitGround) continue;
+        // cameraRay is float, the reference's own rays double: a few 1e-5 apart.
         expectColor(dvec3(img.color(x, row)), glm::clamp(r.color, 0.0, 1.0), 1e-3, "pixel");
     }
 }

@@ -43,4 +43,7 @@ double rmse(const Image& a, const Image& b);
 double psnrFromRmse(double rmse);
 double psnr(const Image& a, const Image& b);
 
+// n×n box filter: an image rendered at n times the size (a multiple of n), averaged down.
+Image boxDownsample(const Image& big, int n);
+
 }  // namespace mb
