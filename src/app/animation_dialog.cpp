@@ -38,6 +38,7 @@ void AnimationDialog::start(UiContext& c) {
     renderer_ = std::make_unique<Renderer>();
     std::string error;
     if (!renderer_->init(&error)) return stop("cannot render: " + error);
+    ring_ = std::make_unique<FrameReadback>();
     out_ = openFrames(a.output, pattern, first_, a.width, a.height, *a.fps, false, &error);
     if (!out_) return stop(error);
     sequence_ = std::make_unique<FrameSequence>(scene, PhysicsSettings{}, *a.fps);
@@ -53,17 +54,20 @@ void AnimationDialog::stop(const std::string& status) {
     status_ = status;
     emitEvent(status_);
     tiles_.reset();
+    ring_.reset();
     out_.reset();
     sequence_.reset();
     renderer_.reset();
 }
 
-// Simulates to the frame, then draws its tiles, each until `until`; a whole frame is written.
+// Simulates to the frame, then draws its tiles, each until `until`; a drawn frame goes back to
+// memory while the next ones are drawn, and is written a few frames later, in order.
 bool AnimationDialog::nextFrame(double until) {
     const auto late = [until] { return glfwGetTime() >= until; };
     std::string error;
     if (!tiles_) {
         if (!sequence_->reach(frame_, late)) return false;
+        if (ring_->full() && !handOver()) return false;
         if (!renderer_->setScene(sequence_->scene(frame_), options_, &error))
             return stop("cannot render: " + error.substr(0, error.find('\n'))), false;
         tiles_ = std::make_unique<TiledRender>(*renderer_, choice_.width, choice_.height);
@@ -71,15 +75,23 @@ bool AnimationDialog::nextFrame(double until) {
     }
     while (!tiles_->done() && !late()) tiles_->step();
     if (!tiles_->done()) return false;
-    Image img = tiles_->finish();
+    const bool queued = tiles_->finish(*ring_, frame_, &error);
     tiles_.reset();
+    if (!queued) return stop("cannot render: " + error), false;
     if (GLenum e = glGetError())
         return stop("cannot render: OpenGL error " + std::to_string(e)), false;
-    if (!out_->write(frame_, img, &error)) return stop(error), false;
-    emitEvent("animation frame " + std::to_string(frame_));
-    if (++frame_ > last_)
-        return stop(out_->finish(&error) ? "saved frames " + frames_ + " to " + path_ : error),
-               false;
+    if (++frame_ <= last_) return true;
+    while (!ring_->empty())
+        if (!handOver()) return false;
+    return stop(out_->finish(&error) ? "saved frames " + frames_ + " to " + path_ : error), false;
+}
+
+bool AnimationDialog::handOver() {
+    ReadFrame f;
+    std::string error;
+    if (!ring_->take(&f, &error)) return stop("cannot render: " + error), false;
+    if (!out_->write(f.frame, f.image, &error)) return stop(error), false;
+    emitEvent("animation frame " + std::to_string(f.frame));
     return true;
 }
 

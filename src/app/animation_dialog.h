@@ -24,7 +24,8 @@ private:
     // The command line's options from the fields, else status_ says why.
     bool options(Args* a, FramePattern* pattern);
     void start(UiContext& c);
-    bool nextFrame(double until);  // true when a frame was written and more may follow
+    bool nextFrame(double until);  // true when a frame was drawn and more may follow
+    bool handOver();               // the oldest frame in flight to out_; false when stopped
     void stop(const std::string& status);
     void progress() const;
 
@@ -35,8 +36,9 @@ private:
     RenderOptions options_;
     std::unique_ptr<FrameSequence> sequence_;
     std::unique_ptr<FrameOutput> out_;
-    std::unique_ptr<Renderer> renderer_;  // its own: the window's keeps drawing meanwhile
-    std::unique_ptr<TiledRender> tiles_;  // the frame under way, once the simulation is there
+    std::unique_ptr<Renderer> renderer_;   // its own: the window's keeps drawing meanwhile
+    std::unique_ptr<TiledRender> tiles_;   // the frame under way, once the simulation is there
+    std::unique_ptr<FrameReadback> ring_;  // frames drawn, on their way back to memory
     std::string status_;
     std::string shownStatus_;  // status_ as last drawn
 };

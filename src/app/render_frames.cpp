@@ -49,8 +49,20 @@ private:
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-// Plays the scene and hands each frame to `out`; the exit status. Ctrl-C ends the process
-// (endInterrupted) once `out` has removed what was not whole.
+// Hands the oldest frame in flight to `out`. A terminal's Ctrl-C reaches ffmpeg too, which
+// then takes no more frames: that failure is the interruption's.
+int handOver(FrameReadback& ring, FrameOutput& out) {
+    ReadFrame f;
+    std::string error;
+    if (!ring.take(&f, &error)) return out.abandon(), glFailure("render", error);
+    if (!out.write(f.frame, f.image, &error) && !interrupted())
+        return out.abandon(), std::cerr << error << '\n', kExitBadInput;
+    return kExitOk;
+}
+
+// Plays the scene and hands each frame to `out`, in order, a few frames after it is drawn;
+// the exit status. Ctrl-C ends the process (endInterrupted) once `out` has removed what was
+// not whole; frames still in flight are dropped.
 int playFrames(const Scene& scene, const RenderOptions& options, const Args& a, FrameOutput& out) {
     OffscreenRun run;
     OffscreenContext context;
@@ -61,22 +73,23 @@ int playFrames(const Scene& scene, const RenderOptions& options, const Args& a, 
         return glFailure("render", error);
     run.progress = [](float, void*) { return !interrupted(); };  // a large frame stops midway
     FrameSequence sequence(scene, physicsSettings(a), a.fps.value_or(30));
+    FrameReadback ring;
     const FrameRange range = *a.frameRange;
     FrameProgress progress(range.first, range.last);
-    for (int k = range.first; k <= range.last && !interrupted(); ++k) {
+    int status = kExitOk;
+    for (int k = range.first; k <= range.last && !interrupted() && status == kExitOk; ++k) {
         if (sequence.reach(k, interrupted) && out.wanted(k)) {
-            Image img;
-            bool ok = renderFrame(renderer, sequence.scene(k), options, a.width, a.height, &img,
-                                  &error, run);
-            if (interrupted()) break;
+            if (ring.full()) status = handOver(ring, out);
+            bool ok = status == kExitOk && renderFrame(renderer, sequence.scene(k), options,
+                                                       a.width, a.height, ring, k, &error, run);
+            if (interrupted() || status != kExitOk) break;
             if (!ok) return out.abandon(), glFailure("render", error);
-            // A terminal's Ctrl-C reaches ffmpeg too, which then takes no more frames.
-            if (!out.write(k, img, &error) && !interrupted())
-                return out.abandon(), std::cerr << error << '\n', kExitBadInput;
         }
         progress.frameDone(k);
     }
+    while (status == kExitOk && !ring.empty() && !interrupted()) status = handOver(ring, out);
     if (interrupted()) out.abandon(), endInterrupted();
+    if (status != kExitOk) return status;
     if (out.finish(&error)) return kExitOk;
     std::cerr << error << '\n';
     return kExitBadInput;

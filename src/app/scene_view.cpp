@@ -161,10 +161,7 @@ bool saveScreenshot(int width, int height, const std::string& folder, std::strin
         *error = "nothing to capture: the window has no area";
         return false;
     }
-    Image img = makeImage(width, height);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    for (int row = 0; row < height; ++row)  // GL's row 0 is the bottom
-        glReadPixels(0, height - 1 - row, width, 1, GL_RGBA, GL_UNSIGNED_BYTE, img.pixel(0, row));
+    Image img = readFramebuffer(width, height);
     for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;  // the window is opaque
     *path = freeScreenshotName(folder);
     return savePng(*path, img, error);

@@ -164,12 +164,15 @@ void Renderer::draw(int width, int height) {
     endFrame();
 }
 
+// One read of the whole picture, not one per row: on a GPU each read waits for the drawing.
 Image readFramebuffer(int width, int height) {
     Image img = makeImage(width, height);
+    std::vector<uint8_t> bottomUp(img.rgba.size());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glFinish();
-    for (int row = 0; row < height; ++row)  // GL's row 0 is the bottom
-        glReadPixels(0, height - 1 - row, width, 1, GL_RGBA, GL_UNSIGNED_BYTE, img.pixel(0, row));
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
+    const size_t row = size_t(width) * 4;
+    for (int y = 0; y < height; ++y)  // GL's row 0 is the bottom
+        std::copy_n(bottomUp.data() + row * size_t(height - 1 - y), row, img.pixel(0, y));
     return img;
 }
 
@@ -219,11 +222,18 @@ Image TiledRender::finish() {
     return readFramebuffer(width_, height_);
 }
 
-bool renderFrame(Renderer& renderer, const Scene& scene, const RenderOptions& options, int width,
-                 int height, Image* out, std::string* error, const OffscreenRun& run) {
-    if (!renderer.setScene(scene, options, error)) return false;
-    TiledRender tiles(renderer, width, height);
-    if (!tiles.start(error)) return false;
+bool TiledRender::finish(FrameReadback& ring, int frame, std::string* error) {
+    FramebufferGuard guard;
+    renderer_.endFrame(&result_);
+    return ring.start(frame, width_, height_, error);
+}
+
+namespace {
+
+// Sets the scene and draws every tile, asking run.progress between them.
+bool drawTiles(TiledRender& tiles, const Scene& scene, const RenderOptions& options,
+               Renderer& renderer, std::string* error, const OffscreenRun& run) {
+    if (!renderer.setScene(scene, options, error) || !tiles.start(error)) return false;
     while (!tiles.done()) {
         tiles.step();
         if (run.progress && !run.progress(tiles.progress(), run.user)) {
@@ -231,13 +241,33 @@ bool renderFrame(Renderer& renderer, const Scene& scene, const RenderOptions& op
             return false;
         }
     }
+    return true;
+}
+
+bool noGlError(std::string* error) {
+    const GLenum e = glGetError();
+    if (e != GL_NO_ERROR) *error = "OpenGL error " + std::to_string(e) + " while rendering";
+    return e == GL_NO_ERROR;
+}
+
+}  // namespace
+
+bool renderFrame(Renderer& renderer, const Scene& scene, const RenderOptions& options, int width,
+                 int height, Image* out, std::string* error, const OffscreenRun& run) {
+    TiledRender tiles(renderer, width, height);
+    if (!drawTiles(tiles, scene, options, renderer, error, run)) return false;
     Image img = tiles.finish();
-    if (GLenum e = glGetError()) {
-        *error = "OpenGL error " + std::to_string(e) + " while rendering";
-        return false;
-    }
+    if (!noGlError(error)) return false;
     *out = std::move(img);
     return true;
+}
+
+bool renderFrame(Renderer& renderer, const Scene& scene, const RenderOptions& options, int width,
+                 int height, FrameReadback& ring, int frame, std::string* error,
+                 const OffscreenRun& run) {
+    TiledRender tiles(renderer, width, height);
+    return drawTiles(tiles, scene, options, renderer, error, run) &&
+           tiles.finish(ring, frame, error) && noGlError(error);
 }
 
 bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width, int height,

@@ -832,6 +832,28 @@ def case_render(app, scene):
     check(app.finish() == 0, 'exit status not 0')
 
 
+def case_animation(app, scene):
+    """File > Render Animation... plays the scene from 0 and writes its frames as numbered PNG
+    files, drawn between the window's frames and read back a few frames behind the drawing:
+    every frame arrives, in order, and each is the bytes `marchbox render --frames` writes."""
+    app.menu('File', 'Render Animation...')
+    for field, value in (('animation/file', 'anim_%03d.png'), ('animation/frames', '0-5'),
+                         ('animation/fps', '30'), ('animation/width', '160'), ('animation/height', '90')):
+        fill(app, field, value)
+    app.click(*scroll_into(app, 'animation/start', panel(app, 'Render Animation')))
+    app.wait('saved frames ', timeout=100)
+    written = [l for l in app.events() if l.startswith('animation frame ')]
+    check(written == ['animation frame %d' % k for k in range(6)], 'frames written as %r' % written)
+    cli = os.path.join(app.workdir, 'cli_%03d.png')
+    subprocess.run([MARCHBOX, 'render', scene, '-o', cli, '--frames', '0-5', '--fps', '30',
+                    '--size', '160x90'], check=True, capture_output=True)
+    for k in range(6):
+        ours = open(os.path.join(app.workdir, 'anim_%03d.png' % k), 'rb').read()
+        check(ours == open(cli % k, 'rb').read(), 'frame %d differs from marchbox render --frames' % k)
+    app.key('ctrl+q')
+    check(app.finish() == 0, 'exit status not 0')
+
+
 def check_render_as_cli(app, scene):
     """The dialog's sizes are the command line's, refused in its words; at View > Quality's
     preset, with the supersampling chosen, it writes what `marchbox render --quality` writes

@@ -3,6 +3,7 @@
 
 #include "marchbox/gl/buffers.h"
 #include "marchbox/gl/checkerboard.h"
+#include "marchbox/gl/frame_readback.h"
 #include "marchbox/gl/framebuffer.h"
 #include "marchbox/gl/gpu_scene.h"
 #include "marchbox/gl/offscreen_context.h"
@@ -192,6 +193,8 @@ public:
     void step();  // draws the next tile
     float progress() const { return tileCount() ? float(next_) / float(tileCount()) : 1.0f; }
     Image finish();  // resolves and reads back; row 0 at the top
+    // Resolves and queues the copy back in `ring` (not full) as frame `frame`.
+    bool finish(FrameReadback& ring, int frame, std::string* error);
 
 private:
     int tileCount() const { return tilesX_ * tilesY_; }
@@ -214,6 +217,12 @@ struct OffscreenRun {
 // a sequence of frames keeps one renderer and its compiled program.
 bool renderFrame(Renderer& renderer, const Scene& scene, const RenderOptions& options, int width,
                  int height, Image* out, std::string* error, const OffscreenRun& run = {});
+
+// renderFrame, with the frame queued in `ring` as frame `frame` instead of read back at once:
+// frames of a sequence travel back while the next ones are drawn.
+bool renderFrame(Renderer& renderer, const Scene& scene, const RenderOptions& options, int width,
+                 int height, FrameReadback& ring, int frame, std::string* error,
+                 const OffscreenRun& run = {});
 
 // Creates an off-screen context, renders one width × height frame in tiles and reads it back.
 bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width, int height,

@@ -1,0 +1,65 @@
+// frame_readback.cpp — the ring of pack buffers behind FrameReadback.
+#include "marchbox/gl/frame_readback.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace mb {
+
+FrameReadback::FrameReadback(int depth) : depth_(std::max(1, depth)), slots_(size_t(depth_)) {}
+
+FrameReadback::~FrameReadback() {
+    for (Slot& s : slots_) {
+        if (s.fence) glDeleteSync(s.fence);
+        if (s.buffer) glDeleteBuffers(1, &s.buffer);
+    }
+}
+
+bool FrameReadback::start(int frame, int width, int height, std::string* error) {
+    Slot& s = slots_[size_t(next_)];
+    const GLsizeiptr bytes = GLsizeiptr(width) * height * 4;
+    if (!s.buffer) glGenBuffers(1, &s.buffer);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, s.buffer);
+    if (s.width != width || s.height != height)
+        glBufferData(GL_PIXEL_PACK_BUFFER, bytes, nullptr, GL_STREAM_READ);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    if (GLenum e = glGetError()) {
+        *error = "cannot read back a " + std::to_string(width) + "x" + std::to_string(height) +
+                 " frame (OpenGL error " + std::to_string(e) + ")";
+        s.width = s.height = 0;  // the buffer's size is not known now
+        return false;
+    }
+    s.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    s.frame = frame, s.width = width, s.height = height;
+    inFlight_.push_back(next_);
+    next_ = (next_ + 1) % depth_;
+    return true;
+}
+
+// GL's rows run from the bottom; the image's from the top.
+bool FrameReadback::take(ReadFrame* out, std::string* error) {
+    Slot& s = slots_[size_t(inFlight_.front())];
+    inFlight_.pop_front();
+    glClientWaitSync(s.fence, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(-1));
+    glDeleteSync(s.fence);
+    s.fence = nullptr;
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, s.buffer);
+    const size_t row = size_t(s.width) * 4;
+    const auto* pixels = static_cast<const uint8_t*>(
+        glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0, GLsizeiptr(row * s.height), GL_MAP_READ_BIT));
+    if (pixels) {
+        *out = {s.frame, makeImage(s.width, s.height)};
+        for (int y = 0; y < s.height; ++y)
+            std::memcpy(out->image.pixel(0, y), pixels + row * size_t(s.height - 1 - y), row);
+        glUnmapBuffer(GL_PIXEL_PACK_BUFFER);
+    } else {
+        *error = "cannot read back frame " + std::to_string(s.frame) + " (OpenGL error " +
+                 std::to_string(glGetError()) + ")";
+    }
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    return pixels != nullptr;
+}
+
+}  // namespace mb
