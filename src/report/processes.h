@@ -16,4 +16,8 @@ std::string besideExecutable(const std::string& name);
 // seconds; negative where it cannot be started or does not exit with 0.
 double timedRun(const std::vector<std::string>& args);
 
+// The same, keeping its standard output in *out; false where it cannot be started or does not
+// exit with 0.
+bool runForOutput(const std::vector<std::string>& args, std::string* out);
+
 }  // namespace mb

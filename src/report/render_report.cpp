@@ -3,6 +3,7 @@
 // come from one run.
 #include "marchbox/report/render_report.h"
 
+#include "device_report.h"
 #include "report_plot.h"
 #include "report_template.h"
 #include "sequence_report.h"
@@ -574,16 +575,29 @@ int runRenderReport(const std::string& root, OffscreenBackend backend) {
     }
     target.bind();
     std::filesystem::create_directories(docs);
-    TemplateValues v = {{"platform", context.platform()},
-                        {"gl_renderer", reinterpret_cast<const char*>(glGetString(GL_RENDERER))},
-                        {"machine", machineDescription()}};
-    describeMethod(&v);
-    measureAll(renderer, root, docs, &v);
-    if (!writeReport(docs + "/render-report.md", text, v, &error)) {
-        std::cerr << error << '\n';
-        return 1;
+    const std::string path = docs + "/render-report.md";
+    std::string written;  // its device section is kept, or replaced alone
+    readTextFile(path, &written);
+    const std::string device = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    if (backend == OffscreenBackend::Egl) {  // the device's section alone
+        std::cerr << "render report: " << device << " through EGL\n";
+        if (!writeTextFile(path, withDeviceSection(written, deviceSection(root, device)))) {
+            std::cerr << "cannot write " << path << '\n';
+            return 1;
+        }
+    } else {
+        TemplateValues v = {{"platform", context.platform()},
+                            {"gl_renderer", device},
+                            {"machine", machineDescription()},
+                            {"device_section", keptDeviceSection(written)}};
+        describeMethod(&v);
+        measureAll(renderer, root, docs, &v);
+        if (!writeReport(path, text, v, &error)) {
+            std::cerr << error << '\n';
+            return 1;
+        }
     }
-    std::cout << "wrote " << docs << "/render-report.md\n";
+    std::cout << "wrote " << path << '\n';
     return 0;
 }
 

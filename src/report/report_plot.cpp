@@ -109,6 +109,14 @@ std::string machineDescription() {
     return cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads";
 }
 
+bool readTextFile(const std::string& path, std::string* text) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    if (!(in && s << in.rdbuf())) return false;
+    *text = s.str();
+    return true;
+}
+
 bool writeTextFile(const std::string& path, const std::string& text) {
     std::ofstream out(path, std::ios::binary);
     out << text;

@@ -22,5 +22,6 @@ std::string logLogPlotSvg(const std::string& title, const std::string& xLabel,
 
 std::string machineDescription();  // CPU model and core count, for "measured on"
 bool writeTextFile(const std::string& path, const std::string& text);
+bool readTextFile(const std::string& path, std::string* text);  // false where it cannot
 
 }  // namespace mb

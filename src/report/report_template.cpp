@@ -13,14 +13,9 @@ namespace mb {
 bool readReportTemplate(const std::string& root, const std::string& file, std::string* text,
                         std::string* error) {
     const std::string path = root + "/src/report/templates/" + file;
-    std::ifstream in(path);
-    std::ostringstream s;
-    if (!(in && s << in.rdbuf())) {
-        *error = "cannot read the report template " + path;
-        return false;
-    }
-    *text = s.str();
-    return true;
+    if (readTextFile(path, text)) return true;
+    *error = "cannot read the report template " + path;
+    return false;
 }
 
 bool fillTemplate(const std::string& text, const TemplateValues& values, std::string* out,
