@@ -1,10 +1,9 @@
 // rigid_bodies.cpp — bodies of every shape but the sphere: their contacts, rows and motion.
 #include "rigid_bodies.h"
 
-#include "box_box.h"
-#include "capsule_contacts.h"
 #include "island.h"
 #include "manifold_points.h"
+#include "pair_table.h"
 #include "rigid_body.h"
 
 #include <algorithm>
@@ -397,12 +396,6 @@ double lowest(const std::vector<Candidate>& all) {
     double low = all.empty() ? 0.0 : all[0].point.y;
     for (const Candidate& c : all) low = std::min(low, c.point.y);
     return low;
-}
-
-BoxPose boxOf(const RigidBody& b) { return {b.pos, b.orient, dvec3(b.shape.size)}; }
-
-CapsulePose capsuleOf(const RigidBody& b) {
-    return {b.pos, b.orient, 0.5 * double(b.shape.height), double(b.shape.radius)};
 }
 
 // Where a side of an analytic contact turns from: a capsule's segment point, r + ½·s behind the
@@ -837,32 +830,19 @@ void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bo
     probe(at, 0.0, int(prober.probes.size() + kRimIds * prober.rims.size()), at);
 }
 
-// The pair's contacts in closed form where both are boxes or capsules (box_box.h,
-// capsule_contacts.h), normals from a to b; false for every other pair.
+// The pair's contacts in closed form, by the pair table's routine for its two types (pair_table.h),
+// normals from a to b; false where it has none, and for groups and rounded shapes.
 bool RigidBodies::collideAnalytic(const RigidBody& a, const RigidBody& b) {
     if (a.groupShape || b.groupShape || a.shape.round > 0.0f || b.shape.round > 0.0f) return false;
-    const ShapeType ta = a.shape.type, tb = b.shape.type;
-    const bool boxA = ta == ShapeType::Box, boxB = tb == ShapeType::Box;
-    if ((!boxA && ta != ShapeType::Capsule) || (!boxB && tb != ShapeType::Capsule)) return false;
-    const double reach = reachOf(a, b);
-    std::vector<PairContact> found;
-    if (boxA && boxB) {
-        found = collideBoxes(boxOf(a), boxOf(b), reach);
-    } else if (!boxA && !boxB) {
-        found = collideCapsules(capsuleOf(a), capsuleOf(b), reach);
-    } else if (boxB) {
-        found = collideCapsuleBox(capsuleOf(a), boxOf(b), reach);
-    } else {  // found from the capsule, b, to the box: turned to point from a to b
-        found = collideCapsuleBox(capsuleOf(b), boxOf(a), reach);
-        for (PairContact& c : found) c.normal = -c.normal;
-    }
-    for (const PairContact& c : found)
+    const PairRoutine routine = pairRoutine(a.shape.type, b.shape.type);
+    if (!routine) return false;
+    for (const PairContact& c : routine(a, b, reachOf(a, b)))
         candidates_.push_back(
             {c.point, c.normal, c.separation, c.feature, coreOf(a, c, -1.0), coreOf(b, c, 1.0)});
     return true;
 }
 
-// Boxes and capsules in closed form (collideAnalytic); every other pair by probing both ways.
+// The pair table's closed forms (collideAnalytic); every other pair by probing both ways.
 void RigidBodies::collidePair(int i, int j) {
     candidates_.clear();
     const RigidBody &bi = bodies_[size_t(i)], &bj = bodies_[size_t(j)];
