@@ -581,6 +581,7 @@ ContactSide RigidBodies::sideOf(RigidBody& b, const dvec3& point, const dvec3& c
 void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     contacts_.clear();
     massRatio_ = 1.0;
+    pairCache_.nextStep();
     if (bodies_.empty()) return;  // a scene of spheres alone: nothing here to do
     const int n = count(), m = int(spheres.size()) - 1;  // spheres end with the static body
     centres_.resize(size_t(n + m));
@@ -846,10 +847,15 @@ bool RigidBodies::collideAnalytic(const RigidBody& a, const RigidBody& b) {
 void RigidBodies::collidePair(int i, int j) {
     candidates_.clear();
     const RigidBody &bi = bodies_[size_t(i)], &bj = bodies_[size_t(j)];
-    if (!collideAnalytic(bi, bj)) {
-        if (boxesApart(bi, bj)) return;
-        probeShape(bj, bi, false, 0);
-        probeShape(bi, bj, true, 128);
+    const double reach = std::max(reachOf(bi, bj), reachOf(bj, bi));
+    const bool cached = bi.groupShape || bj.groupShape;
+    if (!cached || !pairCache_.reuse(pairKey(i, j), bi, bj, reach, &candidates_)) {
+        if (!collideAnalytic(bi, bj)) {
+            if (boxesApart(bi, bj)) return;
+            probeShape(bj, bi, false, 0);
+            probeShape(bi, bj, true, 128);
+        }
+        if (cached) pairCache_.keep(pairKey(i, j), bi, bj, reach, candidates_);
     }
     RigidBody &a = bodies_[size_t(i)], &b = bodies_[size_t(j)];
     auto add = [&](std::uint64_t manifold) {

@@ -26,6 +26,7 @@
 #include "contact_solver.h"
 #include "group_body.h"
 #include "oriented_box.h"
+#include "pair_cache.h"
 #include "rigid_probes.h"
 #include "static_collider.h"
 #include "warm_starts.h"
@@ -175,14 +176,7 @@ public:
     double deepestOverlap() const;  // m, at the last step's start
 
 private:
-    struct Candidate {
-        glm::dvec3 point, normal;  // normal from a to b
-        double separation;
-        int probe;  // key within the pair
-        // Where each side's anchor turns from (sideOf's `centre`): a probe's centre, a capsule's
-        // segment point, or the point itself where it turns with the body (a corner).
-        glm::dvec3 centreA, centreB;
-    };
+    using Candidate = PairCandidate;
     void collideStatics(int i);
     void collidePair(int i, int j);
     void collideSphere(int i, PhysicsBody& sphere, int sphereIndex);
@@ -220,8 +214,9 @@ private:
     void undo(Manifold& m);
     std::vector<Manifold> manifolds_;
     std::vector<Candidate> candidates_;
-    WarmStarts kept_;  // last step's impulses, to start this step's rows from
-    struct Place {     // a contact's sort key and where it is
+    PairCache pairCache_;  // points of pairs that have barely moved, not found again
+    WarmStarts kept_;      // last step's impulses, to start this step's rows from
+    struct Place {         // a contact's sort key and where it is
         double height;
         std::uint64_t key;
         size_t index;

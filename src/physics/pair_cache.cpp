@@ -1,0 +1,66 @@
+// pair_cache.cpp — the kept points of each pair, found again only once the pair has moved.
+#include "pair_cache.h"
+
+#include "rigid_bodies.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace mb {
+
+namespace {
+
+using glm::dquat;
+using glm::dvec3;
+
+dvec3 toFrame(const RigidBody& body, const dvec3& world) {
+    return glm::conjugate(body.orient) * (world - body.pos);
+}
+
+dvec3 toWorld(const RigidBody& body, const dvec3& local) { return body.pos + body.orient * local; }
+
+}  // namespace
+
+void PairCache::nextStep() {
+    last_.swap(now_);
+    now_.clear();
+}
+
+bool PairCache::reuse(std::uint64_t pair, const RigidBody& a, const RigidBody& b, double reach,
+                      std::vector<PairCandidate>* out) {
+    const auto found = last_.find(pair);
+    if (found == last_.end()) return false;
+    const Entry& e = found->second;
+    const double shift = glm::length(toFrame(a, b.pos) - e.offset);
+    // The angle between the two turns is 2·acos|q·q'|.
+    const double cosHalf =
+        std::min(std::abs(glm::dot(glm::conjugate(a.orient) * b.orient, e.turn)), 1.0);
+    const double turned = 2.0 * std::acos(cosHalf);
+    if (e.points.empty() ? reach + shift + turned * b.bound > e.reach
+                         : shift > kMovedMost || turned > glm::radians(kTurnedMost))
+        return false;
+    out->clear();
+    for (const Point& p : e.points) {
+        const dvec3 onA = toWorld(a, p.onA), onB = toWorld(b, p.onB), n = a.orient * p.normal;
+        out->push_back({0.5 * (onA + onB), n, glm::dot(onB - onA, n), p.probe,
+                        toWorld(a, p.centreA), toWorld(b, p.centreB)});
+    }
+    now_.insert(*found);
+    return true;
+}
+
+void PairCache::keep(std::uint64_t pair, const RigidBody& a, const RigidBody& b, double reach,
+                     const std::vector<PairCandidate>& found) {
+    Entry e{toFrame(a, b.pos), glm::conjugate(a.orient) * b.orient, reach, {}};
+    for (const PairCandidate& c : found) {
+        const dvec3 half = 0.5 * c.separation * c.normal;
+        e.points.push_back({toFrame(a, c.point - half), toFrame(a, c.centreA),
+                            toFrame(b, c.point + half), toFrame(b, c.centreB),
+                            glm::conjugate(a.orient) * c.normal, c.probe});
+    }
+    now_[pair] = std::move(e);
+}
+
+}  // namespace mb

@@ -1,0 +1,65 @@
+// pair_cache.h — a pair's contact points kept while the two bodies lie as they lay, as Jolt's
+// body pair cache keeps them. Finding the points (the closed forms, or probing each body's
+// surface against the other's SDF) is most of a rigid step, and in a pile most pairs barely
+// move against each other from one step to the next.
+//
+// Each point is kept on the surfaces that made it, each end in its own body's frame, with the
+// normal in a's. While b stands within kMovedMost and kTurnedMost of where it stood against a
+// when the points were found, the points are rebuilt from the bodies' poses now: both ends move
+// with their bodies, so the separation follows the bodies' motion along the kept normal. Past
+// either bound, or when the pair was not met in the last step, the points are found anew.
+//
+// A pair that had no point within its reach has none still while its reach now, plus how far
+// any point of b can have come towards a (b's shift, and its turn times its bound), is within
+// the reach it was searched to: no point was nearer than that.
+#pragma once
+
+#include <cstdint>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
+#include <unordered_map>
+#include <vector>
+
+namespace mb {
+
+struct RigidBody;
+
+struct PairCandidate {
+    glm::dvec3 point, normal;  // midway between the surfaces; normal from a to b
+    double separation;
+    int probe;  // key within the pair
+    // Where each side's anchor turns from (sideOf's `centre`): a probe's centre, a capsule's
+    // segment point, or the point itself where it turns with the body (a corner).
+    glm::dvec3 centreA, centreB;
+};
+
+class PairCache {
+public:
+    static constexpr double kMovedMost = 5e-4;  // m, b's origin in a's frame
+    static constexpr double kTurnedMost = 0.5;  // degrees, b's turn in a's frame
+
+    void nextStep();  // pairs not met in the step that ended are forgotten
+    // The pair's points rebuilt for the poses now, into *out; false where they must be found.
+    // `reach`: how far apart the bodies' points may be and still meet in this step.
+    bool reuse(std::uint64_t pair, const RigidBody& a, const RigidBody& b, double reach,
+               std::vector<PairCandidate>* out);
+    void keep(std::uint64_t pair, const RigidBody& a, const RigidBody& b, double reach,
+              const std::vector<PairCandidate>& found);
+
+private:
+    struct Point {
+        glm::dvec3 onA, centreA;  // a's frame
+        glm::dvec3 onB, centreB;  // b's frame
+        glm::dvec3 normal;        // a's frame
+        int probe;
+    };
+    struct Entry {
+        glm::dvec3 offset;  // b's origin in a's frame, when found
+        glm::dquat turn;    // b's orientation in a's frame, when found
+        double reach;       // searched to
+        std::vector<Point> points;
+    };
+    std::unordered_map<std::uint64_t, Entry> last_, now_;
+};
+
+}  // namespace mb
