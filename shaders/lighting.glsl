@@ -47,7 +47,7 @@ struct Surface {
 };
 
 // The floor's 1 m checkers, light where floor(x) + floor(z) is even, are averaged over the
-// square a sample covers on the floor (docs/shading-model.md §4), so that far squares blend to
+// square a sample covers on the floor (docs/shading-model.md §3), so that far squares blend to
 // grey instead of aliasing. Along one axis the pattern is a ±1 wave of period 2, +1 on even
 // squares; its integral is a triangle wave, so a box's mean is a difference of two of them.
 vec2 waveIntegral(vec2 x) { return 1.0 - abs(1.0 - mod(x, 2.0)); }
@@ -60,7 +60,7 @@ float darkShare(vec2 p, vec2 w) {
     return 0.5 - 0.5 * mean.x * mean.y;
 }
 
-// The box a sample's cone, radius r where it meets the floor, covers there: r across the ray,
+// The box a sample's cone, radius r where it meets the floor, covers there: 2r across the ray,
 // stretched by 1/|rd.y| along it.
 vec2 floorFootprint(vec3 rd, float r) {
     vec2 along = dot(rd.xz, rd.xz) > 1e-12 ? normalize(rd.xz) : vec2(1.0, 0.0);

@@ -16,6 +16,10 @@ FrameReadback::~FrameReadback() {
 }
 
 bool FrameReadback::start(int frame, int width, int height, std::string* error) {
+    if (full()) {  // its oldest slot is still in flight
+        *error = "cannot read back frame " + std::to_string(frame) + ": frames in flight not taken";
+        return false;
+    }
     Slot& s = slots_[size_t(next_)];
     const GLsizeiptr bytes = GLsizeiptr(width) * height * 4;
     if (!s.buffer) glGenBuffers(1, &s.buffer);
@@ -40,26 +44,34 @@ bool FrameReadback::start(int frame, int width, int height, std::string* error) 
 
 // GL's rows run from the bottom; the image's from the top.
 bool FrameReadback::take(ReadFrame* out, std::string* error) {
+    if (empty()) {
+        *error = "no frame in flight to read back";
+        return false;
+    }
     Slot& s = slots_[size_t(inFlight_.front())];
     inFlight_.pop_front();
-    glClientWaitSync(s.fence, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(-1));
+    const GLenum waited = glClientWaitSync(s.fence, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(-1));
     glDeleteSync(s.fence);
     s.fence = nullptr;
     glBindBuffer(GL_PIXEL_PACK_BUFFER, s.buffer);
     const size_t row = size_t(s.width) * 4;
-    const auto* pixels = static_cast<const uint8_t*>(
-        glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0, GLsizeiptr(row * s.height), GL_MAP_READ_BIT));
+    const auto* pixels =
+        waited == GL_WAIT_FAILED
+            ? nullptr
+            : static_cast<const uint8_t*>(glMapBufferRange(
+                  GL_PIXEL_PACK_BUFFER, 0, GLsizeiptr(row * s.height), GL_MAP_READ_BIT));
+    bool whole = pixels != nullptr;
     if (pixels) {
         *out = {s.frame, makeImage(s.width, s.height)};
         for (int y = 0; y < s.height; ++y)
             std::memcpy(out->image.pixel(0, y), pixels + row * size_t(s.height - 1 - y), row);
-        glUnmapBuffer(GL_PIXEL_PACK_BUFFER);
-    } else {
-        *error = "cannot read back frame " + std::to_string(s.frame) + " (OpenGL error " +
-                 std::to_string(glGetError()) + ")";
+        whole = glUnmapBuffer(GL_PIXEL_PACK_BUFFER) == GL_TRUE;  // false: the copy was lost
     }
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-    return pixels != nullptr;
+    if (!whole)
+        *error = "cannot read back frame " + std::to_string(s.frame) + " (OpenGL error " +
+                 std::to_string(glGetError()) + ")";
+    return whole;
 }
 
 }  // namespace mb

@@ -71,7 +71,7 @@ void Renderer::marchViewport(int x, int y, int w, int h) {
 
 // A pixel spans 2·tan(fov/2)/height per metre along a primary ray, and each of its n×n samples
 // stands for 1/n of that across: the floor's checkers are averaged over the sample's share.
-void Renderer::setFrameSize(const Program& p) const {
+void Renderer::setPixelUniforms(const Program& p) const {
     const float pixelRadius = tanHalfFov_ / float(frameHeight_);
     p.set("uResolution", glm::vec2(frameWidth_, frameHeight_));
     p.set("uPixelRadius", pixelRadius);
@@ -82,7 +82,7 @@ void Renderer::drawRegion(int x, int y, int w, int h) {
     if (!current_ || w <= 0 || h <= 0) return;
     const Program& p = *current_;
     glUseProgram(p.id());
-    setFrameSize(p);
+    setPixelUniforms(p);
     p.set("uSampleWeight", 1.0f / float(frameSamples_ * frameSamples_));
     marchViewport(x, y, w, h);
     if (accumulating_ && blending_) {
@@ -128,7 +128,7 @@ void Renderer::drawSample(int x, int y, int w, int h, glm::vec2 subpixel, float 
     if (!current_ || !accumulating_ || w <= 0 || h <= 0) return;
     const Program& p = *current_;
     glUseProgram(p.id());
-    setFrameSize(p);
+    setPixelUniforms(p);
     p.set("uSampleWeight", 1.0f);  // the blend below weighs the sample
     p.set("uSubpixel", subpixel);
     marchViewport(x, y, w, h);
@@ -266,8 +266,8 @@ bool renderFrame(Renderer& renderer, const Scene& scene, const RenderOptions& op
                  int height, FrameReadback& ring, int frame, std::string* error,
                  const OffscreenRun& run) {
     TiledRender tiles(renderer, width, height);
-    return drawTiles(tiles, scene, options, renderer, error, run) &&
-           tiles.finish(ring, frame, error) && noGlError(error);
+    return drawTiles(tiles, scene, options, renderer, error, run) && noGlError(error) &&
+           tiles.finish(ring, frame, error);
 }
 
 bool renderOffscreen(const Scene& scene, const RenderOptions& options, int width, int height,

@@ -38,8 +38,10 @@ bool PairCache::reuse(std::uint64_t pair, const RigidBody& a, const RigidBody& b
     const double cosHalf =
         std::min(std::abs(glm::dot(glm::conjugate(a.orient) * b.orient, e.turn)), 1.0);
     const double turned = 2.0 * std::acos(cosHalf);
-    if (e.points.empty() ? reach + shift + turned * b.bound > e.reach
-                         : shift > kMovedMost || turned > glm::radians(kTurnedMost))
+    const double came = shift + turned * b.bound;  // the most any point of b came towards a
+    if (e.points.empty()
+            ? reach + came > e.reach
+            : shift > kMovedMost || turned > glm::radians(kTurnedMost) || came > 0.5 * e.reach)
         return false;
     out->clear();
     for (const Point& p : e.points) {
@@ -47,7 +49,7 @@ bool PairCache::reuse(std::uint64_t pair, const RigidBody& a, const RigidBody& b
         out->push_back({0.5 * (onA + onB), n, glm::dot(onB - onA, n), p.probe,
                         toWorld(a, p.centreA), toWorld(b, p.centreB)});
     }
-    now_.insert(*found);
+    now_.insert(last_.extract(found));
     return true;
 }
 

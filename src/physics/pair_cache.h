@@ -11,8 +11,13 @@
 //
 // A pair that had no point within its reach has none still while its reach now, plus how far
 // any point of b can have come towards a (b's shift, and its turn times its bound), is within
-// the reach it was searched to: no point was nearer than that.
+// the reach it was searched to: no point was nearer than that. Kept points miss what came within
+// reach since; so b must also have come less than half the reach (every reach is at least 4
+// linear slops, 2 cm at the defaults), which the bounds above keep for bodies whose bound is under
+// 1 m: larger ones are found anew.
 #pragma once
+
+#include "pair_contact.h"
 
 #include <cstdint>
 #include <glm/gtc/quaternion.hpp>
@@ -23,15 +28,6 @@
 namespace mb {
 
 struct RigidBody;
-
-struct PairCandidate {
-    glm::dvec3 point, normal;  // midway between the surfaces; normal from a to b
-    double separation;
-    int probe;  // key within the pair
-    // Where each side's anchor turns from (sideOf's `centre`): a probe's centre, a capsule's
-    // segment point, or the point itself where it turns with the body (a corner).
-    glm::dvec3 centreA, centreB;
-};
 
 class PairCache {
 public:

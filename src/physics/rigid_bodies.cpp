@@ -744,7 +744,7 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
 }
 
 // How far apart two bodies' points may be and still meet within the step: the slop's margin
-// and how far their relative motion and turning carry them.
+// and how far their relative motion and turning carry them. The same either way round.
 double RigidBodies::reachOf(const RigidBody& a, const RigidBody& b) const {
     return 4.0 * settings_.linearSlop +
            (glm::length(a.vel - b.vel) + glm::length(a.spin) * a.bound +
@@ -757,7 +757,7 @@ double RigidBodies::reachOf(const RigidBody& a, const RigidBody& b) const {
 // would find nothing. Checked before the probes, most of which it spares.
 bool RigidBodies::boxesApart(const RigidBody& a, const RigidBody& b) const {
     if ((!a.groupShape && !b.groupShape) || a.parts.empty() || b.parts.empty()) return false;
-    const double reach = std::max(reachOf(a, b), reachOf(b, a)) + boxSlack(a) + boxSlack(b);
+    const double reach = reachOf(a, b) + boxSlack(a) + boxSlack(b);
     return !boxesOverlap(placed(a.hull, a.orient, a.pos), placed(b.hull, b.orient, b.pos), -reach);
 }
 
@@ -847,7 +847,7 @@ bool RigidBodies::collideAnalytic(const RigidBody& a, const RigidBody& b) {
 void RigidBodies::collidePair(int i, int j) {
     candidates_.clear();
     const RigidBody &bi = bodies_[size_t(i)], &bj = bodies_[size_t(j)];
-    const double reach = std::max(reachOf(bi, bj), reachOf(bj, bi));
+    const double reach = reachOf(bi, bj);
     const bool cached = bi.groupShape || bj.groupShape;
     if (!cached || !pairCache_.reuse(pairKey(i, j), bi, bj, reach, &candidates_)) {
         if (!collideAnalytic(bi, bj)) {

@@ -32,7 +32,7 @@ struct Model {
     double epsilon = 0.001;
     double softness = 8.0;
     double far = 100.0;         // a directional light's shadow rays end here (the GPU's uMaxDist)
-    double sampleRadius = 0.0;  // half a sample's width per metre of path (§4); 0 point-samples
+    double sampleRadius = 0.0;  // half a sample's width per metre of path (§3); 0 point-samples
 };
 
 Model prepareModel(const Scene& scene, const ReferenceOptions& options);

@@ -91,7 +91,7 @@ dvec3 shade(const Model& m, const SurfaceMaterial& s, dvec3 p, dvec3 n, dvec3 d,
 }
 
 // A surface on the path: its object, whether its normal is a crease's blend, and on the ground
-// its checker square itself, since parity alone repeats every other square. Averaged over a
+// its checker square itself, not its parity, which every other square shares. Averaged over a
 // sample's footprint the squares' edges are a pixel wide, but a curved mirror spreads its rays
 // wider than the cone that footprint assumes, and there they still alias.
 void noteSurface(PathResult* path, const Hit& hit, dvec3 p, bool crease) {

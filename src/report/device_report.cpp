@@ -101,7 +101,7 @@ std::string agreement(const std::string& exe, const std::string& root, const std
 std::string deviceSection(const std::string& root, const std::string& device) {
     const std::string exe = executablePath();
     char dirTemplate[] = "/tmp/marchbox-device-XXXXXX";
-    if (exe.empty() || !mkdtemp(dirTemplate)) return keptDeviceSection("");
+    if (exe.empty() || !mkdtemp(dirTemplate)) return "";
     const std::string dir = dirTemplate;
     std::ostringstream md;
     md << kBegin << "\n## On " << device << ", through `--backend egl`\n\n"

@@ -10,7 +10,8 @@ namespace mb {
 // The section, between its markers: frame times of a few example scenes at three sizes, the
 // frames a second of a sequence written as PNGs, and every example scene against OSMesa's
 // picture of it. Each a whole process of this executable with --backend egl, as a user runs
-// it. `root`: the source tree; `device`: the EGL context's GL_RENDERER.
+// it. `root`: the source tree; `device`: the EGL context's GL_RENDERER. "" where it cannot run
+// (no executable path, no temporary folder).
 std::string deviceSection(const std::string& root, const std::string& device);
 
 // The section as `report` finds it in `report` (a report's text), markers included, or the

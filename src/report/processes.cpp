@@ -2,6 +2,7 @@
 // read back through a pipe.
 #include "processes.h"
 
+#include <cerrno>
 #include <chrono>
 #include <fcntl.h>
 #include <spawn.h>
@@ -58,13 +59,16 @@ double timedRun(const std::vector<std::string>& args) {
 }
 
 bool runForOutput(const std::vector<std::string>& args, std::string* out) {
-    int fds[2];
-    if (pipe(fds) != 0) return false;
+    int fds[2];  // close-on-exec: the child has only its dup2'd stdout, so the read sees its end
+    if (pipe2(fds, O_CLOEXEC) != 0) return false;
     const pid_t pid = start(args, fds[1]);
     close(fds[1]);
     out->clear();
     char buf[4096];
-    for (ssize_t got; (got = read(fds[0], buf, sizeof buf)) > 0;) out->append(buf, size_t(got));
+    for (ssize_t got; (got = read(fds[0], buf, sizeof buf)) != 0;) {
+        if (got > 0) out->append(buf, size_t(got));
+        else if (errno != EINTR) break;
+    }
     close(fds[0]);
     return exitedWell(pid);
 }

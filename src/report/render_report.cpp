@@ -581,7 +581,12 @@ int runRenderReport(const std::string& root, OffscreenBackend backend) {
     const std::string device = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     if (backend == OffscreenBackend::Egl) {  // the device's section alone
         std::cerr << "render report: " << device << " through EGL\n";
-        if (!writeTextFile(path, withDeviceSection(written, deviceSection(root, device)))) {
+        const std::string section = deviceSection(root, device);
+        if (section.empty()) {
+            std::cerr << "cannot measure the device: no executable path or temporary folder\n";
+            return 1;
+        }
+        if (!writeTextFile(path, withDeviceSection(written, section))) {
             std::cerr << "cannot write " << path << '\n';
             return 1;
         }

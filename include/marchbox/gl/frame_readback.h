@@ -4,7 +4,8 @@
 // glReadPixels into client memory stalls until the GPU has drawn everything before it and then
 // copies while the GPU waits. Into a pack buffer it only queues the copy: the frame is fetched
 // (mapped) a few frames later, when it is long finished. On llvmpipe the copy is a memcpy
-// either way; on a GPU it overlaps the drawing.
+// either way. On a GPU the copy runs beside the next frame's first tile, since TiledRender
+// waits for each tile (glFinish) to report progress; what that buys there is not measured.
 #pragma once
 
 #include "marchbox/gl/gl.h"
@@ -29,12 +30,12 @@ public:
     FrameReadback& operator=(const FrameReadback&) = delete;
 
     // Queues a copy of the bound framebuffer's bottom-left width × height pixels, as frame
-    // `frame`. Only while not full(); false with *error where the driver has no room for it.
+    // `frame`; false with *error where the ring is full() or the driver has no room for it.
     bool start(int frame, int width, int height, std::string* error);
     bool full() const { return int(inFlight_.size()) == depth_; }
     bool empty() const { return inFlight_.empty(); }
     // The oldest frame started, once its copy has arrived; frames come out in the order they
-    // went in. Only while not empty(); false with *error where the copy cannot be read.
+    // went in. False with *error where the ring is empty() or the copy cannot be read.
     bool take(ReadFrame* out, std::string* error);
 
 private:

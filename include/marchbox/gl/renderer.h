@@ -140,7 +140,7 @@ private:
     void uploadPlainGrid(const SceneSdf& sdf, const std::vector<bool>& plain);
     const Program* postProgram(PostMode mode, std::string* error);
     ColorTarget& marchTarget() { return frameCheckerboard_ ? packed_ : accum_; }
-    void setFrameSize(const Program& p) const;       // resolution and footprints, per frame
+    void setPixelUniforms(const Program& p) const;   // resolution and footprints, per frame
     void marchViewport(int x, int y, int w, int h);  // and the scissor, for the region in pixels
     // The post pass: accum_ (filled in from packed_ first, with the checkerboard) into `into`
     // or frameTarget_.
