@@ -2,7 +2,6 @@
 #include "marchbox/gl/frame_readback.h"
 
 #include <algorithm>
-#include <cstring>
 
 namespace mb {
 
@@ -42,7 +41,6 @@ bool FrameReadback::start(int frame, int width, int height, std::string* error) 
     return true;
 }
 
-// GL's rows run from the bottom; the image's from the top.
 bool FrameReadback::take(ReadFrame* out, std::string* error) {
     if (empty()) {
         *error = "no frame in flight to read back";
@@ -54,17 +52,14 @@ bool FrameReadback::take(ReadFrame* out, std::string* error) {
     glDeleteSync(s.fence);
     s.fence = nullptr;
     glBindBuffer(GL_PIXEL_PACK_BUFFER, s.buffer);
-    const size_t row = size_t(s.width) * 4;
-    const auto* pixels =
-        waited == GL_WAIT_FAILED
-            ? nullptr
-            : static_cast<const uint8_t*>(glMapBufferRange(
-                  GL_PIXEL_PACK_BUFFER, 0, GLsizeiptr(row * s.height), GL_MAP_READ_BIT));
+    const GLsizeiptr bytes = GLsizeiptr(s.width) * s.height * 4;
+    const auto* pixels = waited == GL_WAIT_FAILED
+                             ? nullptr
+                             : static_cast<const uint8_t*>(glMapBufferRange(
+                                   GL_PIXEL_PACK_BUFFER, 0, bytes, GL_MAP_READ_BIT));
     bool whole = pixels != nullptr;
     if (pixels) {
-        *out = {s.frame, makeImage(s.width, s.height)};
-        for (int y = 0; y < s.height; ++y)
-            std::memcpy(out->image.pixel(0, y), pixels + row * size_t(s.height - 1 - y), row);
+        *out = {s.frame, imageFromBottomUp(pixels, s.width, s.height)};
         whole = glUnmapBuffer(GL_PIXEL_PACK_BUFFER) == GL_TRUE;  // false: the copy was lost
     }
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);

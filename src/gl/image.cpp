@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <png.h>
 #include <stb_image.h>
@@ -128,6 +129,14 @@ double psnrFromRmse(double rmse) {
 }
 
 double psnr(const Image& a, const Image& b) { return psnrFromRmse(rmse(a, b)); }
+
+Image imageFromBottomUp(const uint8_t* rows, int width, int height) {
+    Image img = makeImage(width, height);
+    const size_t row = size_t(width) * 4;
+    for (int y = 0; y < height; ++y)
+        std::memcpy(img.pixel(0, y), rows + row * size_t(height - 1 - y), row);
+    return img;
+}
 
 Image boxDownsample(const Image& big, int n) {
     Image small = makeImage(big.width / n, big.height / n);

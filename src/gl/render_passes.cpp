@@ -166,14 +166,10 @@ void Renderer::draw(int width, int height) {
 
 // One read of the whole picture, not one per row: on a GPU each read waits for the drawing.
 Image readFramebuffer(int width, int height) {
-    Image img = makeImage(width, height);
-    std::vector<uint8_t> bottomUp(img.rgba.size());
+    std::vector<uint8_t> bottomUp(size_t(width) * size_t(height) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
-    const size_t row = size_t(width) * 4;
-    for (int y = 0; y < height; ++y)  // GL's row 0 is the bottom
-        std::copy_n(bottomUp.data() + row * size_t(height - 1 - y), row, img.pixel(0, y));
-    return img;
+    return imageFromBottomUp(bottomUp.data(), width, height);
 }
 
 // Tiles start at even x: a checkerboard's packed column holds two pixels (Renderer::drawRegion).

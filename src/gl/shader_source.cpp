@@ -232,7 +232,6 @@ static std::string upperCase(std::string s) {
 
 // MODE_SHADED, MODE_NORMALS, ... MODE_ID: the names the shaders compare MODE with, made from
 // the command line's names so that RenderMode is the one list of modes.
-
 static std::string modeMacro(int mode) {
     return upperCase(std::string("MODE_") + kModeNames[mode]);
 }

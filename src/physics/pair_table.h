@@ -1,7 +1,7 @@
 // pair_table.h — which pairs of rigid shapes meet in closed form, and by which routine: one
 // table indexed by the two shape types, as Box2D's s_registers and Jolt's CollisionDispatch
 // are. A pair without a routine is probed both ways (RigidBodies::probeShape). Adding a closed
-// form is one routine and one entry; the flipped entry comes with it.
+// form is one routine and its entry, and for two types the flipped entry, which wraps it.
 #pragma once
 
 #include "pair_contact.h"

@@ -8,7 +8,6 @@
 
 #include "marchbox/gl/image.h"
 
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -73,13 +72,9 @@ std::string sequencePace(const std::string& exe, const std::string& root, const 
 
 // Each example scene at 640x360 through EGL and through OSMesa.
 std::string agreement(const std::string& exe, const std::string& root, const std::string& dir) {
-    std::vector<std::filesystem::path> scenes;
-    for (const auto& e : std::filesystem::directory_iterator(root + "/scenes"))
-        if (e.path().extension() == ".txt") scenes.push_back(e.path());
-    std::sort(scenes.begin(), scenes.end());
     std::ostringstream md;
     md << "| scene | PSNR dB, EGL against OSMesa |\n| --- | ---: |\n";
-    for (const std::filesystem::path& scene : scenes) {
+    for (const std::filesystem::path& scene : exampleSceneFiles(root)) {
         const std::string a = dir + "/egl.png", b = dir + "/osmesa.png";
         auto render = [&](const std::string& png, bool onDevice, Image* img) {
             std::string out, error;

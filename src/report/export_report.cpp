@@ -70,10 +70,7 @@ int runExportReport(const std::string& repoRoot) {
         std::cerr << error << '\n';
         return 1;
     }
-    std::vector<std::filesystem::path> files;
-    for (const auto& e : std::filesystem::directory_iterator(repoRoot + "/scenes"))
-        if (e.path().extension() == ".txt") files.push_back(e.path());
-    std::sort(files.begin(), files.end());
+    const std::vector<std::filesystem::path> files = exampleSceneFiles(repoRoot);
 
     std::error_code ec;
     const std::filesystem::path tmp = std::filesystem::temp_directory_path() /

@@ -63,14 +63,6 @@ RenderOptions uber() {
     return o;
 }
 
-std::vector<std::filesystem::path> sceneFiles(const std::string& root) {
-    std::vector<std::filesystem::path> files;
-    for (const auto& e : std::filesystem::directory_iterator(root + "/scenes"))
-        if (e.path().extension() == ".txt") files.push_back(e.path());
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
 // An example scene; one that does not load leaves its rows out of the report.
 bool loadExample(const std::filesystem::path& file, Scene* scene) {
     std::vector<std::string> errors;
@@ -94,7 +86,7 @@ std::string uberTable(Renderer& r, const std::string& root) {
            << fmt("%.1f", ub) << " | " << fmt("%.2f", ub / spec) << " | " << fmt("%.2f", diff)
            << " |\n";
     };
-    for (const auto& path : sceneFiles(root)) {
+    for (const auto& path : exampleSceneFiles(root)) {
         Scene s;
         if (!loadExample(path, &s)) continue;
         row(path.stem().string(), s);
@@ -439,7 +431,7 @@ std::string draftSection(Renderer& r, const std::string& root, int* passing, int
     std::ostringstream md;
     md << "| scene | as written ms | draft ms | draft min–max ms | speed-up | draft PSNR dB |\n"
           "| --- | ---: | ---: | ---: | ---: | ---: |\n";
-    for (const auto& path : sceneFiles(root)) {
+    for (const auto& path : exampleSceneFiles(root)) {
         std::cerr << "render report: draft, " << path.stem().string() << '\n';
         Scene scene;
         if (!loadExample(path, &scene)) continue;

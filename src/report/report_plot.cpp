@@ -109,6 +109,14 @@ std::string machineDescription() {
     return cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads";
 }
 
+std::vector<std::filesystem::path> exampleSceneFiles(const std::string& root) {
+    std::vector<std::filesystem::path> files;
+    for (const auto& e : std::filesystem::directory_iterator(root + "/scenes"))
+        if (e.path().extension() == ".txt") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
 bool readTextFile(const std::string& path, std::string* text) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream s;

@@ -1,6 +1,7 @@
 // report_plot.h — what the benchmark reports share: log-log SVG plots, the machine, files.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,5 +24,7 @@ std::string logLogPlotSvg(const std::string& title, const std::string& xLabel,
 std::string machineDescription();  // CPU model and core count, for "measured on"
 bool writeTextFile(const std::string& path, const std::string& text);
 bool readTextFile(const std::string& path, std::string* text);  // false where it cannot
+// The example scenes, `root`/scenes/*.txt, sorted by name.
+std::vector<std::filesystem::path> exampleSceneFiles(const std::string& root);
 
 }  // namespace mb

@@ -17,6 +17,8 @@ struct Image {
 };
 
 Image makeImage(int width, int height);
+// An image from width × height RGBA8 pixels whose rows run from the bottom, as GL reads them.
+Image imageFromBottomUp(const uint8_t* rows, int width, int height);
 bool savePng(const std::string& path, const Image& img, std::string* error);
 // The two halves of savePng, for encoding on one thread and writing on another: the PNG's
 // bytes ("" where it cannot be encoded), and those bytes written to `path` as savePng does.
