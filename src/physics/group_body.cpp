@@ -84,6 +84,7 @@ struct Candidate {
     dvec3 point;
     double radius;
     int weight;  // lattice points that projected onto it: corners gather most
+    int part;    // the member whose surface or solid holds it
 };
 
 struct Sampler {
@@ -293,7 +294,7 @@ GroupProbes groupProbes(const GroupShape& shape) {
     // A rim is kept whole where all of its circle lies on the surface, on a convex edge (or a
     // rounded one's sphere); a concave edge (a cup's inner floor) can touch nothing first. Where
     // the surface cuts it, the points that lie on an edge of it are kept as points.
-    auto considerRim = [&](const Rim& rim, Cover* counts) {
+    auto considerRim = [&](const Rim& rim, int member, Cover* counts) {
         dvec3 u, v;
         rimBasis(rim, &u, &v);
         bool whole = true;
@@ -306,11 +307,12 @@ GroupProbes groupProbes(const GroupShape& shape) {
                                 ? s.holds(p, rim.tube)
                                 : std::abs(s.f(p)) <= s.tol && s.sharp(p, &convex) && convex;
             whole &= ok;
-            if (ok) on.push_back({p, rim.tube, 0});
+            if (ok) on.push_back({p, rim.tube, 0, member});
         }
         if (counts) ++counts->wanted;
         if (whole) {
             rims.push_back(rim);
+            rims.back().part = member;
             if (counts) ++counts->kept;
         } else {
             third.insert(third.end(), on.begin(), on.end());
@@ -327,7 +329,7 @@ GroupProbes groupProbes(const GroupShape& shape) {
             for (const Feature& f : imagesOf(sdf, o, {dvec3(o.pos) + turn * p.local, dvec3(0.0)})) {
                 const bool on =
                     p.radius > 0.0 ? s.holds(f.point, p.radius) : std::abs(s.f(f.point)) <= s.tol;
-                if (on) (edge ? second : first).push_back({f.point, p.radius, 0});
+                if (on) (edge ? second : first).push_back({f.point, p.radius, 0, int(i)});
                 if (smooth) ++cover[i].wanted, cover[i].kept += on ? 1 : 0;
             }
         }
@@ -336,17 +338,19 @@ GroupProbes groupProbes(const GroupShape& shape) {
                 dvec3 tip(0.0);
                 tip[k % 3] = (k < 3 ? 1.0 : -1.0) * double(o.size[k % 3]);
                 for (const Feature& f : imagesOf(sdf, o, {dvec3(o.pos) + turn * tip, dvec3(0.0)}))
-                    if (std::abs(s.f(f.point)) <= s.tol) second.push_back({f.point, 0.0, 0});
+                    if (std::abs(s.f(f.point)) <= s.tol)
+                        second.push_back({f.point, 0.0, 0, int(i)});
             }
         for (const Rim& r : rimsOf(o))
             for (const Feature& f :
                  imagesOf(sdf, o, {dvec3(o.pos) + turn * r.centre, turn * r.axis}))
-                considerRim({f.point, r.radius, glm::normalize(f.axis), r.tube}, &cover[i]);
+                considerRim({f.point, r.radius, glm::normalize(f.axis), r.tube}, int(i), &cover[i]);
     }
     // The circles where a cylinder's or cone's side meets a coaxial one's cap: a cup's inner
     // rim, where the carved cylinder leaves the top; a tube's inner edges.
-    for (const SdfObject& a : sdf.objects)
+    for (size_t ia = 0; ia < sdf.objects.size(); ++ia)
         for (const SdfObject& b : sdf.objects) {
+            const SdfObject& a = sdf.objects[ia];
             if (&a == &b || !revolved(a) || !revolved(b) || a.round > 0.0f || b.round > 0.0f)
                 continue;
             const dvec3 axis = toGroup(a)[1], other = toGroup(b)[1];
@@ -361,7 +365,7 @@ GroupProbes groupProbes(const GroupShape& shape) {
                 const double top = a.type == ShapeType::Cone ? double(a.top) : double(a.radius);
                 const double radius = a.radius + (top - double(a.radius)) * (t + h) / (2.0 * h);
                 for (const Feature& f : imagesOf(sdf, a, {dvec3(a.pos) + t * axis, axis}))
-                    considerRim({f.point, radius, glm::normalize(f.axis), 0.0}, nullptr);
+                    considerRim({f.point, radius, glm::normalize(f.axis), 0.0}, int(ia), nullptr);
             }
         }
     // A lattice over the bounding cube; its points just outside the surface, projected onto it,
@@ -384,11 +388,11 @@ GroupProbes groupProbes(const GroupShape& shape) {
                     continue;
                 }
                 bool convex = false;
-                if (!s.sharp(p, &convex)) {
-                    const int member = mapGroup(sdf, 0, glm::vec3(p)).object;
-                    if (!convex || member < 0 || cover[size_t(member)].covered()) continue;
-                }
-                found.push_back({p, 0.0, 1});
+                const int member = mapGroup(sdf, 0, glm::vec3(p)).object;
+                if (!s.sharp(p, &convex) &&
+                    (!convex || member < 0 || cover[size_t(member)].covered()))
+                    continue;
+                found.push_back({p, 0.0, 1, std::max(member, 0)});
             }
     std::stable_sort(found.begin(), found.end(),
                      [](const Candidate& a, const Candidate& b) { return a.weight > b.weight; });
@@ -406,7 +410,7 @@ GroupProbes groupProbes(const GroupShape& shape) {
             for (const Probe& p : kept) near |= glm::length(p.local - c.point) < spacing;
             for (const Rim& r : rims) near |= toRim(r, c.point) < 0.25 * spacing;
             if (near) continue;
-            kept.push_back({c.point, c.radius});
+            kept.push_back({c.point, c.radius, c.part});
             if (int(kept.size()) > room) break;
         }
         if (int(kept.size()) <= room) {

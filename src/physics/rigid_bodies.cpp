@@ -7,11 +7,13 @@
 #include "rigid_body.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_access.hpp>
 #include <limits>
 #include <map>
+#include <span>
 #include <string>
 
 namespace mb {
@@ -514,15 +516,19 @@ bool groupBody(const Scene& scene, int g, std::map<std::string, GroupFound>& fou
     setMass(b, mp);
     b.groupShape = shape;
     b.bound = shape->bound + glm::length(b.centre);
-    b.exact = false;
     b.surface = surfaceOf(group, scene.world);
     b.group = g;
     setParts(b, unionParts(*shape));
+    // A union of exact members is exact outside it, and its hull holds it more tightly than the
+    // sphere about the group's origin.
+    b.exact = !b.parts.empty();
+    if (b.exact) b.bound = std::min(b.bound, glm::length(b.hull.centre) + glm::length(b.hull.half));
     const dquat toBody = glm::conjugate(b.axes);
     for (const Probe& p : it->second.probes.probes)
-        b.probes.push_back({toBody * (p.local - b.centre), p.radius});
+        b.probes.push_back({toBody * (p.local - b.centre), p.radius, p.part});
     for (const Rim& r : it->second.probes.rims)
-        b.rims.push_back({toBody * (r.centre - b.centre), r.radius, toBody * r.axis, r.tube});
+        b.rims.push_back(
+            {toBody * (r.centre - b.centre), r.radius, toBody * r.axis, r.tube, r.part});
     return true;
 }
 
@@ -762,73 +768,109 @@ bool RigidBodies::boxesApart(const RigidBody& a, const RigidBody& b) const {
 }
 
 // The prober's probes against the shape's SDF; `flip` where the prober is the pair's a, so
-// every normal points from a to b. Keys: offset + probe.
+// every normal points from a to b. Keys: offset + probe. Where a group meets a body and both
+// have parts, each of the prober's parts is probed against the shape's parts near it alone
+// (near_parts.h); every other pair against the whole shape.
 void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bool flip,
                              int offset) {
-    const double reach = reachOf(prober, shape);
-    // Most probes are far from the shape: its bounding sphere, then its distance, and only
-    // then the four more samples of its normal (or, on a bound, the projection onto its surface).
-    auto probe = [&](const dvec3& at, double radius, int key, const dvec3& centre) {
-        if (glm::length(at - shape.pos) - radius >= shape.bound + reach) return;
-        if (beyondParts(shape, at, radius + reach)) return;
-        const double bound = distanceTo(shape, at);
-        if (bound - radius >= reach) return;
-        const ShapeSample sample = shape.exact
-                                       ? ShapeSample{bound, normalAt(shape, at)}
-                                       : projectOntoSurface(shape, at, bound, radius + reach);
-        const double separation = sample.distance - radius;
-        if (separation >= reach) return;
-        const dvec3 normal = sample.normal;
-        const dvec3 point = at - (radius + 0.5 * separation) * normal;
-        candidates_.push_back({point, flip ? -normal : normal, separation, offset + key,
-                               flip ? centre : point, flip ? point : centre});
+    const Probing q{
+        prober,
+        shape,
+        flip,
+        offset,
+        reachOf(prober, shape),
+        (prober.groupShape || shape.groupShape) && !prober.parts.empty() && !shape.parts.empty()};
+    if (q.partwise) nearParts_.find(prober, shape, q.reach + boxSlack(prober) + boxSlack(shape));
+    auto nearOf = [&](int part) {
+        return q.partwise ? nearParts_.of(part) : std::span<const int>();
     };
     for (size_t k = 0; k < prober.probes.size(); ++k) {
-        const dvec3 c = prober.pos + prober.orient * prober.probes[k].local;
-        probe(c, prober.probes[k].radius, int(k), c);
+        const Probe& p = prober.probes[k];
+        if (q.partwise && nearOf(p.part).empty()) continue;
+        const dvec3 c = prober.pos + prober.orient * p.local;
+        probePoint(q, c, p.radius, int(k), c, nearOf(p.part));
     }
-    for (size_t r = 0; r < prober.rims.size(); ++r) {
-        const Rim& rim = prober.rims[r];
-        const dvec3 c = prober.pos + prober.orient * rim.centre, axis = prober.orient * rim.axis;
-        // Every point of the rim lies within its radius of c, and the SDF changes no faster
-        // than the distance: a rim whose centre is that far out of reach has nothing to find.
-        const double rimReach = rim.radius + rim.tube + reach;
-        if (glm::length(c - shape.pos) >= shape.bound + rimReach) continue;
-        if (beyondParts(shape, c, rimReach)) continue;
-        if (distanceTo(shape, c) >= rimReach) continue;
-        const std::vector<dvec3> support = rimSupport(c, axis, rim.radius, normalAt(shape, c));
-        for (size_t k = 0; k < support.size(); ++k)
-            probe(support[k], rim.tube, int(prober.probes.size() + 4 * r + k),
-                  support.size() == 1 ? c : support[k]);
-        if (!shape.groupShape) continue;
-        // A group's shape can meet the rim in several places, each where the distance along the
-        // rim is least (a rim across another cup's rim touches it where the two edges cross):
-        // sixteen points of the rim, and a parabola through each least one and its neighbours.
-        const int fixed = int(prober.probes.size() + 4 * prober.rims.size() + kRimPoints * r);
-        double f[kRimPoints];
-        for (int k = 0; k < kRimPoints; ++k)
-            f[k] = distanceTo(shape, prober.pos + prober.orient * rimPoint(rim, k));
-        for (int k = 0; k < kRimPoints; ++k) {
-            const double before = f[(k + kRimPoints - 1) % kRimPoints],
-                         after = f[(k + 1) % kRimPoints];
-            if (f[k] > before || f[k] >= after || f[k] - rim.tube >= rimReach) continue;
-            const double bend = before - 2.0 * f[k] + after;
-            const double shift =
-                bend > 0.0 ? std::clamp(0.5 * (before - after) / bend, -0.5, 0.5) : 0.0;
-            const dvec3 at = prober.pos + prober.orient * rimPoint(rim, double(k) + shift);
-            probe(at, rim.tube, fixed + k, at);
-        }
-    }
+    for (size_t r = 0; r < prober.rims.size(); ++r)
+        if (!q.partwise || !nearOf(prober.rims[r].part).empty())
+            probeRim(q, int(r), nearOf(prober.rims[r].part));
     if (!prober.ellipsoid) return;
     // The ellipsoid's point furthest into the shape: its support point along the shape's normal.
     const dvec3 semi(prober.shape.size);
     const double longest = std::max({semi.x, semi.y, semi.z});
-    if (glm::length(prober.pos - shape.pos) >= shape.bound + longest + reach) return;
-    if (beyondParts(shape, prober.pos, longest + reach)) return;
-    if (distanceTo(shape, prober.pos) >= longest + reach) return;
+    if (glm::length(prober.pos - shape.pos) >= shape.bound + longest + q.reach) return;
+    if (beyondParts(shape, prober.pos, longest + q.reach)) return;
+    if (distanceTo(shape, prober.pos) >= longest + q.reach) return;
     const dvec3 down = glm::conjugate(prober.orient) * -normalAt(shape, prober.pos);
     const dvec3 at = prober.pos + prober.orient * ellipsoidSupport(semi, down);
-    probe(at, 0.0, int(prober.probes.size() + kRimIds * prober.rims.size()), at);
+    probePoint(q, at, 0.0, int(prober.probes.size() + kRimIds * prober.rims.size()), at, {});
+}
+
+// A sphere of the prober at `at` against the shape: by its `near` parts where probing part by
+// part, else its bounding sphere, its parts' boxes, its distance, and only then the four more
+// samples of its normal (or, on a bound, the projection onto its surface).
+void RigidBodies::probePoint(const Probing& q, const dvec3& at, double radius, int key,
+                             const dvec3& centre, std::span<const int> near) {
+    const RigidBody& shape = q.shape;
+    ShapeSample sample;
+    if (q.partwise) {
+        const NearParts::Sample nearest = nearParts_.nearest(near, at, radius + q.reach);
+        if (nearest.part < 0) return;
+        sample = {nearest.distance, nearParts_.normal(nearest.part, at)};
+    } else {
+        if (glm::length(at - shape.pos) - radius >= shape.bound + q.reach) return;
+        if (beyondParts(shape, at, radius + q.reach)) return;
+        const double bound = distanceTo(shape, at);
+        if (bound - radius >= q.reach) return;
+        sample = shape.exact ? ShapeSample{bound, normalAt(shape, at)}
+                             : projectOntoSurface(shape, at, bound, radius + q.reach);
+    }
+    const double separation = sample.distance - radius;
+    if (separation >= q.reach) return;
+    const dvec3 point = at - (radius + 0.5 * separation) * sample.normal;
+    candidates_.push_back({point, q.flip ? -sample.normal : sample.normal, separation,
+                           q.offset + key, q.flip ? centre : point, q.flip ? point : centre});
+}
+
+// Rim r of the prober against the shape, or its `near` parts where probing part by part: its
+// support points along the shape's normal at its centre, and against a group's shape the
+// points along it where the shape comes nearest.
+void RigidBodies::probeRim(const Probing& q, int r, std::span<const int> near) {
+    const RigidBody &prober = q.prober, &shape = q.shape;
+    const Rim& rim = prober.rims[size_t(r)];
+    const dvec3 c = prober.pos + prober.orient * rim.centre, axis = prober.orient * rim.axis;
+    auto distance = [&](const dvec3& p) {
+        return q.partwise ? nearParts_.nearest(near, p).distance : distanceTo(shape, p);
+    };
+    // Every point of the rim lies within its radius of c, and the SDF changes no faster
+    // than the distance: a rim whose centre is that far out of reach has nothing to find.
+    const double rimReach = rim.radius + rim.tube + q.reach;
+    if (!q.partwise &&
+        (glm::length(c - shape.pos) >= shape.bound + rimReach || beyondParts(shape, c, rimReach)))
+        return;
+    if (distance(c) >= rimReach) return;
+    const dvec3 normal =
+        q.partwise ? nearParts_.normal(nearParts_.nearest(near, c).part, c) : normalAt(shape, c);
+    const std::vector<dvec3> support = rimSupport(c, axis, rim.radius, normal);
+    for (size_t k = 0; k < support.size(); ++k)
+        probePoint(q, support[k], rim.tube, int(prober.probes.size() + 4 * r + k), support[k],
+                   near);
+    if (!shape.groupShape) return;
+    // A group's shape can meet the rim in several places, each where the distance along the
+    // rim is least (a rim across another cup's rim touches it where the two edges cross):
+    // sixteen points of the rim, and a parabola through each least one and its neighbours.
+    const int fixed = int(prober.probes.size() + 4 * prober.rims.size() + kRimPoints * r);
+    double f[kRimPoints];
+    for (int k = 0; k < kRimPoints; ++k)
+        f[k] = distance(prober.pos + prober.orient * rimPoint(rim, k));
+    for (int k = 0; k < kRimPoints; ++k) {
+        const double before = f[(k + kRimPoints - 1) % kRimPoints], after = f[(k + 1) % kRimPoints];
+        if (f[k] > before || f[k] >= after || f[k] - rim.tube >= rimReach) continue;
+        const double bend = before - 2.0 * f[k] + after;
+        const double shift =
+            bend > 0.0 ? std::clamp(0.5 * (before - after) / bend, -0.5, 0.5) : 0.0;
+        const dvec3 at = prober.pos + prober.orient * rimPoint(rim, double(k) + shift);
+        probePoint(q, at, rim.tube, fixed + k, at, near);
+    }
 }
 
 // The pair's contacts in closed form, by the pair table's routine for its two types (pair_table.h),
@@ -877,6 +919,14 @@ void RigidBodies::collidePair(int i, int j) {
     // hold them, and which four it kept would change from step to step. A manifold for each
     // way the normals face, in a's frame: the nearest of a cube's 26 face, edge and corner
     // directions, which stays the same from step to step while the contact does.
+    static const std::array<dvec3, 27> kWays = [] {
+        std::array<dvec3, 27> ways;
+        for (int k = 0; k < 27; ++k) {
+            const dvec3 d(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1);
+            ways[size_t(k)] = k == 13 ? d : d / glm::length(d);
+        }
+        return ways;
+    }();
     std::vector<Candidate> all;
     all.swap(candidates_);
     std::vector<int> bins(all.size());
@@ -884,10 +934,8 @@ void RigidBodies::collidePair(int i, int j) {
         const dvec3 n = glm::conjugate(a.orient) * all[c].normal;
         double best = -2.0;
         for (int k = 0; k < 27; ++k) {
-            const dvec3 d(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1);
-            if (k == 13) continue;
-            const double along = glm::dot(n, d) / glm::length(d);
-            if (along > best) best = along, bins[c] = k;
+            const double along = glm::dot(n, kWays[size_t(k)]);
+            if (k != 13 && along > best) best = along, bins[c] = k;
         }
     }
     for (int bin = 0; bin < 27; ++bin) {

@@ -25,6 +25,7 @@
 #include "broadphase.h"
 #include "contact_solver.h"
 #include "group_body.h"
+#include "near_parts.h"
 #include "oriented_box.h"
 #include "pair_cache.h"
 #include "rigid_probes.h"
@@ -38,6 +39,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace mb {
@@ -182,6 +184,16 @@ private:
     void collideSphere(int i, PhysicsBody& sphere, int sphereIndex);
     void probeStatics(int i, std::vector<std::vector<Candidate>>& byFeature);
     void probeShape(const RigidBody& prober, const RigidBody& shape, bool flip, int offset);
+    struct Probing {  // one body's probes against another's shape, this step
+        const RigidBody &prober, &shape;
+        bool flip;      // the prober is the pair's a: normals turn to point from a to b
+        int offset;     // added to each probe's key
+        double reach;   // reachOf the two
+        bool partwise;  // part by part, against nearParts_
+    };
+    void probePoint(const Probing& q, const glm::dvec3& at, double radius, int key,
+                    const glm::dvec3& centre, std::span<const int> near);
+    void probeRim(const Probing& q, int r, std::span<const int> near);
     bool collideAnalytic(const RigidBody& a, const RigidBody& b);
     double reachOf(const RigidBody& a, const RigidBody& b) const;
     bool boxesApart(const RigidBody& a, const RigidBody& b) const;
@@ -214,6 +226,7 @@ private:
     void undo(Manifold& m);
     std::vector<Manifold> manifolds_;
     std::vector<Candidate> candidates_;
+    NearParts nearParts_;  // the parts of the pair being probed that come near each other
     PairCache pairCache_;  // points of pairs that have barely moved, not found again
     WarmStarts kept_;      // last step's impulses, to start this step's rows from
     struct Place {         // a contact's sort key and where it is

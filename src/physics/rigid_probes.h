@@ -23,6 +23,7 @@ namespace mb {
 struct Probe {
     glm::dvec3 local;  // centre, in the body's frame
     double radius;     // of the sphere about it that the shape holds
+    int part = 0;      // the body's part it lies on (RigidBody::parts; a group's member)
 };
 
 // In the shape's own frame (sdObjectLocal's).
@@ -37,6 +38,7 @@ struct Rim {
     double radius;
     glm::dvec3 axis{0.0, 1.0, 0.0};  // unit, normal to the rim's plane
     double tube = 0.0;
+    int part = 0;  // as a probe's
 };
 std::vector<Rim> rimsOf(const SdfObject& o);
 std::vector<Rim> rimsOf(const Object& o);

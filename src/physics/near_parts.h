@@ -1,0 +1,61 @@
+// near_parts.h — which parts of two bodies can meet within a reach, and the distance to those
+// parts: for each part of one body (the prober), the other body's parts whose boxes come that
+// near its box.
+//
+// A union's distance is the least of its members' (unionParts), and a member whose box lies
+// beyond reach of a part's box lies beyond reach of every probe of that part, which the box
+// holds. So a part with no near parts has nothing to probe, and the others' probes are measured
+// against their near parts alone, each an exact SDF in its own frame: the children of a
+// compound shape paired one by one where their boxes meet, as Bullet's and Jolt's are.
+#pragma once
+
+#include "oriented_box.h"
+
+#include "marchbox/scene/sdf.h"
+
+#include <glm/mat3x3.hpp>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace mb {
+
+struct RigidBody;
+
+class NearParts {
+public:
+    // The parts of both bodies where they are now (neither without parts), `reach` apart or
+    // nearer by their boxes.
+    void find(const RigidBody& prober, const RigidBody& shape, double reach);
+    // The shape's parts near the prober's part p, in the shape's order.
+    std::span<const int> of(int p) const {
+        return {parts_.data() + first_[size_t(p)], parts_.data() + first_[size_t(p) + 1]};
+    }
+
+    struct Sample {
+        double distance;
+        int part;  // −1: none nearer than the limit
+    };
+    // The nearest of the listed parts to world point x, and its distance.
+    Sample nearest(std::span<const int> parts, const glm::dvec3& x,
+                   double limit = std::numeric_limits<double>::infinity()) const;
+    // The unit normal (world) of the part's surface at x.
+    glm::dvec3 normal(int part, const glm::dvec3& x) const;
+
+private:
+    // A part of the shape as the probes see it: x (world) → turn·x + shift in its own frame.
+    struct Frame {
+        const SdfObject* shape;
+        glm::dmat3 turn;
+        glm::dvec3 shift;
+    };
+    float distanceIn(const Frame& f, const glm::dvec3& x) const {
+        return sdObjectLocal(*f.shape, glm::vec3(f.turn * x + f.shift));
+    }
+    std::vector<int> first_, parts_;  // part p's list is parts_[first_[p], first_[p + 1])
+    std::vector<OrientedBox> shapeParts_;
+    std::vector<Frame> frames_;  // one per shape part
+    float step_ = 0.0f;          // of the normal's differences, in the shape's units
+};
+
+}  // namespace mb
