@@ -859,9 +859,10 @@ void RigidBodies::probeRim(const Probing& q, int r, std::span<const int> near) {
     // rim is least (a rim across another cup's rim touches it where the two edges cross):
     // sixteen points of the rim, and a parabola through each least one and its neighbours.
     const int fixed = int(prober.probes.size() + 4 * prober.rims.size() + kRimPoints * r);
+    const std::array<dvec3, kRimPoints> points = rimPoints(rim);
     double f[kRimPoints];
     for (int k = 0; k < kRimPoints; ++k)
-        f[k] = distance(prober.pos + prober.orient * rimPoint(rim, k));
+        f[k] = distance(prober.pos + prober.orient * points[size_t(k)]);
     for (int k = 0; k < kRimPoints; ++k) {
         const double before = f[(k + kRimPoints - 1) % kRimPoints], after = f[(k + 1) % kRimPoints];
         if (f[k] > before || f[k] >= after || f[k] - rim.tube >= rimReach) continue;

@@ -97,12 +97,40 @@ std::vector<Rim> rimsOf(const SdfObject& o) {
 
 std::vector<Rim> rimsOf(const Object& o) { return rimsOf(makeSdfObject(o)); }
 
-dvec3 rimPoint(const Rim& rim, double k) {
-    const dvec3 u = glm::normalize(
+namespace {
+
+// The rim's plane: u, v across its axis, the same for every point of it.
+void rimPlane(const Rim& rim, dvec3* u, dvec3* v) {
+    *u = glm::normalize(
         glm::cross(rim.axis, std::abs(rim.axis.x) < 0.57 ? dvec3(1, 0, 0) : dvec3(0, 1, 0)));
-    const dvec3 v = glm::cross(rim.axis, u);
+    *v = glm::cross(rim.axis, *u);
+}
+
+}  // namespace
+
+dvec3 rimPoint(const Rim& rim, double k) {
+    dvec3 u, v;
+    rimPlane(rim, &u, &v);
     const double phi = 2.0 * M_PI * k / kRimPoints;
     return rim.centre + rim.radius * (std::cos(phi) * u + std::sin(phi) * v);
+}
+
+// The same points as rimPoint's, with the plane and the turns' cosines found once.
+std::array<dvec3, kRimPoints> rimPoints(const Rim& rim) {
+    static const std::array<std::array<double, 2>, kRimPoints> kTurns = [] {
+        std::array<std::array<double, 2>, kRimPoints> turns;
+        for (int k = 0; k < kRimPoints; ++k) {
+            const double phi = 2.0 * M_PI * double(k) / kRimPoints;
+            turns[size_t(k)] = {std::cos(phi), std::sin(phi)};
+        }
+        return turns;
+    }();
+    dvec3 u, v;
+    rimPlane(rim, &u, &v);
+    std::array<dvec3, kRimPoints> points;
+    for (size_t k = 0; k < points.size(); ++k)
+        points[k] = rim.centre + rim.radius * (kTurns[k][0] * u + kTurns[k][1] * v);
+    return points;
 }
 
 dvec3 ellipsoidSupport(const dvec3& a, const dvec3& dir) {

@@ -15,6 +15,7 @@
 #include "marchbox/scene/scene.h"
 #include "marchbox/scene/sdf.h"
 
+#include <array>
 #include <glm/vec3.hpp>
 #include <vector>
 
@@ -50,6 +51,7 @@ std::vector<Rim> rimsOf(const Object& o);
 constexpr int kRimPoints = 16;
 constexpr int kRimIds = 4 + kRimPoints;
 glm::dvec3 rimPoint(const Rim& rim, double k);  // in the rim's frame, k sixteenths of a turn
+std::array<glm::dvec3, kRimPoints> rimPoints(const Rim& rim);  // rimPoint at k = 0, 1, … 15
 
 // The point of an ellipsoid (semi-axes, its own frame) furthest along unit `dir`: A²·d / |A·d|.
 glm::dvec3 ellipsoidSupport(const glm::dvec3& semiAxes, const glm::dvec3& dir);
