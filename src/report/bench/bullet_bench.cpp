@@ -79,6 +79,14 @@ public:
         }
         return e;
     }
+    // The points of every contact manifold: what its solver's rows are made from.
+    int contactCount() {
+        btDispatcher* d = world_.getDispatcher();
+        int n = 0;
+        for (int i = 0; i < d->getNumManifolds(); ++i)
+            n += d->getManifoldByIndexInternal(i)->getNumContacts();
+        return n;
+    }
     double meanHeight() const {  // of the bodies' centres of mass, each its body's origin
         double sum = 0.0;
         for (const btRigidBody* b : bodies_) sum += b->getWorldTransform().getOrigin().y();
@@ -208,6 +216,7 @@ struct Engine {
     std::function<glm::dvec3(int)> pos, vel;
     std::function<double()> kineticEnergy;
     std::function<double()> meanHeight;  // of every dynamic body's centre of mass, m
+    std::function<int()> contacts;       // contact points the last step solved
 };
 
 double meanHeight(const mb::PhysicsWorld& w) {
@@ -222,9 +231,12 @@ struct MarchboxEngine {
         : world(s, settings) {}
     mb::PhysicsWorld world;
     Engine engine() {
-        return {[this] { world.step(); }, [this](int i) { return world.body(i).pos; },
+        return {[this] { world.step(); },
+                [this](int i) { return world.body(i).pos; },
                 [this](int i) { return world.body(i).vel; },
-                [this] { return world.kineticEnergy(); }, [this] { return meanHeight(world); }};
+                [this] { return world.kineticEnergy(); },
+                [this] { return meanHeight(world); },
+                [this] { return world.stats().contacts; }};
     }
 };
 
@@ -232,9 +244,12 @@ struct BulletEngine {
     explicit BulletEngine(const Scene& s) : world(s) {}
     BulletScene world;
     Engine engine() {
-        return {[this] { world.step(); }, [this](int i) { return world.pos(i); },
-                [this](int i) { return world.vel(i); }, [this] { return world.kineticEnergy(); },
-                [this] { return world.meanHeight(); }};
+        return {[this] { world.step(); },
+                [this](int i) { return world.pos(i); },
+                [this](int i) { return world.vel(i); },
+                [this] { return world.kineticEnergy(); },
+                [this] { return world.meanHeight(); },
+                [this] { return world.contactCount(); }};
     }
 };
 
@@ -332,10 +347,10 @@ PileResult pile(int count, float radius, double seconds, const Settings&... sett
     return {1e3 * busy / steps, deepest};
 }
 
-// ms per step over the first `seconds` of a scene, the steps alone timed, and where the bodies
-// are by then.
+// ms per step over the first `seconds` of a scene, the steps alone timed, where the bodies are
+// by then, and the contact points a step solved, the mean of every tenth step's.
 struct StepRun {
-    double msPerStep, meanHeight;
+    double msPerStep, meanHeight, meanContacts;
 };
 
 template <class E, class... Settings>
@@ -343,11 +358,17 @@ StepRun timeSteps(const Scene& scene, double seconds, const Settings&... setting
     E e(scene, settings...);
     Engine g = e.engine();
     const int steps = int(std::llround(seconds / kDt));
-    const auto start = std::chrono::steady_clock::now();
-    for (int i = 0; i < steps; ++i) g.step();
-    const double busy =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return {1e3 * busy / steps, g.meanHeight()};
+    double busy = 0.0, contacts = 0.0;
+    int counted = 0;
+    for (int i = 0; i < steps; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        g.step();
+        busy += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (i % 10 != 9) continue;
+        contacts += g.contacts();
+        ++counted;
+    }
+    return {1e3 * busy / steps, g.meanHeight(), counted > 0 ? contacts / counted : 0.0};
 }
 
 void row(const char* name, double marchbox, double bullet, const char* unit) {
@@ -439,10 +460,13 @@ SideBySide timeAwake(const Scene& scene) {
 // engine's median.
 void mixedRows() {
     constexpr int kRounds = 5;
-    const Scene small = mb::mixedPileScene(1000, 7), large = mb::mixedPileScene(4000, 7);
+    const int counts[2] = {1000, 4000};
+    const Scene small = mb::mixedPileScene(counts[0], 7), large = mb::mixedPileScene(counts[1], 7);
     std::vector<double> ours[2], theirs[2], vsBullet, growth, bulletGrowth;
+    SideBySide first[2];  // the contacts are the same every round
     for (int round = 0; round < kRounds; ++round) {
         const SideBySide s = timeAwake(small), l = timeAwake(large);
+        if (round == 0) first[0] = s, first[1] = l;
         ours[0].push_back(s.marchbox.msPerStep);
         theirs[0].push_back(s.bullet.msPerStep);
         ours[1].push_back(l.marchbox.msPerStep);
@@ -455,8 +479,20 @@ void mixedRows() {
         "\n| mixed pile, first 1.5 s, all awake (median of %d) | Marchbox | Bullet |\n"
         "| --- | ---: | ---: |\n",
         kRounds);
-    row("1000 mixed bodies: time per step", median(ours[0]), median(theirs[0]), " ms");
-    row("4000 mixed bodies: time per step", median(ours[1]), median(theirs[1]), " ms");
+    for (int k = 0; k < 2; ++k) {
+        const double mine = median(ours[k]), bullet = median(theirs[k]);
+        const double ourContacts = first[k].marchbox.meanContacts,
+                     theirContacts = first[k].bullet.meanContacts;
+        char name[96];
+        std::snprintf(name, sizeof name, "%d mixed bodies: time per step", counts[k]);
+        row(name, mine, bullet, " ms");
+        std::snprintf(name, sizeof name, "%d mixed bodies: contact points a step", counts[k]);
+        row(name, ourContacts, theirContacts, "");
+        std::snprintf(name, sizeof name, "%d mixed bodies: time per body", counts[k]);
+        row(name, 1e3 * mine / counts[k], 1e3 * bullet / counts[k], " µs");
+        std::snprintf(name, sizeof name, "%d mixed bodies: time per contact point", counts[k]);
+        row(name, 1e3 * mine / ourContacts, 1e3 * bullet / theirContacts, " µs");
+    }
     std::printf(
         "\nMixed pile of 1000, Marchbox against Bullet: **%.2fx** its time per step on one thread "
         "(target <= 1x, goal 0.5x). From 1000 to 4000 bodies: Marchbox **%.2fx** (target <= 5x; "
