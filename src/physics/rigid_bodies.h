@@ -195,8 +195,9 @@ private:
                     const glm::dvec3& centre, std::span<const int> near);
     void probeRim(const Probing& q, int r, std::span<const int> near);
     bool collideAnalytic(const RigidBody& a, const RigidBody& b);
+    void dropUnreachable(const RigidBody& a, const RigidBody& b);
     double reachOf(const RigidBody& a, const RigidBody& b) const;
-    bool boxesApart(const RigidBody& a, const RigidBody& b) const;
+    bool boxesApart(int i, int j) const;
     void sortBottomUp();
     static RigidContact contactFrom(const Candidate& c, double height, std::uint64_t pair);
     // `centre`: the probe's, where b holds it; else the point itself, a point of b's surface.
@@ -238,6 +239,7 @@ private:
     std::vector<RigidContact> sorted_;
     std::vector<glm::dvec3> centres_;
     std::vector<double> extents_, margins_;
+    std::vector<OrientedBox> hulls_;  // each body's hull where it is this step
     std::vector<std::pair<int, int>> pairs_;
     std::vector<StaticHit> hits_;
     std::vector<int> touching_;  // per body: an awake mover touched it this step
