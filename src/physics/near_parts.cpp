@@ -15,42 +15,48 @@ namespace {
 using glm::dmat3;
 using glm::dvec3;
 
-// Whether the boxes may come within `reach` of each other: neither box lies further than that
-// from the sphere about the other.
+// Whether the boxes may come within `reach` of each other: the spheres about them first, then
+// neither box further than that from the sphere about the other.
 bool near(const OrientedBox& a, const OrientedBox& b, double reach) {
-    return distanceToBox(b, a.centre) < glm::length(a.half) + reach &&
-           distanceToBox(a, b.centre) < glm::length(b.half) + reach;
+    const double ra = glm::length(a.half), rb = glm::length(b.half);
+    return glm::length(b.centre - a.centre) < ra + rb + reach &&
+           distanceToBox(b, a.centre) < ra + reach && distanceToBox(a, b.centre) < rb + reach;
 }
 
 }  // namespace
 
-void NearParts::find(const RigidBody& prober, const RigidBody& shape, double reach) {
-    const OrientedBox hull = placed(shape.hull, shape.orient, shape.pos);
-    shapeParts_.clear();
-    for (const OrientedBox& part : shape.parts)
-        shapeParts_.push_back(placed(part, shape.orient, shape.pos));
+void appendPlacedBoxes(const RigidBody& b, std::vector<OrientedBox>& out) {
+    out.push_back(placed(b.hull, b.orient, b.pos));
+    for (const OrientedBox& part : b.parts) out.push_back(placed(part, b.orient, b.pos));
+}
+
+void NearParts::find(std::span<const OrientedBox> proberBoxes, const RigidBody& shape,
+                     std::span<const OrientedBox> shapeBoxes, double reach) {
+    const OrientedBox& hull = shapeBoxes[0];
+    const std::span<const OrientedBox> shapeParts = shapeBoxes.subspan(1);
     first_.assign(1, 0);
     parts_.clear();
-    for (const OrientedBox& local : prober.parts) {
-        const OrientedBox part = placed(local, prober.orient, prober.pos);
+    framed_.assign(shapeParts.size(), 0);
+    for (const OrientedBox& part : proberBoxes.subspan(1)) {
         if (near(part, hull, reach))
-            for (size_t q = 0; q < shapeParts_.size(); ++q)
-                if (near(part, shapeParts_[q], reach)) parts_.push_back(int(q));
+            for (size_t q = 0; q < shapeParts.size(); ++q)
+                if (near(part, shapeParts[q], reach)) parts_.push_back(int(q)), framed_[q] = 1;
         first_.push_back(int(parts_.size()));
     }
     // World to the shape's frame (localPoint's), then to each member's (sdObject's).
     const dmat3 toShape = glm::mat3_cast(shape.framed ? shape.axes * glm::conjugate(shape.orient)
                                                       : glm::conjugate(shape.orient));
     const dvec3 shift = (shape.framed ? shape.centre : dvec3(0.0)) - toShape * shape.pos;
-    frames_.clear();
-    for (size_t q = 0; q < shape.parts.size(); ++q) {
+    frames_.resize(shapeParts.size());
+    for (size_t q = 0; q < shapeParts.size(); ++q) {
+        if (!framed_[q]) continue;
         if (!shape.groupShape) {
-            frames_.push_back({&shape.shape, toShape, shift});
+            frames_[q] = {&shape.shape, toShape, shift};
             continue;
         }
         const SdfObject& member = shape.groupShape->sdf.objects[q];
         const dmat3 toMember(member.toLocal);
-        frames_.push_back({&member, toMember * toShape, toMember * (shift - dvec3(member.pos))});
+        frames_[q] = {&member, toMember * toShape, toMember * (shift - dvec3(member.pos))};
     }
     step_ = float(1e-3 * shape.bound);
 }

@@ -22,11 +22,16 @@ namespace mb {
 
 struct RigidBody;
 
+// The body's hull and then its parts where the body is now, appended to `out`: what
+// NearParts::find takes of each body.
+void appendPlacedBoxes(const RigidBody& b, std::vector<OrientedBox>& out);
+
 class NearParts {
 public:
     // The parts of both bodies where they are now (neither without parts), `reach` apart or
-    // nearer by their boxes.
-    void find(const RigidBody& prober, const RigidBody& shape, double reach);
+    // nearer by their boxes: each body's placed hull, then its placed parts.
+    void find(std::span<const OrientedBox> proberBoxes, const RigidBody& shape,
+              std::span<const OrientedBox> shapeBoxes, double reach);
     // The shape's parts near the prober's part p, in the shape's order.
     std::span<const int> of(int p) const {
         return {parts_.data() + first_[size_t(p)], parts_.data() + first_[size_t(p) + 1]};
@@ -53,9 +58,9 @@ private:
         return sdObjectLocal(*f.shape, glm::vec3(f.turn * x + f.shift));
     }
     std::vector<int> first_, parts_;  // part p's list is parts_[first_[p], first_[p + 1])
-    std::vector<OrientedBox> shapeParts_;
-    std::vector<Frame> frames_;  // one per shape part
-    float step_ = 0.0f;          // of the normal's differences, in the shape's units
+    std::vector<Frame> frames_;       // one per shape part, set where a list holds it
+    std::vector<char> framed_;
+    float step_ = 0.0f;  // of the normal's differences, in the shape's units
 };
 
 }  // namespace mb

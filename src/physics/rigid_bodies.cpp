@@ -593,7 +593,12 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     centres_.resize(size_t(n + m));
     extents_.resize(size_t(n + m));
     margins_.resize(size_t(n));
-    hulls_.resize(size_t(n));
+    // Placed when a group's pair first asks, into room that never moves while spans are held.
+    boxesFirst_.assign(size_t(n), -1);
+    boxes_.clear();
+    size_t room = 0;
+    for (const RigidBody& b : bodies_) room += 1 + b.parts.size();
+    boxes_.reserve(room);
     touching_.assign(size_t(n), 0);
     for (int i = 0; i < n; ++i) {
         const RigidBody& b = bodies_[size_t(i)];
@@ -602,7 +607,6 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
                               gravity * dt_ * dt_;
         centres_[size_t(i)] = b.pos;
         extents_[size_t(i)] = b.bound + margins_[size_t(i)];
-        hulls_[size_t(i)] = placed(b.hull, b.orient, b.pos);
     }
     for (int s = 0; s < m; ++s) {
         const PhysicsBody& b = spheres[size_t(s)];
@@ -760,15 +764,25 @@ double RigidBodies::reachOf(const RigidBody& a, const RigidBody& b) const {
                dt_;
 }
 
+std::span<const OrientedBox> RigidBodies::boxesOf(int i) {
+    const RigidBody& b = bodies_[size_t(i)];
+    int& first = boxesFirst_[size_t(i)];
+    if (first < 0) {
+        first = int(boxes_.size());
+        appendPlacedBoxes(b, boxes_);
+    }
+    return {boxes_.data() + first, 1 + b.parts.size()};
+}
+
 // Whether a group and a body (or two groups) lie so far apart by their hulls, which hold their
 // probes, that no probe of either comes within the pair's reach of the other's parts: probing
 // would find nothing. Checked before the probes, most of which it spares: first each hull
 // against the sphere about the other body, then the hulls' separating axes.
-bool RigidBodies::boxesApart(int i, int j) const {
+bool RigidBodies::boxesApart(int i, int j) {
     const RigidBody &a = bodies_[size_t(i)], &b = bodies_[size_t(j)];
     if ((!a.groupShape && !b.groupShape) || a.parts.empty() || b.parts.empty()) return false;
     const double reach = reachOf(a, b) + boxSlack(a) + boxSlack(b);
-    const OrientedBox &hullA = hulls_[size_t(i)], &hullB = hulls_[size_t(j)];
+    const OrientedBox &hullA = boxesOf(i)[0], &hullB = boxesOf(j)[0];
     if (distanceToBox(hullA, b.pos) >= b.bound + reach ||
         distanceToBox(hullB, a.pos) >= a.bound + reach)
         return true;
@@ -779,8 +793,8 @@ bool RigidBodies::boxesApart(int i, int j) const {
 // every normal points from a to b. Keys: offset + probe. Where a group meets a body and both
 // have parts, each of the prober's parts is probed against the shape's parts near it alone
 // (near_parts.h); every other pair against the whole shape.
-void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bool flip,
-                             int offset) {
+void RigidBodies::probeShape(int proberIndex, int shapeIndex, bool flip, int offset) {
+    const RigidBody &prober = bodies_[size_t(proberIndex)], &shape = bodies_[size_t(shapeIndex)];
     const Probing q{
         prober,
         shape,
@@ -788,7 +802,9 @@ void RigidBodies::probeShape(const RigidBody& prober, const RigidBody& shape, bo
         offset,
         reachOf(prober, shape),
         (prober.groupShape || shape.groupShape) && !prober.parts.empty() && !shape.parts.empty()};
-    if (q.partwise) nearParts_.find(prober, shape, q.reach + boxSlack(prober) + boxSlack(shape));
+    if (q.partwise)
+        nearParts_.find(boxesOf(proberIndex), shape, boxesOf(shapeIndex),
+                        q.reach + boxSlack(prober) + boxSlack(shape));
     auto nearOf = [&](int part) {
         return q.partwise ? nearParts_.of(part) : std::span<const int>();
     };
@@ -918,8 +934,8 @@ void RigidBodies::collidePair(int i, int j) {
     if (cached && boxesApart(i, j)) return;  // cheaper than the cache's lookup, and sure
     if (!cached || !pairCache_.reuse(pairKey(i, j), bi, bj, reach, &candidates_)) {
         if (!collideAnalytic(bi, bj)) {
-            probeShape(bj, bi, false, 0);
-            probeShape(bi, bj, true, 128);
+            probeShape(j, i, false, 0);
+            probeShape(i, j, true, 128);
         }
         if (cached) pairCache_.keep(pairKey(i, j), bi, bj, reach, candidates_);
     }

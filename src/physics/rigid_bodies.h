@@ -183,7 +183,7 @@ private:
     void collidePair(int i, int j);
     void collideSphere(int i, PhysicsBody& sphere, int sphereIndex);
     void probeStatics(int i, std::vector<std::vector<Candidate>>& byFeature);
-    void probeShape(const RigidBody& prober, const RigidBody& shape, bool flip, int offset);
+    void probeShape(int prober, int shape, bool flip, int offset);
     struct Probing {  // one body's probes against another's shape, this step
         const RigidBody &prober, &shape;
         bool flip;      // the prober is the pair's a: normals turn to point from a to b
@@ -197,7 +197,7 @@ private:
     bool collideAnalytic(const RigidBody& a, const RigidBody& b);
     void dropUnreachable(const RigidBody& a, const RigidBody& b);
     double reachOf(const RigidBody& a, const RigidBody& b) const;
-    bool boxesApart(int i, int j) const;
+    bool boxesApart(int i, int j);
     void sortBottomUp();
     static RigidContact contactFrom(const Candidate& c, double height, std::uint64_t pair);
     // `centre`: the probe's, where b holds it; else the point itself, a point of b's surface.
@@ -239,7 +239,11 @@ private:
     std::vector<RigidContact> sorted_;
     std::vector<glm::dvec3> centres_;
     std::vector<double> extents_, margins_;
-    std::vector<OrientedBox> hulls_;  // each body's hull where it is this step
+    // Each body's hull and then its parts, where they are this step (appendPlacedBoxes), placed
+    // the first time a pair with a group asks: body i's from boxesFirst_[i], −1 until then.
+    std::vector<OrientedBox> boxes_;
+    std::vector<int> boxesFirst_;
+    std::span<const OrientedBox> boxesOf(int i);
     std::vector<std::pair<int, int>> pairs_;
     std::vector<StaticHit> hits_;
     std::vector<int> touching_;  // per body: an awake mover touched it this step

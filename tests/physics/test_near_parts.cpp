@@ -55,8 +55,11 @@ TEST(NearParts, TheNearPartsMeasureTheGroupWhereAProbeCanReach) {
         const RigidBody &a = bodies.body(0), &b = bodies.body(1);
         ASSERT_EQ(a.parts.size(), 5u);
         const double reach = 0.05;
+        std::vector<OrientedBox> boxesA, boxesB;
+        appendPlacedBoxes(a, boxesA);
+        appendPlacedBoxes(b, boxesB);
         NearParts near;
-        near.find(a, b, reach);
+        near.find(boxesA, b, boxesB, reach);
         std::mt19937 rng(7);
         std::uniform_real_distribution<double> u(-1.0, 1.0);
         int within = 0;
@@ -84,8 +87,11 @@ TEST(NearParts, NoPartIsNearATableAMetreAway) {
                                   table("b", "pos:1.6,0,0 rot:0,90,0"));
     const PhysicsSettings settings;
     const RigidBodies bodies(s, settings);
+    std::vector<OrientedBox> boxesA, boxesB;
+    appendPlacedBoxes(bodies.body(0), boxesA);
+    appendPlacedBoxes(bodies.body(1), boxesB);
     NearParts near;
-    near.find(bodies.body(0), bodies.body(1), 0.05);
+    near.find(boxesA, bodies.body(1), boxesB, 0.05);
     for (int p = 0; p < 5; ++p) EXPECT_TRUE(near.of(p).empty()) << "part " << p;
 }
 
