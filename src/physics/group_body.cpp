@@ -403,12 +403,18 @@ GroupProbes groupProbes(const GroupShape& shape) {
     if (int(rims.size()) * kRimIds > kMaxGroupProbeIds)
         rims.resize(size_t(kMaxGroupProbeIds / kRimIds));
     const int room = kMaxGroupProbeIds - kRimIds * int(rims.size());
+    // The members' corners and held spheres, where they fit, are kept however near each other
+    // (a thin top's upper corners lie a thickness from its lower ones): the body's own shape.
+    // The spacing thins every other point, and only ever-closer copies of one corner.
+    const bool keepFirst = int(first.size()) <= room;
     for (double spacing = shape.bound / 6.0;; spacing *= 1.15) {
         std::vector<Probe> kept;
-        for (const Candidate& c : all) {
+        for (size_t k = 0; k < all.size(); ++k) {
+            const Candidate& c = all[k];
+            const double apart = keepFirst && k < first.size() ? 1e-6 * shape.bound : spacing;
             bool near = false;
-            for (const Probe& p : kept) near |= glm::length(p.local - c.point) < spacing;
-            for (const Rim& r : rims) near |= toRim(r, c.point) < 0.25 * spacing;
+            for (const Probe& p : kept) near |= glm::length(p.local - c.point) < apart;
+            for (const Rim& r : rims) near |= toRim(r, c.point) < 0.25 * apart;
             if (near) continue;
             kept.push_back({c.point, c.radius, c.part});
             if (int(kept.size()) > room) break;
