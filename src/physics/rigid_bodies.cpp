@@ -330,7 +330,8 @@ void solveFriction(FrictionRows& r, double normalImpulse) {
         if (r.velA) speed -= glm::dot(r.tangent[k], *r.velA) + glm::dot(r.armA[k], *r.spinA);
         t[k] = r.tangentImpulse[k] - r.tangentMass[k] * speed;
     }
-    const double limit = r.friction * normalImpulse, length = std::hypot(t[0], t[1]);
+    // Impulses lie far from overflow: the root of the squares, not hypot's slower guard.
+    const double limit = r.friction * normalImpulse, length = std::sqrt(t[0] * t[0] + t[1] * t[1]);
     for (int k = 0; k < 2; ++k) {
         if (length > limit) t[k] *= limit / length;
         dt[k] = t[k] - r.tangentImpulse[k];
