@@ -158,12 +158,6 @@ double toRim(const Rim& r, const dvec3& p) {
     return std::hypot(across - r.radius, along);
 }
 
-void rimBasis(const Rim& r, dvec3* u, dvec3* v) {
-    *u = glm::normalize(
-        glm::cross(r.axis, std::abs(r.axis.x) < 0.57 ? dvec3(1, 0, 0) : dvec3(0, 1, 0)));
-    *v = glm::cross(r.axis, *u);
-}
-
 }  // namespace
 
 GroupShape groupShapeOf(const Scene& scene, int g) {

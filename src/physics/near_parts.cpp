@@ -5,6 +5,7 @@
 
 #include "group_body.h"
 #include "rigid_bodies.h"
+#include "tetra_gradient.h"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -71,14 +72,12 @@ NearParts::Sample NearParts::nearest(std::span<const int> parts, const dvec3& x,
     return best;
 }
 
-// Σ k·f(m + h·k) over a tetrahedron's corners k is 4h·∇f in the part's frame; its turn is a
-// rotation, so its transpose takes the gradient back to the world.
+// The gradient in the part's frame (tetra_gradient.h); its turn is a rotation, so its transpose
+// takes the gradient back to the world.
 dvec3 NearParts::normal(int part, const dvec3& x) const {
     const Frame& f = frames_[size_t(part)];
-    const glm::vec3 m(f.turn * x + f.shift);
-    const glm::vec3 k[4] = {{1, -1, -1}, {-1, -1, 1}, {-1, 1, -1}, {1, 1, 1}};
-    dvec3 g(0.0);
-    for (const glm::vec3& c : k) g += dvec3(c) * double(sdObjectLocal(*f.shape, m + c * step_));
+    const dvec3 g = tetraGradient([&f](const glm::vec3& m) { return sdObjectLocal(*f.shape, m); },
+                                  glm::vec3(f.turn * x + f.shift), step_);
     const double len = glm::length(g);
     return len > 0.0 ? glm::transpose(f.turn) * (g / len) : dvec3(0.0, 1.0, 0.0);
 }

@@ -5,6 +5,7 @@
 #include "manifold_points.h"
 #include "pair_table.h"
 #include "rigid_body.h"
+#include "tetra_gradient.h"
 
 #include <algorithm>
 #include <array>
@@ -77,16 +78,12 @@ double shapeDistance(const RigidBody& b, const glm::vec3& l) {
 
 double distanceTo(const RigidBody& b, const dvec3& p) { return shapeDistance(b, localPoint(b, p)); }
 
-// Σ k·f(l + h·k) over a tetrahedron's corners k is 4h·∇f: the gradient in the shape's frame,
-// unnormalised, and turned to the world.
+// 4h·∇f in the shape's frame (tetra_gradient.h), unnormalised.
 dvec3 gradientAt(const RigidBody& b, const dvec3& p, double* step) {
-    const glm::vec3 l = localPoint(b, p);
     const float h = float(1e-3 * b.bound);
-    const glm::vec3 k[4] = {{1, -1, -1}, {-1, -1, 1}, {-1, 1, -1}, {1, 1, 1}};
-    dvec3 n(0.0);
-    for (const glm::vec3& c : k) n += dvec3(c) * shapeDistance(b, l + c * h);
     *step = double(h);
-    return n;
+    return tetraGradient([&b](const glm::vec3& l) { return shapeDistance(b, l); }, localPoint(b, p),
+                         h);
 }
 
 dvec3 toWorld(const RigidBody& b, const dvec3& shapeVector) {
@@ -872,9 +869,10 @@ void RigidBodies::probeRim(const Probing& q, int r, std::span<const int> near) {
     if (!q.partwise &&
         (glm::length(c - shape.pos) >= shape.bound + rimReach || beyondParts(shape, c, rimReach)))
         return;
-    if (distance(c) >= rimReach) return;
-    const dvec3 normal =
-        q.partwise ? nearParts_.normal(nearParts_.nearest(near, c).part, c) : normalAt(shape, c);
+    const NearParts::Sample centre =
+        q.partwise ? nearParts_.nearest(near, c) : NearParts::Sample{distanceTo(shape, c), -1};
+    if (centre.distance >= rimReach) return;
+    const dvec3 normal = q.partwise ? nearParts_.normal(centre.part, c) : normalAt(shape, c);
     const std::vector<dvec3> support = rimSupport(c, axis, rim.radius, normal);
     for (size_t k = 0; k < support.size(); ++k)
         probePoint(q, support[k], rim.tube, int(prober.probes.size() + 4 * r + k), support[k],

@@ -97,20 +97,15 @@ std::vector<Rim> rimsOf(const SdfObject& o) {
 
 std::vector<Rim> rimsOf(const Object& o) { return rimsOf(makeSdfObject(o)); }
 
-namespace {
-
-// The rim's plane: u, v across its axis, the same for every point of it.
-void rimPlane(const Rim& rim, dvec3* u, dvec3* v) {
+void rimBasis(const Rim& rim, dvec3* u, dvec3* v) {
     *u = glm::normalize(
         glm::cross(rim.axis, std::abs(rim.axis.x) < 0.57 ? dvec3(1, 0, 0) : dvec3(0, 1, 0)));
     *v = glm::cross(rim.axis, *u);
 }
 
-}  // namespace
-
 dvec3 rimPoint(const Rim& rim, double k) {
     dvec3 u, v;
-    rimPlane(rim, &u, &v);
+    rimBasis(rim, &u, &v);
     const double phi = 2.0 * M_PI * k / kRimPoints;
     return rim.centre + rim.radius * (std::cos(phi) * u + std::sin(phi) * v);
 }
@@ -126,7 +121,7 @@ std::array<dvec3, kRimPoints> rimPoints(const Rim& rim) {
         return turns;
     }();
     dvec3 u, v;
-    rimPlane(rim, &u, &v);
+    rimBasis(rim, &u, &v);
     std::array<dvec3, kRimPoints> points;
     for (size_t k = 0; k < points.size(); ++k)
         points[k] = rim.centre + rim.radius * (kTurns[k][0] * u + kTurns[k][1] * v);

@@ -50,6 +50,8 @@ std::vector<Rim> rimsOf(const Object& o);
 // the shape comes nearest.
 constexpr int kRimPoints = 16;
 constexpr int kRimIds = 4 + kRimPoints;
+// The rim's plane: unit u and v across its axis, the frame of every point of it.
+void rimBasis(const Rim& rim, glm::dvec3* u, glm::dvec3* v);
 glm::dvec3 rimPoint(const Rim& rim, double k);  // in the rim's frame, k sixteenths of a turn
 std::array<glm::dvec3, kRimPoints> rimPoints(const Rim& rim);  // rimPoint at k = 0, 1, … 15
 

@@ -1,6 +1,8 @@
 // static_collider.cpp — contacts and sweeps against the static scene's SDF.
 #include "static_collider.h"
 
+#include "tetra_gradient.h"
+
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
@@ -265,13 +267,11 @@ double StaticCollider::localDistance() const { return mapObjects(local_, glm::ve
 
 StaticHit StaticCollider::localHit(int group, double radius, double d, double size, double reach,
                                    int asker) {
-    // Tetrahedral central difference (Quilez): four samples at the corners k of a tetrahedron,
-    // n ∝ Σ k·f(h·k). Error O(h²·curvature); h scales with the sphere so it stays above the
-    // float noise of the local distances.
+    // The normal from four samples about the sphere's centre (tetra_gradient.h); h scales with
+    // the sphere so it stays above the float noise of the local distances.
     const float h = float(1e-3 * (std::max(radius, size) + std::abs(d)));
-    const glm::vec3 k[4] = {{1, -1, -1}, {-1, -1, 1}, {-1, 1, -1}, {1, 1, 1}};
-    glm::dvec3 n(0.0);
-    for (const glm::vec3& c : k) n += glm::dvec3(c) * double(mapObjects(local_, c * h).d);
+    const glm::dvec3 n = tetraGradient(
+        [this](const glm::vec3& q) { return mapObjects(local_, q).d; }, glm::vec3(0.0f), h);
     const double len = glm::length(n);
     const glm::dvec3 normal = len > 0.0 ? n / len : glm::dvec3(0, 1, 0);
     const Group& g = groups_[size_t(group)];
