@@ -73,11 +73,7 @@ std::string benchSection(const std::string& name, const std::string& unbuilt) {
     if (exe.empty()) return name + " not run: cannot locate the executable.\n";
     if (access(exe.c_str(), X_OK) != 0) return unbuilt;
     std::string out;
-    if (FILE* pipe = popen(exe.c_str(), "r")) {
-        char buf[4096];
-        for (size_t got; (got = fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, got);
-        if (pclose(pipe) != 0) out += "\n(" + name + " exited with an error)\n";
-    }
+    if (!runForOutput({exe}, &out)) out += "\n(" + name + " exited with an error)\n";
     return out;
 }
 
