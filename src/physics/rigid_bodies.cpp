@@ -16,6 +16,7 @@
 #include <map>
 #include <span>
 #include <string>
+#include <utility>
 
 namespace mb {
 
@@ -386,6 +387,11 @@ std::uint64_t pairKey(int a, int b) {
     return std::uint64_t(a + 1) << 40 | std::uint64_t(b + 1) << 16;
 }
 
+// The two bodies pairKey named (−1: the static scene).
+std::pair<int, int> pairOf(std::uint64_t key) {
+    return {int(key >> 40) - 1, int(key >> 16 & 0xffffff) - 1};
+}
+
 void setSurface(RigidContact& k, const Surface& pair) {
     k.friction = pair.friction;
     k.restitution = pair.restitution;
@@ -634,6 +640,7 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
         manifolds_.back().end = int(i) + 1;
     }
     for (Manifold& m : manifolds_) prepareFriction(m);
+    measureStacks(int(spheres.size()));
     rows_.clear();
     gaps_.clear();
     for (const RigidContact& c : contacts_) {
@@ -641,6 +648,28 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
         const NormalRow& r = rows_.emplace_back(rowOf(c, 0.1 * settings_.linearSlop));
         if (r.invMassA > 0.0 && r.invMassB > 0.0)  // a static or sleeping side is not pressed in
             massRatio_ = std::max({massRatio_, r.invMassA / r.invMassB, r.invMassB / r.invMassA});
+    }
+}
+
+// Each body's depth is one more than that of the deepest body it rests on, found up the
+// manifolds in their bottom-up order: a face that holds the body up (|n·y| ≥ 0.5) counts, one
+// beside it does not. A static or sleeping body under it counts as the ground. A pile whose
+// manifolds' heights do not follow its stacking may be undercounted by a body or two.
+void RigidBodies::measureStacks(int spheres) {
+    depths_.assign(size_t(count() + spheres), 0);
+    stackDepth_ = 0;
+    for (const Manifold& m : manifolds_) {
+        const RigidContact& c = contacts_[size_t(m.begin)];
+        if (std::abs(c.normal.y) < 0.5) continue;
+        const auto [first, second] = pairOf(c.key);
+        const int a = second < 0 ? -1 : first, b = second < 0 ? first : second;
+        const bool aBelow = c.normal.y > 0.0;  // the normal points from a to b
+        const int lower = aBelow ? a : b, upper = aBelow ? b : a;
+        const ContactSide& under = aBelow ? c.a : c.b;
+        const int below = lower < 0 || under.invMass == 0.0 ? 0 : depths_[size_t(lower)];
+        int& depth = depths_[size_t(upper)];
+        depth = std::max(depth, below + 1);
+        stackDepth_ = std::max(stackDepth_, depth);
     }
 }
 

@@ -163,6 +163,9 @@ public:
     int contactCount() const { return int(contacts_.size()); }
     // The largest ratio of two moving bodies' masses across one of this step's contacts; 1 if none.
     double massRatio() const { return massRatio_; }
+    // The most bodies of this step's contacts that rest one on another, counted from the ground
+    // or a sleeping body (a box on the ground: 1); 0 if none.
+    int stackDepth() const { return stackDepth_; }
 
     // This step's contacts against the statics, each other and the spheres (waking those hit).
     void collide(std::vector<PhysicsBody>& spheres, double gravity);
@@ -199,6 +202,7 @@ private:
     double reachOf(const RigidBody& a, const RigidBody& b) const;
     bool boxesApart(int i, int j);
     void sortBottomUp();
+    void measureStacks(int spheres);
     static RigidContact contactFrom(const Candidate& c, double height, std::uint64_t pair);
     // `centre`: the probe's, where b holds it; else the point itself, a point of b's surface.
     ContactSide sideOf(RigidBody& b, const glm::dvec3& point, const glm::dvec3& centre);
@@ -217,6 +221,8 @@ private:
     std::vector<NormalRow> rows_;         // contacts_'s normal rows, in the same order
     std::vector<ContactGap> gaps_;        // and their separations' inputs
     double massRatio_ = 1.0;              // see massRatio()
+    int stackDepth_ = 0;                  // see stackDepth()
+    std::vector<int> depths_;             // per body, then per sphere: its stack's depth under it
     struct Manifold {
         int begin, end;         // in contacts_
         RigidContact friction;  // the points' friction and rolling, at their centre

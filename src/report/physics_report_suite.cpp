@@ -153,21 +153,21 @@ void addRigidBodies(std::vector<ExtremeResult>& out) {
                           {}, 10.0, [](const PhysicsWorld& w, const Track& t) {
                               return noEnergyGain(t) && w.stats().awake == 0;
                           }));
-    // The stacks the solver is measured against and does not yet hold: the ten boxes' top to 2 mm,
-    // a column of thirty standing, the pyramid of a 40-box base asleep.
+    // The ten boxes' top to 2 mm of where it was placed: a target the soft contacts do not
+    // reach, each of the 11 sinking by the slop and by the weight it holds.
     out.push_back(runCase("Stack of 10 boxes, 60 s (target)",
                           "top within 2 mm of where it was placed", boxStackScene(10), {}, 60.0,
                           [](const PhysicsWorld& w, const Track&) {
                               return std::abs(w.rigid(9).pos.y - 9.5) < 0.002;
                           }));
-    out.push_back(
-        runCase("Column of 30 boxes, 60 s (target)", "top within 0.25 m of where it was placed",
-                boxStackScene(30), {}, 60.0, [](const PhysicsWorld& w, const Track&) {
-                    return glm::length(w.rigid(29).pos - glm::dvec3(0.0, 29.5, 0.0)) < 0.25;
-                }));
+    out.push_back(runCase("Column of 30 boxes, 60 s", "top within 0.25 m of where it was placed",
+                          boxStackScene(30), {}, 60.0, [](const PhysicsWorld& w, const Track&) {
+                              return glm::length(w.rigid(29).pos - glm::dvec3(0.0, 29.5, 0.0)) <
+                                     0.25;
+                          }));
     const Scene pyramid = pyramidScene(40);
     const glm::dvec3 apex(pyramid.objects.back().pos);
-    out.push_back(runCase("Pyramid of 820 boxes, 30 s (target)",
+    out.push_back(runCase("Pyramid of 820 boxes, 30 s",
                           "asleep with its apex within 5 cm of where it was placed, no energy gain",
                           pyramid, {}, 30.0, [apex](const PhysicsWorld& w, const Track& t) {
                               return noEnergyGain(t) && w.stats().awake == 0 &&
