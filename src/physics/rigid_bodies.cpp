@@ -32,9 +32,7 @@ dvec3 RigidBody::origin() const { return framed ? pos - shapeOrient() * centre :
 
 namespace {
 
-constexpr int kSweeps = 4;                // at most, of a manifold's rows in the relax pass
 constexpr double kSweepTolerance = 1e-3;  // m/s: a sweep that changed no row more has converged
-constexpr int kBounceSweeps = 16;         // of a manifold's rows in restitute: a face bounces whole
 constexpr int kNewtonSteps = 4;           // at most, projecting a point onto a bound's surface
 constexpr int kGroupManifold = 8;         // points a group's manifold keeps (reduceManifold)
 constexpr int kTraceSteps = 64;           // at most, along a ray to a bound's surface
@@ -1171,14 +1169,14 @@ double RigidBodies::solveNormal(NormalRow& r, const Softness& soft, double h, bo
 }
 
 // The relax pass sweeps a manifold's rows until no row changes its speed by kSweepTolerance,
-// at most kSweeps times: the points of a face share one body, and one sweep in a fixed order
-// leaves the first point pushing hardest, which turns a box dropped flat. Each sweep brings the
-// velocities closer to the one answer that stops every point alike (the impulses may differ;
+// at most settings.relaxSweeps times: the points of a face share one body, and one sweep in a fixed
+// order leaves the first point pushing hardest, which turns a box dropped flat. Each sweep brings
+// the velocities closer to the one answer that stops every point alike (the impulses may differ;
 // the motion they give does not). Sixteen sweeps every time cost two thirds of the step in a
 // pile of 1000 bodies; resting manifolds, warm-started, converge in one or two. The solve pass
 // sweeps once: its soft rows are made for one sweep, and more would soften them again each time.
 void RigidBodies::solve(const Softness& soft, double h, bool useBias) {
-    const int sweeps = useBias ? 1 : kSweeps;
+    const int sweeps = useBias ? 1 : std::max(1, settings_.relaxSweeps);
     for (size_t i = 0; i < rows_.size(); ++i) rows_[i].separation = separationNow(gaps_[i]);
     for (Manifold& m : manifolds_)
         for (int sweep = 0; sweep < sweeps; ++sweep) {
@@ -1207,7 +1205,7 @@ void RigidBodies::restitute(double threshold, double gravity) {
             continue;
         }
         double rise = 1e300;
-        for (int sweep = 0; sweep < kBounceSweeps; ++sweep)
+        for (int sweep = 0; sweep < settings_.bounceSweeps; ++sweep)
             for (int i = m.begin; i < m.end; ++i) {
                 const RigidContact& c = contacts_[size_t(i)];
                 NormalRow& r = rows_[size_t(i)];

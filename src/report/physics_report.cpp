@@ -111,6 +111,8 @@ int runPhysicsReport(const std::string& repoRoot) {
     v["group_mass"] = benchSection("group_mass_bench", "group_mass_bench not built.\n");
     std::cerr << "physics report: stiff and extreme suite\n";
     v["extreme_table"] = extremeTable();
+    std::cerr << "physics report: sweeps\n";
+    v["sweeps"] = sweepsTable();
     std::cerr << "physics report: Bullet\n";
     v["bullet"] = benchSection("bullet_bench",
                                "Bullet comparison not built (needs libbullet-dev, found through "

@@ -42,4 +42,13 @@ struct ExtremeResult {
 };
 std::vector<ExtremeResult> runExtremeSuite();
 
+struct FlatLanding {
+    double apexError;  // m, |first apex − e²·h|
+    double spin;       // rad/s, the most the cube turned at before that apex
+};
+FlatLanding landFlat(const PhysicsSettings& s);  // "Box landing flat"
+
+// Markdown: a rigid manifold's relax and bounce sweeps, each count's time and errors.
+std::string sweepsTable();
+
 }  // namespace mb

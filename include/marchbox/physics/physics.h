@@ -58,6 +58,11 @@ struct PhysicsSettings {
     int impactsPerContact = 16;         // at most, per step; the restitution pass takes the rest
     bool followCurves = true;           // curved static surfaces followed every substep (RATTLE)
     int restitutionIterations = 4;      // bounce passes: simultaneous impacts tend to Newton's law
+    int relaxSweeps = 4;                // at most, over a rigid manifold's rows in a relax
+                                        // pass until they settle: one leaves a face's first
+                                        // corner pushing hardest
+    int bounceSweeps = 16;              // over a rigid manifold's rows at restitution, so
+                                        // that a face bounces whole
     bool continuous = true;             // sweep fast spheres against static surfaces
     bool sleep = true;
     double sleepSpeed = 0.05;  // m/s (and rad/s · radius) below which a body may sleep
