@@ -663,6 +663,7 @@ void RigidBodies::measureStacks(int spheres) {
         const int a = second < 0 ? -1 : first, b = second < 0 ? first : second;
         const bool aBelow = c.normal.y > 0.0;  // the normal points from a to b
         const int lower = aBelow ? a : b, upper = aBelow ? b : a;
+        if (upper < 0) continue;  // a static surface over a body: it holds nothing up
         const ContactSide& under = aBelow ? c.a : c.b;
         const int below = lower < 0 || under.invMass == 0.0 ? 0 : depths_[size_t(lower)];
         int& depth = depths_[size_t(upper)];

@@ -151,6 +151,20 @@ TEST(RigidWorld, StepsOfATallStackAreDividedFiner) {
     }
 }
 
+// A box wedged between the ground and a static slab touching its top: the slab's face holds
+// the box down, not up, so it is no stack, and the box stays wedged. Planted: the slab counted
+// as a body resting on the box: its depth written outside the bodies' (AddressSanitizer, in
+// the sanitized run, reports the write; a plain build may corrupt its heap).
+TEST(RigidWorld, ABoxUnderAStaticSlabIsNoStack) {
+    Scene s = physicsWorld(9.81f, 0.0f, 0.6f, true);
+    s.objects.push_back(dynamicBox({0, 0.5f, 0}, glm::vec3(0.5f)));
+    s.objects.push_back(staticBox({0, 1.1f, 0}, {2.0f, 0.1f, 2.0f}));
+    PhysicsWorld w(s);
+    for (int i = 0; i < stepsFor(1.0, w.settings()); ++i) w.step();
+    EXPECT_EQ(w.stats().substeps, 4);
+    EXPECT_NEAR(w.rigid(0).pos.y, 0.5, 0.01);
+}
+
 // simulate writes pos, orient, vel and spin: a scene saved mid-run and read again goes on as
 // the run that was not stopped, to the float precision of the file (here a box tumbling through
 // the air and one sliding to a stop on the ground, which starts again without last step's
