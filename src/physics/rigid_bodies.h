@@ -109,9 +109,8 @@ struct RigidContact {
     glm::dvec3 tangent[2];
     double separation = 0.0;  // at the step's start; < 0 overlaps
     double height = 0.0;      // of its manifold's lowest point: solved bottom-up
-    double friction = 0.0, restitution = 0.0, rolling = 0.0, rollArm = 0.0;
+    double friction = 0.0, restitution = 0.0;
     double normalImpulse = 0.0;     // last step's, to start the row from
-    glm::dvec3 rollImpulse{0.0};    // a manifold's friction only (its FrictionRows: the rest)
     double relativeVelocity = 0.0;  // normal, at the step's start, for restitution
 };
 
@@ -145,13 +144,18 @@ struct ContactGap {
 
 // A manifold's friction rows at its centre: all that a sweep reads and writes, with the crosses
 // and I⁻¹ products done once a step (each tangent's arm, anchor × tangent, and turn, I⁻¹·arm,
-// per side, and the twist's I⁻¹·n). Half the bytes of the RigidContact it is made from.
+// per side, the twist's I⁻¹·n, and rolling's I⁻¹·t about each tangent). Half the bytes of the
+// RigidContact it is made from.
 struct FrictionRows : RowBodies {
     glm::dvec3 normal{0.0}, tangent[2];
     glm::dvec3 armA[2], armB[2], turnA[2], turnB[2];
     glm::dvec3 twistA{0.0}, twistB{0.0};
+    glm::dvec3 rollA[2], rollB[2];
     double friction = 0.0, tangentMass[2] = {0.0, 0.0}, twistMass = 0.0, twistArm = 0.0;
+    double rollMass[2] = {0.0, 0.0};
+    double rollLimit = 0.0;  // rolling resistance · arm: the torque's bound per unit push
     double tangentImpulse[2] = {0.0, 0.0}, twistImpulse = 0.0;  // from last step's, on
+    double rollImpulse[2] = {0.0, 0.0};                         // about the tangents
 };
 
 class RigidBodies {

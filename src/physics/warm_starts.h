@@ -14,7 +14,7 @@ namespace mb {
 
 struct WarmImpulses {
     double normal = 0.0, tangent[2] = {0.0, 0.0}, twist = 0.0;
-    glm::dvec3 roll{0.0};
+    double roll[2] = {0.0, 0.0};  // about the tangents
 };
 
 class WarmStarts {

@@ -99,6 +99,29 @@ TEST_P(RigidRolling, RollsDownASlopeAtItsClosedFormAcceleration) {
 INSTANTIATE_TEST_SUITE_P(CylinderAndCapsule, RigidRolling,
                          ::testing::Values(ShapeType::Cylinder, ShapeType::Capsule));
 
+// A solid cylinder rolling on level ground against rolling resistance c: the torque c·r·N
+// against the roll, with the friction that keeps it rolling, slows it at a = c·g / (1 + ½) =
+// ⅔·c·g, the same all the way to its stop. c = 0.05, μ = 0.8, from 2 m/s, within 1 % over
+// 1 s (measured 0.2 %; a capsule, 1.2 % fast with the old rolling rows and the new alike).
+// Planted: the rolling rows' masses left at 0: it rolls on unslowed.
+TEST(RigidContacts, RollingResistanceSlowsACylinderAtItsClosedFormRate) {
+    Scene s = physicsWorld(9.81f, 0.0f, 0.8f, true);
+    s.world.rolling = 0.05f;
+    Object body = dynamicShape(ShapeType::Cylinder, {0.0f, 0.2f, 0.0f}, 1.0f);
+    body.radius = 0.2f;
+    body.height = 0.6f;
+    body.rot = {90.0f, 0.0f, 0.0f};  // its axis along z: it rolls along x
+    body.vel = {2.0f, 0.0f, 0.0f};
+    body.spin = {0.0f, 0.0f, -10.0f};  // v / r
+    s.objects.push_back(body);
+    PhysicsWorld w(s);
+    run(w, 1.0);
+    const double a = 2.0 / 3.0 * double(0.05f) * 9.81;
+    const double slowed = 2.0 - w.rigid(0).vel.x;
+    std::printf("rolling resistance: slowed at %.5g m/s² (⅔·c·g %.5g)\n", slowed, a);
+    EXPECT_NEAR(slowed, a, 0.01 * a);
+}
+
 // Dropped flat from 1 m with e = 0.5, a box first rises to e²·h above where it landed, within
 // 1 mm, and picks up no spin (< 1e-6 rad/s): its four corners bounce as one face.
 TEST(RigidContacts, BoxDroppedFlatBouncesStraight) {
