@@ -220,19 +220,8 @@ dvec3 relativeVelocity(const RigidContact& c) {
     return c.a.vel ? vb - *c.a.vel - glm::cross(*c.a.spin, c.a.anchor) : vb;
 }
 
-void applyImpulse(RigidContact& c, const dvec3& p) {
-    if (c.a.invMass > 0.0) {
-        *c.a.vel -= c.a.invMass * p;
-        *c.a.spin -= c.a.invInertia * glm::cross(c.a.anchor, p);
-    }
-    if (c.b.invMass > 0.0) {
-        *c.b.vel += c.b.invMass * p;
-        *c.b.spin += c.b.invInertia * glm::cross(c.b.anchor, p);
-    }
-}
-
-// The normal row's speed and impulse: the same sums as relativeVelocity and applyImpulse along
-// the normal, with the crosses done once a step.
+// The normal row's speed and impulse: relativeVelocity's sums along the normal, and an impulse
+// along it, with the crosses done once a step.
 double normalSpeed(const NormalRow& r) {
     const double b = glm::dot(r.normal, *r.velB) + glm::dot(r.armB, *r.spinB);
     return r.velA ? b - glm::dot(r.normal, *r.velA) - glm::dot(r.armA, *r.spinA) : b;
@@ -271,11 +260,6 @@ NormalRow rowOf(const RigidContact& c, double slop) {
     r.impulse = c.normalImpulse;
     r.slop = slop;
     return r;
-}
-
-void applyAngular(RigidContact& c, const dvec3& l) {
-    if (c.a.invMass > 0.0) *c.a.spin -= c.a.invInertia * l;
-    if (c.b.invMass > 0.0) *c.b.spin += c.b.invInertia * l;
 }
 
 // 1 / K for an impulse along unit d at the contact: K = Σ 1/m + (I⁻¹(r×d))×r·d.
@@ -383,6 +367,25 @@ void solveRolling(FrictionRows& r, double normalImpulse) {
     *r.spinB += d0 * r.rollB[0] + d1 * r.rollB[1];
     r.rollImpulse[0] = total[0];
     r.rollImpulse[1] = total[1];
+}
+
+// Whole impulses at a manifold's centre, as the warm start applies them and undo takes them
+// back: along each tangent, the twist about the normal, and rolling about each tangent.
+void applyCentre(FrictionRows& r, double sign) {
+    const double t0 = sign * r.tangentImpulse[0], t1 = sign * r.tangentImpulse[1];
+    const double w = sign * r.twistImpulse;
+    const double l0 = sign * r.rollImpulse[0], l1 = sign * r.rollImpulse[1];
+    const dvec3 p = t0 * r.tangent[0] + t1 * r.tangent[1];
+    if (r.invMassA > 0.0) {
+        *r.velA -= r.invMassA * p;
+        *r.spinA -=
+            w * r.twistA + t0 * r.turnA[0] + t1 * r.turnA[1] + l0 * r.rollA[0] + l1 * r.rollA[1];
+    }
+    if (r.invMassB > 0.0) {
+        *r.velB += r.invMassB * p;
+        *r.spinB +=
+            w * r.twistB + t0 * r.turnB[0] + t1 * r.turnB[1] + l0 * r.rollB[0] + l1 * r.rollB[1];
+    }
 }
 
 std::uint64_t pairKey(int a, int b) {
@@ -638,7 +641,7 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     for (size_t i = 0; i < contacts_.size(); ++i) {
         prepare(contacts_[i]);
         if (i == 0 || (contacts_[i].key ^ contacts_[i - 1].key) >> 8 != 0)
-            manifolds_.push_back({int(i), int(i), {}, {}});
+            manifolds_.push_back({int(i), int(i), 0, {}});
         manifolds_.back().end = int(i) + 1;
     }
     for (Manifold& m : manifolds_) prepareFriction(m);
@@ -1092,9 +1095,9 @@ void RigidBodies::prepare(RigidContact& c) {
 
 // The manifold's friction contact: its first point's, moved to the points' centre; and its rows.
 void RigidBodies::prepareFriction(Manifold& m) {
-    RigidContact& f = m.friction;
-    f = contacts_[size_t(m.begin)];
+    RigidContact f = contacts_[size_t(m.begin)];
     f.key |= 0xff;
+    m.key = f.key;
     const int count = m.end - m.begin;
     dvec3 a(0.0), b(0.0);
     for (int i = m.begin; i < m.end; ++i) {
@@ -1142,13 +1145,7 @@ void RigidBodies::prepareFriction(Manifold& m) {
 
 void RigidBodies::warmStart() {
     for (NormalRow& r : rows_) applyNormal(r, r.impulse);
-    for (Manifold& m : manifolds_) {
-        RigidContact& f = m.friction;
-        const FrictionRows& r = m.rows;
-        applyImpulse(f, r.tangentImpulse[0] * f.tangent[0] + r.tangentImpulse[1] * f.tangent[1]);
-        applyAngular(f, r.twistImpulse * f.normal + r.rollImpulse[0] * f.tangent[0] +
-                            r.rollImpulse[1] * f.tangent[1]);
-    }
+    for (Manifold& m : manifolds_) applyCentre(m.rows, 1.0);
 }
 
 // The normal row: speculative where apart (close the gap in this substep, no more), a soft
@@ -1208,7 +1205,7 @@ void RigidBodies::solve(const Softness& soft, double h, bool useBias) {
 // ends where the bounce at t* takes it, not where the step's speculative row held it.
 void RigidBodies::restitute(double threshold, double gravity) {
     for (Manifold& m : manifolds_) {
-        const double accel = m.friction.a.vel ? 0.0 : -gravity * m.friction.normal.y;
+        const double accel = m.rows.velA ? 0.0 : -gravity * m.rows.normal.y;
         if (heldEarly(m, accel)) {
             undo(m);
             continue;
@@ -1254,11 +1251,8 @@ void RigidBodies::undo(Manifold& m) {
         applyNormal(r, -r.impulse);
         r.impulse = 0.0;
     }
-    RigidContact& f = m.friction;
     FrictionRows& r = m.rows;
-    applyImpulse(f, -(r.tangentImpulse[0] * f.tangent[0] + r.tangentImpulse[1] * f.tangent[1]));
-    applyAngular(f, -(r.twistImpulse * f.normal + r.rollImpulse[0] * f.tangent[0] +
-                      r.rollImpulse[1] * f.tangent[1]));
+    applyCentre(r, -1.0);
     r.tangentImpulse[0] = r.tangentImpulse[1] = r.twistImpulse = 0.0;
     r.rollImpulse[0] = r.rollImpulse[1] = 0.0;
 }
@@ -1299,10 +1293,10 @@ void RigidBodies::finishStep() {
         kept_.put(contacts_[i].key, {rows_[i].impulse, {0.0, 0.0}, 0.0, {0.0, 0.0}});
     for (const Manifold& m : manifolds_) {
         const FrictionRows& r = m.rows;
-        kept_.put(m.friction.key, {0.0,
-                                   {r.tangentImpulse[0], r.tangentImpulse[1]},
-                                   r.twistImpulse,
-                                   {r.rollImpulse[0], r.rollImpulse[1]}});
+        kept_.put(m.key, {0.0,
+                          {r.tangentImpulse[0], r.tangentImpulse[1]},
+                          r.twistImpulse,
+                          {r.rollImpulse[0], r.rollImpulse[1]}});
     }
     for (RigidBody& b : bodies_) b.delta = dvec3(0.0);
     updateSleep();

@@ -228,9 +228,9 @@ private:
     int stackDepth_ = 0;                  // see stackDepth()
     std::vector<int> depths_;             // per body, then per sphere: its stack's depth under it
     struct Manifold {
-        int begin, end;         // in contacts_
-        RigidContact friction;  // the points' friction and rolling, at their centre
-        FrictionRows rows;
+        int begin, end;     // in contacts_
+        std::uint64_t key;  // its friction's, for warm starting
+        FrictionRows rows;  // the points' friction and rolling, at their centre
     };
     void prepareFriction(Manifold& m);
     bool heldEarly(const Manifold& m, double accel) const;
