@@ -347,9 +347,9 @@ Bounce bounceOf(const RigidContact& c, double accel, double dt) {
 
 // Rolling resistance: an angular impulse against the relative spin across the normal (twist
 // about the normal is not rolling), about each tangent as the friction's rows, within the disc
-// |τ| ≤ rolling · r · Σλ_n with r the body's arm to the manifold's centre. Along the spin's own
-// axis instead, its mass needed two square roots, two divisions and four products with I⁻¹ a
-// sweep: 9 % of a mixed pile's step.
+// |τ| ≤ rolling · r · Σλ_n with r the body's arm to the manifold's centre. The rows' masses are
+// made once a step: one along the spin's own axis costs two square roots, two divisions and four
+// products with I⁻¹ every sweep, and took 9 % of a mixed pile's step.
 void solveRolling(FrictionRows& r, double normalImpulse) {
     const dvec3 w = *r.spinB - (r.spinA ? *r.spinA : dvec3(0.0));
     double total[2];
