@@ -347,7 +347,7 @@ Bounce bounceOf(const RigidContact& c, double accel, double dt) {
 
 // Rolling resistance: an angular impulse against the relative spin across the normal (twist
 // about the normal is not rolling), about each tangent as the friction's rows, within the disc
-// |τ| ≤ rolling · r · Σλ_n with r the body's arm to the manifold's centre. The rows' masses are
+// |τ| ≤ rolling · r · Σλ_n with r the body's rolling radius. The rows' masses are
 // made once a step: one along the spin's own axis costs two square roots, two divisions and four
 // products with I⁻¹ every sweep, and took 9 % of a mixed pile's step.
 void solveRolling(FrictionRows& r, double normalImpulse) {
@@ -1120,7 +1120,10 @@ void RigidBodies::prepareFriction(Manifold& m) {
     r.twistMass = k > 0.0 ? 1.0 / k : 0.0;
     const WarmImpulses* warm = kept_.find(f.key);
     r.twistImpulse = warm ? warm->twist : 0.0;
-    r.rollLimit = rolling_ * glm::length(f.b.anchor);
+    // The rolling radius: the centre's height over the contact plane. The distance to the
+    // manifold's centre overstates it wherever that centre lies off to the side along the roll's
+    // axis (a lying capsule's four points of five: it slowed 1.2 % fast).
+    r.rollLimit = rolling_ * std::abs(glm::dot(f.b.anchor, f.normal));
     for (int k = 0; k < 2; ++k) {
         r.tangent[k] = f.tangent[k];
         r.tangentMass[k] = rowMass(f, f.tangent[k]);

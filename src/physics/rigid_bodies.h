@@ -153,7 +153,7 @@ struct FrictionRows : RowBodies {
     glm::dvec3 rollA[2], rollB[2];
     double friction = 0.0, tangentMass[2] = {0.0, 0.0}, twistMass = 0.0, twistArm = 0.0;
     double rollMass[2] = {0.0, 0.0};
-    double rollLimit = 0.0;  // rolling resistance · arm: the torque's bound per unit push
+    double rollLimit = 0.0;  // rolling resistance · rolling radius: the torque's bound a push
     double tangentImpulse[2] = {0.0, 0.0}, twistImpulse = 0.0;  // from last step's, on
     double rollImpulse[2] = {0.0, 0.0};                         // about the tangents
 };
