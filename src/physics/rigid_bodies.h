@@ -144,8 +144,8 @@ struct ContactGap {
 
 // A manifold's friction rows at its centre: all that a sweep reads and writes, with the crosses
 // and I⁻¹ products done once a step (each tangent's arm, anchor × tangent, and turn, I⁻¹·arm,
-// per side, the twist's I⁻¹·n, and rolling's I⁻¹·t about each tangent). Half the bytes of the
-// RigidContact it is made from.
+// per side, the twist's I⁻¹·n, and rolling's I⁻¹·t about each tangent). The manifold keeps
+// these alone: the RigidContact they are made from is not read again this step.
 struct FrictionRows : RowBodies {
     glm::dvec3 normal{0.0}, tangent[2];
     glm::dvec3 armA[2], armB[2], turnA[2], turnB[2];
@@ -226,7 +226,7 @@ private:
     std::vector<ContactGap> gaps_;        // and their separations' inputs
     double massRatio_ = 1.0;              // see massRatio()
     int stackDepth_ = 0;                  // see stackDepth()
-    std::vector<int> depths_;             // per body, then per sphere: its stack's depth under it
+    std::vector<int> depths_;             // per body, then per sphere: its depth in its stack
     struct Manifold {
         int begin, end;     // in contacts_
         std::uint64_t key;  // its friction's, for warm starting
