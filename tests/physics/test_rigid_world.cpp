@@ -107,7 +107,7 @@ TEST(RigidWorld, PyramidSettlesAndSleeps) {
 // ω²: the step takes more substeps for a deeper stack. Its top sinks by the slop and the soft
 // squeeze of each of its 31 contacts (31 × 0.5 mm + Σ k·g/ω² for k = 1…30 at 8 substeps, 2.3 cm;
 // measured 3.05 cm) and stays within 5 cm of its axis: it settles leaning by 1–2.5 cm, as the
-// rows' arithmetic has it, and holds there (2.2 cm at 60 s and at 120 s). Planted: the depth
+// rows' arithmetic has it, and holds there (2.3 cm at 60 s, 2.2 at 120 s). Planted: the depth
 // rule left out (4 substeps): the column leans from the start and falls at 14 s.
 TEST(RigidWorld, ColumnOfThirtyStandsAMinuteAwake) {
     PhysicsSettings settings;
