@@ -8,11 +8,16 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <array>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <imgui.h>
 
 namespace mb {
+
+// The fly keys as pairs along the view's x, y and z: left and right, down and up, back and on.
+static constexpr std::array<int, 6> kFlyKeys = {GLFW_KEY_A, GLFW_KEY_D, GLFW_KEY_Q,
+                                                GLFW_KEY_E, GLFW_KEY_S, GLFW_KEY_W};
 
 glm::vec2 ViewportInput::pixel(glm::vec2 mouse) const {
     // The centre of the framebuffer pixel under the mouse, counted from the bottom as GL does.
@@ -267,13 +272,18 @@ void ViewportInput::place(UiContext& c) {
 
 void ViewportInput::keys(UiContext& c, float seconds) {
     ImGuiIO& io = ImGui::GetIO();
-    // Ctrl and Shift make W, A, S, D shortcuts (Ctrl+S, Shift+D), not flight.
-    if (io.WantCaptureKeyboard || io.KeyCtrl || io.KeyShift) return;
-    auto axis = [](int minus, int plus) {
-        return float(ImGui::IsKeyDown(plus)) - float(ImGui::IsKeyDown(minus));
+    // Ctrl and Shift make W, A, S, D shortcuts (Ctrl+S, Shift+D), not flight, and a key keeps
+    // the meaning it went down with: Ctrl let go before S after Ctrl+S must not fly backwards.
+    const bool flight = !io.WantCaptureKeyboard && !io.KeyCtrl && !io.KeyShift;
+    for (size_t i = 0; i < kFlyKeys.size(); ++i) {
+        if (!ImGui::IsKeyDown(kFlyKeys[i])) flying_[i] = false;
+        else if (ImGui::IsKeyPressed(kFlyKeys[i], false)) flying_[i] = flight;
+    }
+    if (!flight) return;
+    auto axis = [&](size_t minus, size_t plus) {
+        return float(flying_[plus]) - float(flying_[minus]);
     };
-    glm::vec3 move(axis(GLFW_KEY_A, GLFW_KEY_D), axis(GLFW_KEY_Q, GLFW_KEY_E),
-                   axis(GLFW_KEY_S, GLFW_KEY_W));
+    const glm::vec3 move(axis(0, 1), axis(2, 3), axis(4, 5));
     if (move != glm::vec3(0.0f)) flyCamera(c.editor.view(), move, seconds, controls_);
 }
 

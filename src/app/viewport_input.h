@@ -8,6 +8,7 @@
 #include "marchbox/editor/picking.h"
 #include "ui.h"
 
+#include <bitset>
 #include <glm/vec2.hpp>
 
 namespace mb {
@@ -55,6 +56,7 @@ private:
     uint64_t moves_ = 0;  // numbers each drag that edits: one undo step per drag
     glm::vec2 view_{0.0f}, scale_{1.0f};
     CameraControls controls_;
+    std::bitset<6> flying_;  // which fly keys (kFlyKeys) went down as flight and are held
 };
 
 }  // namespace mb
