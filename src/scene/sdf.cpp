@@ -292,20 +292,6 @@ void boundGroups(SceneSdf& sdf) {
     }
 }
 
-// Copy (i, j, k) sits at ((i − (n−1)/2)·s, ...) in the group's frame; the mirror folds the point
-// onto the positive side of each mirrored plane before the copy's members see it.
-bool groupImage(const SdfGroup& g, vec3 p, int copy, float cull, vec3* image) {
-    vec3 q = g.toLocal * (p - g.pos);
-    const glm::ivec3 index(copy % g.repeat.x, copy / g.repeat.x % g.repeat.y,
-                           copy / (g.repeat.x * g.repeat.y));
-    q -= (vec3(index) - 0.5f * (vec3(g.repeat) - 1.0f)) * g.spacing;
-    if (glm::length(q) - g.copyBound >= cull) return false;
-    for (int a = 0; a < 3; ++a)
-        if (g.mirror[a]) q[a] = std::abs(q[a]);
-    *image = g.pos + glm::transpose(g.toLocal) * q;
-    return true;
-}
-
 void shiftSceneSdf(SceneSdf& sdf, vec3 origin) {
     for (SdfObject& o : sdf.objects) o.pos -= origin;
     for (SdfGroup& g : sdf.groups) g.pos -= origin;
@@ -328,6 +314,22 @@ Box objectBounds(const SceneSdf& sdf) {
 constexpr float kFar = 1e10f;
 
 namespace {
+
+// Where q (in the group's frame) falls along each axis of the copies, in copy indices, neither
+// rounded nor clamped.
+vec3 copyCoord(const SdfGroup& g, vec3 q) { return q / g.spacing + 0.5f * (vec3(g.repeat) - 1.0f); }
+
+// Copy (i, j, k) sits at ((i − (n−1)/2)·s, ...) in the group's frame; the mirror folds the point
+// onto the positive side of each mirrored plane before the copy's members see it. False where
+// the copy's bounding sphere is at least `cull` from q.
+bool groupImage(const SdfGroup& g, vec3 q, glm::ivec3 index, float cull, vec3* image) {
+    q -= (vec3(index) - 0.5f * (vec3(g.repeat) - 1.0f)) * g.spacing;
+    if (glm::length(q) - g.copyBound >= cull) return false;
+    for (int a = 0; a < 3; ++a)
+        if (g.mirror[a]) q[a] = std::abs(q[a]);
+    *image = g.pos + glm::transpose(g.toLocal) * q;
+    return true;
+}
 
 // Whether a member whose distance is at least `lower` leaves the chain's distance d as it is:
 // union and subtract do when it is k beyond what they keep; intersect always needs its value.
@@ -366,19 +368,32 @@ SceneSample mapChain(const SceneSdf& sdf, int parent, int first, int last, vec3 
 
 }  // namespace
 
-// The union of the copies, sharp whether or not they overlap; a copy whose bound is beyond the
-// nearest so far cannot lower it.
+// The union of the copies, sharp whether or not they overlap, as groups.glsl finds it: first the
+// copy whose cell holds the point, then only the box of copies whose bounding spheres reach
+// nearer than that one's distance. A copy beyond it cannot lower the union, and 4,096 copies
+// each evaluated at every point took a dynamic group's setup two minutes.
 SceneSample mapGroup(const SceneSdf& sdf, int g, vec3 p) {
     const SdfGroup& group = sdf.groups[size_t(g)];
     if (copyCount(group) == 1 && !glm::any(group.mirror))
         return mapChain(sdf, g, group.first, group.last, p);
+    const vec3 q = group.toLocal * (p - group.pos), last = vec3(group.repeat - 1);
     SceneSample best{kFar, kHitNone};
-    for (int copy = 0; copy < copyCount(group); ++copy) {
+    auto visit = [&](glm::ivec3 index) {
         vec3 image;
-        if (!groupImage(group, p, copy, best.d, &image)) continue;
-        SceneSample s = mapChain(sdf, g, group.first, group.last, image);
+        if (!groupImage(group, q, index, best.d, &image)) return;
+        const SceneSample s = mapChain(sdf, g, group.first, group.last, image);
         if (s.d < best.d) best = s;
-    }
+    };
+    const glm::ivec3 nearest(glm::clamp(glm::floor(copyCoord(group, q) + 0.5f), vec3(0.0f), last));
+    visit(nearest);
+    // Clamped as floats: a far best (kFar, nothing there) makes no integer overflow.
+    const float reach = best.d + group.copyBound;
+    const glm::ivec3 lo(glm::clamp(glm::ceil(copyCoord(group, q - reach)), vec3(0.0f), last));
+    const glm::ivec3 hi(glm::clamp(glm::floor(copyCoord(group, q + reach)), vec3(0.0f), last));
+    for (int k = lo.z; k <= hi.z; ++k)
+        for (int j = lo.y; j <= hi.y; ++j)
+            for (int i = lo.x; i <= hi.x; ++i)
+                if (glm::ivec3(i, j, k) != nearest) visit({i, j, k});
     return best;
 }
 

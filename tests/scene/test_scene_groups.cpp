@@ -77,7 +77,8 @@ TEST(SceneGroups, ContractExampleLoadsAsATreeAndRoundTripsExactly) {
     Scene again = parseOk(text);
     EXPECT_EQ(again, s);
     EXPECT_EQ(formatScene(again), text);
-    EXPECT_NE(text.find("\ngroup name:cup pos:-3,0.8,0 orient:1,0,0,0 mass:0.5 "), std::string::npos)
+    EXPECT_NE(text.find("\ngroup name:cup pos:-3,0.8,0 orient:1,0,0,0 mass:0.5 "),
+              std::string::npos)
         << text;
     EXPECT_NE(text.find("\nobject in:cup type:cylinder material:1 pos:0,0.06,0 radius:0.44 "
                         "height:0.8 rot:0,0,0 op:subtract blend:0\n"),
@@ -174,6 +175,41 @@ TEST(SceneGroups, MirrorAndRepeatPlaceTheirCopies) {
     EXPECT_NEAR(mapObjects(sdf, vec3(4, 0, 8)).d, 1.75f, 1e-5f) << "no copy past the last";
 }
 
+// A repeated group is the union of every copy, overlapping or not, though mapGroup visits only
+// the copies whose bounding spheres come near (the cell holding the point, then a box about
+// it). Here 7 x 5 x 3 copies, turned and mirrored, each overlapping its neighbours, against
+// the minimum over all 105 at points in, around and beyond them. Planted: the box one copy
+// short at its upper end, or reaching only the nearest copy's distance and not the copies'
+// bound beyond it: both miss copies.
+TEST(SceneGroups, ARepeatedGroupIsTheUnionOfEveryCopy) {
+    Scene s = parseOk(kHead +
+                      "group name:r pos:1,2,3 rot:10,20,30 mirror:x repeat:7,5,3 "
+                      "spacing:0.3,0.4,0.5 static:1\n"
+                      "object in:r type:box pos:0.1,0,0 size:0.25,0.1,0.3\n"
+                      "object in:r type:sphere pos:0,0.2,0.1 radius:0.15\n");
+    const SceneSdf sdf = makeSceneSdf(s);
+    const SdfGroup& g = sdf.groups[0];
+    auto everyCopy = [&](vec3 p) {
+        float d = 1e10f;
+        for (int k = 0; k < 3; ++k)
+            for (int j = 0; j < 5; ++j)
+                for (int i = 0; i < 7; ++i) {
+                    vec3 q = g.toLocal * (p - g.pos) - (vec3(i, j, k) - vec3(3, 2, 1)) * g.spacing;
+                    q.x = std::abs(q.x);
+                    const vec3 image = g.pos + glm::transpose(g.toLocal) * q;
+                    for (const SdfObject& o : sdf.objects) d = std::min(d, sdObject(o, image));
+                }
+        return d;
+    };
+    std::uint32_t seed = 12345;
+    auto next = [&] { return float((seed = seed * 1664525u + 1013904223u) >> 8) / 16777216.0f; };
+    for (int n = 0; n < 3000; ++n) {
+        const vec3 p = g.pos + (vec3(next(), next(), next()) - 0.5f) * vec3(4.0f, 3.5f, 3.0f);
+        ASSERT_NEAR(mapGroup(sdf, 0, p).d, everyCopy(p), 1e-6f)
+            << "at " << p.x << "," << p.y << "," << p.z;
+    }
+}
+
 TEST(SceneGroups, RoundAndShellKeepTheirFacesInPlace) {
     Scene s = parseOk(kHead +
                       "object type:box pos:0,0,0 size:1,1,1 round:0.2 static:1\n"
@@ -227,9 +263,10 @@ TEST(SceneGroups, EachVersion3ErrorWithItsLine) {
 
 // Version 2 files mean what they meant: a member-less scene has no groups and the same chain.
 TEST(SceneGroups, AVersion2FileHasNoGroupsAndItsObjectsKeepTheirMeaning) {
-    Scene s = parseOk("scene version:2\nmaterial r:1 g:1 b:1\n"
-                      "object type:box pos:0,1,0 mass:1\n"
-                      "object type:sphere pos:0,1,0 op:subtract static:1\n");
+    Scene s = parseOk(
+        "scene version:2\nmaterial r:1 g:1 b:1\n"
+        "object type:box pos:0,1,0 mass:1\n"
+        "object type:sphere pos:0,1,0 op:subtract static:1\n");
     EXPECT_TRUE(s.groups.empty());
     EXPECT_TRUE(s.objects[0].dynamic());
     EXPECT_EQ(s.objects[1].group, -1);

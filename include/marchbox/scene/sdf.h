@@ -120,9 +120,6 @@ struct SceneSdf {
 SceneSdf makeSceneSdf(const Scene& scene);
 // Sets every group's bounds from its members', the deepest groups first.
 void boundGroups(SceneSdf& sdf);
-// The point p of the world as group g's members see it in copy `copy` (0..repeat product - 1),
-// after its mirror; false where that copy's bound is at least `cull` from p.
-bool groupImage(const SdfGroup& g, glm::vec3 p, int copy, float cull, glm::vec3* image);
 int copyCount(const SdfGroup& g);
 // Moves every object and group by -origin (the static collider's local frames).
 void shiftSceneSdf(SceneSdf& sdf, glm::vec3 origin);
