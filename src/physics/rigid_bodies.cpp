@@ -33,6 +33,7 @@ dvec3 RigidBody::origin() const { return framed ? pos - shapeOrient() * centre :
 namespace {
 
 constexpr double kSweepTolerance = 1e-3;  // m/s: a sweep that changed no row more has converged
+constexpr double kTurnTolerance = 0.1;    // of an inverse inertia, moved by a turn (followTurns)
 constexpr int kNewtonSteps = 4;           // at most, projecting a point onto a bound's surface
 constexpr int kGroupManifold = 8;         // points a group's manifold keeps (reduceManifold)
 constexpr int kTraceSteps = 64;           // at most, along a ray to a bound's surface
@@ -56,6 +57,20 @@ dmat3 worldInverseInertia(const dquat& q, const dvec3& inertia) {
     const dmat3 r = glm::mat3_cast(q);
     return r * dmat3(1.0 / inertia.x, 0, 0, 0, 1.0 / inertia.y, 0, 0, 0, 1.0 / inertia.z) *
            glm::transpose(r);
+}
+
+// How far the inverse inertia the rows were made with is from the body's now, relative to the
+// body's own: the largest element of their difference in the principal frame, each scaled by
+// √(I_i·I_j), where the inverse inertia itself is the identity. Measured element by element in
+// the world, the rod's transverse rows could be 10⁴ times wrong under a tenth of its axial one.
+double turnError(const RigidBody& b) {
+    const dmat3 turn = glm::mat3_cast(b.orient);
+    const dmat3 moved = glm::transpose(turn) * (b.invInertia - b.rowInertia) * turn;
+    double most = 0.0;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
+            most = std::max(most, std::abs(moved[c][r]) * std::sqrt(b.inertia[c] * b.inertia[r]));
+    return most;
 }
 
 // The body's signed distance at world point p, and its gradient (tetrahedral differences in
@@ -242,6 +257,43 @@ RowBodies bodiesOf(const RigidContact& c) {
     return {c.a.vel, c.a.spin, c.b.vel, c.b.spin, c.a.invMass, c.b.invMass};
 }
 
+// 1 / K for an impulse λ·d at the contact, r × d being the arm and I⁻¹·(r × d) the turn on each
+// side: K = Σ 1/m + Σ arm·turn.
+double rowMass(const RowBodies& r, const dvec3& armA, const dvec3& turnA, const dvec3& armB,
+               const dvec3& turnB) {
+    double k = r.invMassA + r.invMassB;
+    if (r.invMassA > 0.0) k += glm::dot(armA, turnA);
+    if (r.invMassB > 0.0) k += glm::dot(armB, turnB);
+    return k > 0.0 ? 1.0 / k : 0.0;
+}
+
+// What a normal row's arms do through each side's inverse inertia (world): the turns and the
+// row's mass.
+void setTurns(NormalRow& r, const dmat3& invInertiaA, const dmat3& invInertiaB) {
+    r.turnA = invInertiaA * r.armA;
+    r.turnB = invInertiaB * r.armB;
+    r.mass = rowMass(r, r.armA, r.turnA, r.armB, r.turnB);
+}
+
+// ... and a manifold's friction and rolling rows', from their normal, tangents and arms.
+void setTurns(FrictionRows& r, const dmat3& invInertiaA, const dmat3& invInertiaB) {
+    double twist = 0.0;
+    if (r.invMassA > 0.0) twist += glm::dot(r.normal, invInertiaA * r.normal);
+    if (r.invMassB > 0.0) twist += glm::dot(r.normal, invInertiaB * r.normal);
+    r.twistMass = twist > 0.0 ? 1.0 / twist : 0.0;
+    for (int k = 0; k < 2; ++k) {
+        r.turnA[k] = invInertiaA * r.armA[k];
+        r.turnB[k] = invInertiaB * r.armB[k];
+        r.tangentMass[k] = rowMass(r, r.armA[k], r.turnA[k], r.armB[k], r.turnB[k]);
+        r.rollA[k] = r.invMassA > 0.0 ? invInertiaA * r.tangent[k] : dvec3(0.0);
+        r.rollB[k] = r.invMassB > 0.0 ? invInertiaB * r.tangent[k] : dvec3(0.0);
+        const double turn = glm::dot(r.tangent[k], r.rollA[k] + r.rollB[k]);
+        r.rollMass[k] = turn > 0.0 ? 1.0 / turn : 0.0;
+    }
+    r.twistA = invInertiaA * r.normal;
+    r.twistB = invInertiaB * r.normal;
+}
+
 NormalRow rowOf(const RigidContact& c, double slop) {
     NormalRow r;
     static_cast<RowBodies&>(r) = bodiesOf(c);
@@ -250,27 +302,10 @@ NormalRow rowOf(const RigidContact& c, double slop) {
     r.normal = c.normal;
     r.armA = glm::cross(c.a.anchor, c.normal);
     r.armB = glm::cross(c.b.anchor, c.normal);
-    r.turnA = c.a.invInertia * r.armA;
-    r.turnB = c.b.invInertia * r.armB;
-    // 1 / K along the normal, from the arms and turns just made (rowMass's sum, in its order).
-    double k = r.invMassA + r.invMassB;
-    if (r.invMassA > 0.0) k += glm::dot(r.armA, r.turnA);
-    if (r.invMassB > 0.0) k += glm::dot(r.armB, r.turnB);
-    r.mass = k > 0.0 ? 1.0 / k : 0.0;
+    setTurns(r, c.a.invInertia, c.b.invInertia);
     r.impulse = c.normalImpulse;
     r.slop = slop;
     return r;
-}
-
-// 1 / K for an impulse along unit d at the contact: K = Σ 1/m + (I⁻¹(r×d))×r·d.
-double rowMass(const RigidContact& c, const dvec3& d) {
-    double k = c.a.invMass + c.b.invMass;
-    for (const ContactSide* s : {&c.a, &c.b}) {
-        if (s->invMass == 0.0) continue;
-        const dvec3 rd = glm::cross(s->anchor, d);
-        k += glm::dot(rd, s->invInertia * rd);
-    }
-    return k > 0.0 ? 1.0 / k : 0.0;
 }
 
 // How far the anchor moved since the step's start: the body's displacement and its turn.
@@ -598,7 +633,8 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     massRatio_ = 1.0;
     pairCache_.nextStep();
     if (bodies_.empty()) return;  // a scene of spheres alone: nothing here to do
-    const int n = count(), m = int(spheres.size()) - 1;  // spheres end with the static body
+    for (RigidBody& b : bodies_) b.rowInertia = b.invInertia;  // as the contacts take it
+    const int n = count(), m = int(spheres.size()) - 1;        // spheres end with the static body
     centres_.resize(size_t(n + m));
     extents_.resize(size_t(n + m));
     margins_.resize(size_t(n));
@@ -1114,10 +1150,6 @@ void RigidBodies::prepareFriction(Manifold& m) {
     r.twistArm = 0.0;
     for (int i = m.begin; i < m.end; ++i)
         r.twistArm += glm::length(contacts_[size_t(i)].b.anchor - f.b.anchor) / count;
-    double k = 0.0;
-    for (const ContactSide* s : {&f.a, &f.b})
-        if (s->invMass > 0.0) k += glm::dot(f.normal, s->invInertia * f.normal);
-    r.twistMass = k > 0.0 ? 1.0 / k : 0.0;
     const WarmImpulses* warm = kept_.find(f.key);
     r.twistImpulse = warm ? warm->twist : 0.0;
     // The rolling radius: the centre's height over the contact plane. The distance to the
@@ -1126,20 +1158,12 @@ void RigidBodies::prepareFriction(Manifold& m) {
     r.rollLimit = rolling_ * std::abs(glm::dot(f.b.anchor, f.normal));
     for (int k = 0; k < 2; ++k) {
         r.tangent[k] = f.tangent[k];
-        r.tangentMass[k] = rowMass(f, f.tangent[k]);
         r.tangentImpulse[k] = warm ? warm->tangent[k] : 0.0;
         r.armA[k] = glm::cross(f.a.anchor, f.tangent[k]);
         r.armB[k] = glm::cross(f.b.anchor, f.tangent[k]);
-        r.turnA[k] = f.a.invInertia * r.armA[k];
-        r.turnB[k] = f.b.invInertia * r.armB[k];
-        r.rollA[k] = f.a.invMass > 0.0 ? f.a.invInertia * f.tangent[k] : dvec3(0.0);
-        r.rollB[k] = f.b.invMass > 0.0 ? f.b.invInertia * f.tangent[k] : dvec3(0.0);
-        const double turn = glm::dot(f.tangent[k], r.rollA[k] + r.rollB[k]);
-        r.rollMass[k] = turn > 0.0 ? 1.0 / turn : 0.0;
         r.rollImpulse[k] = warm ? warm->roll[k] : 0.0;
     }
-    r.twistA = f.a.invInertia * f.normal;
-    r.twistB = f.b.invInertia * f.normal;
+    setTurns(r, f.a.invInertia, f.b.invInertia);
 }
 
 //-----------------------------------------------------------------------------
@@ -1287,6 +1311,37 @@ void RigidBodies::integratePositions(double h, double gravity) {
         rotateFree(b.orient, b.spin, b.inertia, h);
         b.invInertia = worldInverseInertia(b.orient, b.inertia);
         b.supported = false;
+    }
+    followTurns();
+}
+
+// The rows see each body through the inverse inertia it had when they were made, at the
+// step's start. Where a body's inertia is far from round (a 3 m rod of 1 cm: 10⁴ between its
+// axes), a turn of a few degrees makes that wrong by more than itself, and the sweeps then add
+// energy rather than take it: such a rod hit by a box at 30 m/s reached 10²⁹ m/s within a
+// tenth of a second. A body whose inverse inertia has moved by a tenth since its rows were made
+// has them made again from it. A cube's or a ball's never moves: their rows stay as made.
+void RigidBodies::followTurns() {
+    bool any = false;
+    for (RigidBody& b : bodies_) {
+        b.turned = b.awake && turnError(b) > kTurnTolerance;
+        if (b.turned) b.rowInertia = b.invInertia;
+        any = any || b.turned;
+    }
+    if (!any) return;
+    auto turned = [](const ContactSide& s) {
+        return s.rigid && s.invMass > 0.0 && s.rigid->turned;
+    };
+    auto inertiaOf = [](const ContactSide& s) {
+        return s.rigid && s.invMass > 0.0 ? s.rigid->rowInertia : s.invInertia;
+    };
+    for (size_t i = 0; i < rows_.size(); ++i) {
+        const RigidContact& c = contacts_[i];
+        if (turned(c.a) || turned(c.b)) setTurns(rows_[i], inertiaOf(c.a), inertiaOf(c.b));
+    }
+    for (Manifold& m : manifolds_) {
+        const RigidContact& c = contacts_[size_t(m.begin)];
+        if (turned(c.a) || turned(c.b)) setTurns(m.rows, inertiaOf(c.a), inertiaOf(c.b));
     }
 }
 

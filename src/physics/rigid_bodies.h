@@ -51,6 +51,8 @@ struct RigidBody {
     double invMass = 0.0;
     glm::dvec3 inertia{0.0};     // principal moments about the local axes
     glm::dmat3 invInertia{0.0};  // world, for the orientation now
+    glm::dmat3 rowInertia{0.0};  // world, as this step's rows were made with (followTurns)
+    bool turned = false;         // rowInertia was made again this substep
     double bound = 0.0;          // radius about pos that holds the shape
     Surface surface;             // the body's own, or the world's
     double sleepTime = 0.0;
@@ -176,7 +178,7 @@ public:
     void integrateVelocities(double h, double gravity);
     void warmStart();
     void solve(const Softness& soft, double h, bool useBias);  // useBias false: the relax pass
-    void integratePositions(double h, double gravity);
+    void integratePositions(double h, double gravity);  // and the rows follow the turns
     void restitute(double threshold, double gravity);
     void finishStep();                   // keeps the impulses; sleep
     void writeBack(Scene& scene) const;  // pos, orient, vel, spin (objects' and groups')
@@ -186,6 +188,7 @@ public:
 
 private:
     using Candidate = PairCandidate;
+    void followTurns();
     void collideStatics(int i);
     void collidePair(int i, int j);
     void collideSphere(int i, PhysicsBody& sphere, int sphereIndex);

@@ -36,7 +36,7 @@ std::uint64_t rigidHash(const PhysicsWorld& w) {
 // bytes on one thread and on two, and a golden hash. A change in any arithmetic of the rigid
 // bodies' step changes it: update it deliberately, with the reason in the commit.
 TEST(RigidWorld, MixedPileIsDeterministic) {
-    const std::uint64_t golden = 0xd6a8f4880e27ac9eull;
+    const std::uint64_t golden = 0xaa197cc45e357971ull;
     PhysicsSettings one, two;
     two.threads = 2;
     const Scene scene = mixedPileScene(120, 3);
@@ -100,6 +100,31 @@ TEST(RigidWorld, PyramidSettlesAndSleeps) {
         w.step();
     EXPECT_EQ(w.stats().awake, 0) << "still awake after 10 s";
     EXPECT_LT(glm::length(w.rigid(w.rigidCount() - 1).pos - top), 0.02);
+}
+
+// A rod 3 m long and 1 cm thick (a cone, then a cylinder; 1 kg, 10⁴ times less inertia about
+// its axis than across it) lies at 45° on the ground when a 1 kg box lands on it at 30 m/s. The
+// world's defaults: μ = 0.3, e = 0.8. Contacts and bounces only take energy, so kinetic plus
+// m·g·y never rises above its start but by the free fall's rounding (measured 0.03 %); allowed
+// 1 %. Measured: 0.03 % and 0.02 %. Planted: the rows kept with the inverse inertia of the
+// step's start while the rod turns: the cone reached 10²⁹ m/s within 0.15 s and the cylinder
+// gained 1,600 times its energy; compared element by element in the world and not in the rod's
+// own metric, the refresh still let the cone gain 15 times.
+TEST(RigidWorld, AThinRodHitByABoxGainsNoEnergy) {
+    for (const char* rod : {"cone", "cylinder"}) {
+        PhysicsWorld w(sceneFromText(std::string("scene version:3\nobject type:") + rod +
+                                     " pos:0,1,0 radius:0.01 height:3 mass:1 rot:45,0,0\n"
+                                     "object type:box pos:0,3,0 size:0.5,0.5,0.5 vel:0,-30,0\n"));
+        const double start = w.kineticEnergy() + w.potentialEnergy();
+        double most = start;
+        for (int i = 0; i < stepsFor(2.0, w.settings()); ++i) {
+            w.step();
+            most = std::max(most, w.kineticEnergy() + w.potentialEnergy());
+        }
+        std::printf("%s rod: energy at most %+.3g %% of its start\n", rod,
+                    100.0 * (most / start - 1.0));
+        EXPECT_LT(most, 1.01 * start) << "the " << rod << " rod gained energy";
+    }
 }
 
 // A column of 30 unit boxes stands a minute awake. On soft contacts a column is a rod whose
