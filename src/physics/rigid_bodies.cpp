@@ -59,6 +59,25 @@ dmat3 worldInverseInertia(const dquat& q, const dvec3& inertia) {
            glm::transpose(r);
 }
 
+// Where a step's arithmetic overflowed for a body (a cone 10¹⁰ m tall and 10⁻¹⁰ m wide, pushed
+// out of the ground it stands 5·10⁹ m deep in), NaN would go on into every later step, into the
+// bodies it touches and into the scene saved, which would then not load; so would a value past
+// a float's range, which the scene stores (a box 10³⁰ m long, turning in the ground). Such a
+// body is put back where the step began, still; true where it was.
+bool holdIfOverflowed(RigidBody& b) {
+    auto inRange = [](auto v) {
+        for (int i = 0; i < v.length(); ++i)
+            if (!(std::abs(v[i]) <= std::numeric_limits<float>::max())) return false;
+        return true;
+    };
+    if (inRange(b.pos) && inRange(b.vel) && inRange(b.spin) && inRange(b.orient)) return false;
+    b.pos = b.startPos;
+    b.orient = b.startOrient;
+    b.vel = b.spin = dvec3(0.0);
+    b.invInertia = worldInverseInertia(b.orient, b.inertia);
+    return true;
+}
+
 // How far the inverse inertia the rows were made with is from the body's now, relative to the
 // body's own: the largest element of their difference in the principal frame, each scaled by
 // √(I_i·I_j), where the inverse inertia itself is the identity. Measured element by element in
@@ -633,8 +652,12 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     massRatio_ = 1.0;
     pairCache_.nextStep();
     if (bodies_.empty()) return;  // a scene of spheres alone: nothing here to do
-    for (RigidBody& b : bodies_) b.rowInertia = b.invInertia;  // as the contacts take it
-    const int n = count(), m = int(spheres.size()) - 1;        // spheres end with the static body
+    for (RigidBody& b : bodies_) {
+        b.rowInertia = b.invInertia;  // as the contacts take it
+        b.startPos = b.pos;
+        b.startOrient = b.orient;
+    }
+    const int n = count(), m = int(spheres.size()) - 1;  // spheres end with the static body
     centres_.resize(size_t(n + m));
     extents_.resize(size_t(n + m));
     margins_.resize(size_t(n));
@@ -1346,10 +1369,15 @@ void RigidBodies::followTurns() {
 }
 
 void RigidBodies::finishStep() {
+    bool held = false;
+    for (RigidBody& b : bodies_) held = holdIfOverflowed(b) || held;
     kept_.clear(contacts_.size() + manifolds_.size());
-    for (size_t i = 0; i < contacts_.size(); ++i)  // a point: its push; friction is the manifold's
+    // A held body's rows may hold NaN: no impulse of this step starts the next.
+    for (size_t i = 0; i < contacts_.size() && !held;
+         ++i)  // a point: its push; friction is the manifold's
         kept_.put(contacts_[i].key, {rows_[i].impulse, {0.0, 0.0}, 0.0, {0.0, 0.0}});
     for (const Manifold& m : manifolds_) {
+        if (held) break;
         const FrictionRows& r = m.rows;
         kept_.put(m.key, {0.0,
                           {r.tangentImpulse[0], r.tangentImpulse[1]},

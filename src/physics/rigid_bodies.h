@@ -48,6 +48,8 @@ struct RigidBody {
     glm::dvec3 pos{0.0}, vel{0.0}, spin{0.0};  // m, m/s, rad/s (world)
     glm::dquat orient{1.0, 0.0, 0.0, 0.0};     // body to world
     glm::dvec3 delta{0.0};                     // displacement during the current step
+    glm::dvec3 startPos{0.0};                  // where the step began, for holdIfOverflowed
+    glm::dquat startOrient{1.0, 0.0, 0.0, 0.0};
     double invMass = 0.0;
     glm::dvec3 inertia{0.0};     // principal moments about the local axes
     glm::dmat3 invInertia{0.0};  // world, for the orientation now

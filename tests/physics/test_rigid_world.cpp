@@ -189,6 +189,23 @@ TEST(RigidWorld, ThinFastBodiesInABinGainNoEnergy) {
     std::printf("40 bins: %d gained over 1 %%, the most %+.3g %%\n", gained, 100.0 * worst);
 }
 
+// A cone 10¹⁰ m tall and 10⁻¹⁰ m wide, as the contract allows, stands 5·10⁹ m deep in the
+// ground: pushing it out overflows, and NaN would reach the box beside it through the warm
+// starts and the scene saved, which would not load again. The cone is held where it stands,
+// still, and the box falls and lands as it would alone. Planted: no hold: the cone's pose is
+// NaN after the first step.
+TEST(RigidWorld, ABodyWhoseStepOverflowsIsHeldWhereItWas) {
+    PhysicsWorld w(
+        sceneFromText("scene version:3\nworld restitution:0\n"
+                      "object type:cone pos:0,1,0 radius:1e-10 height:1e10 mass:1\n"
+                      "object type:box pos:3,2,0 size:0.5,0.5,0.5 mass:1\n"));
+    for (int i = 0; i < stepsFor(2.0, w.settings()); ++i) w.step();
+    const RigidState cone = w.rigid(0), box = w.rigid(1);
+    EXPECT_EQ(cone.pos, dvec3(0, 1, 0)) << "the cone moved, or is not finite";
+    EXPECT_EQ(cone.vel, dvec3(0.0));
+    EXPECT_NEAR(box.pos.y, 0.5, 0.01) << "the box did not land on the ground";
+}
+
 // A column of 30 unit boxes stands a minute awake. On soft contacts a column is a rod whose
 // joints bend, and under its own weight it buckles once g·D³ outgrows the contacts' stiffness
 // ω²: the step takes more substeps for a deeper stack. Its top sinks by the slop and the soft
