@@ -214,8 +214,7 @@ TEST(Groups, TheShaderReadsAsTheTree) {
     EXPECT_EQ(map.find("sdObjectLocal("), std::string::npos);
     for (const char* line : {
              "    // group 0: cup\n"
-             "    for (bool near = length(p - g0.posBound.xyz) - g0.posBound.w < res.x; near; "
-             "near = false) {\n"
+             "    if (length(p - g0.posBound.xyz) - g0.posBound.w < res.x) {\n"
              "        vec2 r0 = vec2(1e10, HIT_NONE);\n",
              "        r0 = joinSubtract(r0, sdCylinder(o1.toLocal * (p - o1.posBound.xyz), "
              "o1.shape.y, o1.shape.x), 0.0, 1.0);  // 1: cylinder, subtract, turned\n"
