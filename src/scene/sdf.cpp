@@ -270,6 +270,9 @@ float objectReach(const SdfObject& o) { return o.bound + o.blend; }
 
 int copyCount(const SdfGroup& g) { return g.repeat.x * g.repeat.y * g.repeat.z; }
 
+// The copy at the group's origin, in copy indices along each axis: (n − 1) / 2.
+static vec3 middleCopy(const SdfGroup& g) { return 0.5f * (vec3(g.repeat) - 1.0f); }
+
 // Only union members add to a group's shape (subtract and intersect remove, a smooth union adds
 // under its radius); a mirror reflects about planes through the group's origin, which keeps
 // every distance from it; the copies spread the shape by the farthest copy's offset.
@@ -282,7 +285,7 @@ void boundGroups(SceneSdf& sdf) {
         }
     for (size_t i = sdf.groups.size(); i-- > 0;) {  // children come after their parents
         SdfGroup& g = sdf.groups[i];
-        const vec3 spread = 0.5f * (vec3(g.repeat) - 1.0f) * g.spacing;
+        const vec3 spread = middleCopy(g) * g.spacing;
         g.bound = g.copyBound + glm::length(spread);
         if (g.parent >= 0 && g.op == CsgOp::Union && g.last > g.first) {
             SdfGroup& parent = sdf.groups[size_t(g.parent)];
@@ -317,13 +320,13 @@ namespace {
 
 // Where q (in the group's frame) falls along each axis of the copies, in copy indices, neither
 // rounded nor clamped.
-vec3 copyCoord(const SdfGroup& g, vec3 q) { return q / g.spacing + 0.5f * (vec3(g.repeat) - 1.0f); }
+vec3 copyCoord(const SdfGroup& g, vec3 q) { return q / g.spacing + middleCopy(g); }
 
 // Copy (i, j, k) sits at ((i − (n−1)/2)·s, ...) in the group's frame; the mirror folds the point
 // onto the positive side of each mirrored plane before the copy's members see it. False where
 // the copy's bounding sphere is at least `cull` from q.
 bool groupImage(const SdfGroup& g, vec3 q, glm::ivec3 index, float cull, vec3* image) {
-    q -= (vec3(index) - 0.5f * (vec3(g.repeat) - 1.0f)) * g.spacing;
+    q -= (vec3(index) - middleCopy(g)) * g.spacing;
     if (glm::length(q) - g.copyBound >= cull) return false;
     for (int a = 0; a < 3; ++a)
         if (g.mirror[a]) q[a] = std::abs(q[a]);
