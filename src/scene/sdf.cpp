@@ -225,9 +225,14 @@ SdfObject inset(SdfObject o, float r, float* lift) {
 }  // namespace
 
 float sdObjectLocal(const SdfObject& o, vec3 q) {
-    float lift = 0.0f;
-    float d = o.round > 0.0f ? sdSolid(inset(o, o.round, &lift), q - vec3(0, lift, 0)) - o.round
-                             : sdSolid(o, q);
+    float d;
+    if (o.round > 0.0f) {
+        float lift = 0.0f;  // set by inset, which must run before q is moved by it
+        const SdfObject core = inset(o, o.round, &lift);
+        d = sdSolid(core, q - vec3(0, lift, 0)) - o.round;
+    } else {
+        d = sdSolid(o, q);
+    }
     // A shell keeps what lies within t inside the surface: max(d, −(d + t)).
     return o.shell > 0.0f ? std::abs(d + 0.5f * o.shell) - 0.5f * o.shell : d;
 }

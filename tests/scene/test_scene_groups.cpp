@@ -214,7 +214,8 @@ TEST(SceneGroups, RoundAndShellKeepTheirFacesInPlace) {
     Scene s = parseOk(kHead +
                       "object type:box pos:0,0,0 size:1,1,1 round:0.2 static:1\n"
                       "object type:sphere pos:5,0,0 radius:1 shell:0.1 static:1\n"
-                      "object type:cone pos:0,0,5 radius:1 top:0.5 height:2 static:1\n");
+                      "object type:cone pos:0,0,5 radius:1 top:0.5 height:2 static:1\n"
+                      "object type:cone pos:5,0,5 radius:0.5 height:1 round:0.1 static:1\n");
     SceneSdf sdf = makeSceneSdf(s);
     EXPECT_NEAR(mapObjects(sdf, vec3(1.5f, 0, 0)).d, 0.5f, 1e-6f) << "a face stays at x = 1";
     const float corner = glm::length(vec3(0.8f)) + 0.2f;  // the rounded corner's reach
@@ -223,6 +224,14 @@ TEST(SceneGroups, RoundAndShellKeepTheirFacesInPlace) {
     EXPECT_NEAR(mapObjects(sdf, vec3(5.95f, 0, 0)).d, -0.05f, 1e-6f) << "mid-wall";
     EXPECT_NEAR(mapObjects(sdf, vec3(0, 2, 5)).d, 1.0f, 1e-6f) << "above the top";
     EXPECT_NEAR(mapObjects(sdf, vec3(0.75f, 0, 5)).d, 0.0f, 1e-6f) << "the slant at mid-height";
+    // A pointed cone rounded by 0.1: its faces moved in by 0.1 give radii r₁ at the bottom and
+    // r₂ < 0 at the top, so the inset cone ends at its apex, 0.8·r₁/(r₁ − r₂) above its base at
+    // −0.4, and the rounded tip lies 0.1 above that. The base stays at −0.5.
+    const float slope = 0.5f, side = 0.1f * std::sqrt(1.0f + slope * slope);
+    const float r1 = 0.5f - slope * 0.1f - side, r2 = slope * 0.1f - side;
+    const float tip = -0.4f + 0.8f * r1 / (r1 - r2) + 0.1f;
+    EXPECT_NEAR(mapObjects(sdf, vec3(5, -0.6f, 5)).d, 0.1f, 1e-6f) << "the rounded cone's base";
+    EXPECT_NEAR(mapObjects(sdf, vec3(5, 0.5f, 5)).d, 0.5f - tip, 1e-6f) << "its rounded tip";
 }
 
 TEST(SceneGroups, EachVersion3ErrorWithItsLine) {
