@@ -23,6 +23,7 @@
 #include <limits>
 #include <map>
 #include <regex>
+#include <type_traits>
 #include <vector>
 
 namespace mb {
@@ -95,7 +96,8 @@ Expect readValue(std::string_view s, float& v) { return readNumber(s, v); }
 // Read as double so a fraction too small for a float (4096.0001) is still seen.
 Expect readValue(std::string_view s, int& v) {
     double d = 0;
-    if (readNumber(s, d) || d != std::floor(d) || std::fabs(d) > INT_MAX) return "a whole number";
+    if (readNumber(s, d) || d != std::floor(d)) return "a whole number";
+    if (std::fabs(d) > INT_MAX) return "a whole number within ±2147483647";
     v = int(d);
     return nullptr;
 }
@@ -531,7 +533,12 @@ template <class T>
 void Parser::readKey(const char* key, std::string_view text, T& v, const Rule& rule) {
     if (Expect e = readValue(text, v))
         return error(quote(key) + " must be " + e + ", got " + quote(text));
-    if (!obeys(v, rule)) error(quote(key) + " must be " + describe(rule));
+    if (obeys(v, rule)) return;
+    // A positive number too small for a float reads as zero: say so, or "> 0" makes no sense.
+    const bool underflowed = std::is_same_v<T, float> && v == T{} &&
+                             text.find_first_of("123456789") < text.find_first_of("eE");
+    error(quote(key) + " must be " + describe(rule) +
+          (underflowed ? ", and " + quote(text) + " is too small for a float: it reads as 0" : ""));
 }
 
 // A body's turn is its exact orient (a save writes it), and rot then only shows it in degrees,

@@ -281,7 +281,11 @@ TEST(SceneErrors, EachKindWithItsLine) {
          "'type' must be sphere, box, torus, capsule, cylinder, cone, ellipsoid or 0 to 6, got "
          "'7'"},
         {obj + " op:xor", 2, "'op' must be union, subtract or intersect, got 'xor'"},
-        {obj + " material:1e12", 2, "'material' must be a whole number, got '1e12'"},
+        {obj + " material:1e12", 2,
+         "'material' must be a whole number within ±2147483647, got '1e12'"},
+        {obj + " material:2.5", 2, "'material' must be a whole number, got '2.5'"},
+        {obj + " radius:1e-50", 2,
+         "'radius' must be > 0, and '1e-50' is too small for a float: it reads as 0"},
         {"object type:0 pos:0,0,0\n" + std::string(kMat) + "\nobject type:0 pos:0,0,0 material:3",
          3, "material 3 does not exist"},
         {"object type:0 pos:0,0,0", 1, "material 0 does not exist"},
