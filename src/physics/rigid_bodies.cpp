@@ -707,8 +707,13 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     measureStacks(int(spheres.size()));
     rows_.clear();
     gaps_.clear();
+    rowRigids_.clear();
+    const auto moving = [this](const ContactSide& s) {
+        return s.rigid && s.invMass > 0.0 ? int(s.rigid - bodies_.data()) : -1;
+    };
     for (const RigidContact& c : contacts_) {
         gaps_.push_back({c.normal, c.separation, c.a, c.b});
+        rowRigids_.push_back({moving(c.a), moving(c.b)});
         const NormalRow& r = rows_.emplace_back(rowOf(c, 0.1 * settings_.linearSlop));
         if (r.invMassA > 0.0 && r.invMassB > 0.0)  // a static or sleeping side is not pressed in
             massRatio_ = std::max({massRatio_, r.invMassA / r.invMassB, r.invMassB / r.invMassA});
@@ -1352,19 +1357,22 @@ void RigidBodies::followTurns() {
         any = any || b.turned;
     }
     if (!any) return;
-    auto turned = [](const ContactSide& s) {
-        return s.rigid && s.invMass > 0.0 && s.rigid->turned;
+    auto turned = [this](size_t row) {
+        const auto [a, b] = rowRigids_[row];
+        return (a >= 0 && bodies_[size_t(a)].turned) || (b >= 0 && bodies_[size_t(b)].turned);
     };
     auto inertiaOf = [](const ContactSide& s) {
         return s.rigid && s.invMass > 0.0 ? s.rigid->rowInertia : s.invInertia;
     };
     for (size_t i = 0; i < rows_.size(); ++i) {
+        if (!turned(i)) continue;
         const RigidContact& c = contacts_[i];
-        if (turned(c.a) || turned(c.b)) setTurns(rows_[i], inertiaOf(c.a), inertiaOf(c.b));
+        setTurns(rows_[i], inertiaOf(c.a), inertiaOf(c.b));
     }
     for (Manifold& m : manifolds_) {
+        if (!turned(size_t(m.begin))) continue;
         const RigidContact& c = contacts_[size_t(m.begin)];
-        if (turned(c.a) || turned(c.b)) setTurns(m.rows, inertiaOf(c.a), inertiaOf(c.b));
+        setTurns(m.rows, inertiaOf(c.a), inertiaOf(c.b));
     }
 }
 

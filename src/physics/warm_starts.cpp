@@ -7,7 +7,9 @@ void WarmStarts::clear(size_t count) {
     size_t size = 16;
     while (size < 2 * count) size *= 2;
     keys_.assign(size, 0);
-    impulses_.resize(size);
+    places_.resize(size);
+    impulses_.clear();
+    impulses_.reserve(count);
     mask_ = size - 1;
 }
 
@@ -20,13 +22,14 @@ void WarmStarts::put(std::uint64_t key, const WarmImpulses& impulses) {
     size_t slot = slotOf(key);
     while (keys_[slot] != 0) slot = (slot + 1) & mask_;
     keys_[slot] = key;
-    impulses_[slot] = impulses;
+    places_[slot] = std::uint32_t(impulses_.size());
+    impulses_.push_back(impulses);
 }
 
 const WarmImpulses* WarmStarts::find(std::uint64_t key) const {
     if (keys_.empty()) return nullptr;
     for (size_t slot = slotOf(key); keys_[slot] != 0; slot = (slot + 1) & mask_)
-        if (keys_[slot] == key) return &impulses_[slot];
+        if (keys_[slot] == key) return &impulses_[places_[slot]];
     return nullptr;
 }
 

@@ -1,9 +1,12 @@
 // warm_starts.h — last step's impulses of the rigid contacts, found by the contact's key.
 //
 // Each step's contacts start from the impulses their keys held a step before. A pile of 4000
-// bodies has some 14,000 contacts and 5,000 manifolds looked up in height order, which is
+// bodies has some 20,000 contacts and their manifolds looked up in height order, which is
 // random order for keys: a binary search over a sorted list missed the cache at every level.
-// This is an open-addressing table (linear probing, at most half full), rebuilt each step.
+// The keys sit in an open-addressing table (linear probing, at most half full), rebuilt each
+// step; each slot holds its impulses' place in a list kept in the order they were put, last
+// step's height order. A lookup reads the table at random, but lands in the list near the
+// last one: bodies keep their heights from one step to the next.
 #pragma once
 
 #include <cstdint>
@@ -25,8 +28,9 @@ public:
 
 private:
     size_t slotOf(std::uint64_t key) const;
-    std::vector<std::uint64_t> keys_;  // 0: an empty slot
-    std::vector<WarmImpulses> impulses_;
+    std::vector<std::uint64_t> keys_;     // 0: an empty slot
+    std::vector<std::uint32_t> places_;   // the slot's key's place in impulses_
+    std::vector<WarmImpulses> impulses_;  // in the order they were put
     size_t mask_ = 0;
 };
 
