@@ -16,6 +16,7 @@
 #include <map>
 #include <span>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace mb {
@@ -624,6 +625,12 @@ RigidBodies::RigidBodies(const Scene& scene, const PhysicsSettings& settings)
     for (RigidBody& b : bodies_) {
         b.staticIds = ids;
         ids += int(b.probes.size() + 2 * b.rims.size()) + 3;  // + an ellipsoid's two, the body
+        auto keep = [&](const auto& r) {
+            loaded_.push_back(
+                {r.pos, r.rot, r.vel, r.spin, r.orient, b.pos, b.vel, b.spin, b.orient});
+        };
+        if (b.group >= 0) keep(scene.groups[size_t(b.group)]);
+        else keep(scene.objects[size_t(b.object)]);
     }
 }
 
@@ -1430,18 +1437,25 @@ void RigidBodies::updateSleep() {
 
 // The scene keeps the shape's own origin and turn; vel is the centre of mass's, as the body's.
 void RigidBodies::writeBack(Scene& scene) const {
-    auto write = [](const RigidBody& b, auto& record) {
+    auto write = [](const RigidBody& b, const Loaded& l, auto& record) {
+        if (b.pos == l.statePos && b.orient == l.stateOrient && b.vel == l.stateVel &&
+            b.spin == l.stateSpin) {
+            std::tie(record.pos, record.rot, record.vel, record.spin, record.orient) =
+                std::tie(l.pos, l.rot, l.vel, l.spin, l.orient);
+            return;
+        }
         record.pos = glm::vec3(b.origin());
         record.vel = glm::vec3(b.vel);
         record.spin = glm::vec3(b.spin);
         record.orient = glm::quat(b.shapeOrient());
         record.rot = anglesShowing(*record.orient, record.rot);  // shown in Edit
     };
-    for (const RigidBody& b : bodies_) {
+    for (size_t i = 0; i < bodies_.size(); ++i) {
+        const RigidBody& b = bodies_[i];
         if (b.group >= 0) {
-            write(b, scene.groups[size_t(b.group)]);
+            write(b, loaded_[i], scene.groups[size_t(b.group)]);
         } else {
-            write(b, scene.objects[size_t(b.object)]);
+            write(b, loaded_[i], scene.objects[size_t(b.object)]);
         }
     }
 }

@@ -40,6 +40,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -252,7 +253,17 @@ private:
     NearParts nearParts_;  // the parts of the pair being probed that come near each other
     PairCache pairCache_;  // points of pairs that have barely moved, not found again
     WarmStarts kept_;      // last step's impulses, to start this step's rows from
-    struct Place {         // a contact's sort key and where it is
+    // Each body's record as the scene gave it, and the state made from it. A body still in
+    // that state is written back as it was read: a float turn made a double, normalised and
+    // made a float again can come back an ulp apart, and each save would walk it further.
+    struct Loaded {
+        glm::vec3 pos, rot, vel, spin;
+        std::optional<glm::quat> orient;
+        glm::dvec3 statePos, stateVel, stateSpin;
+        glm::dquat stateOrient;
+    };
+    std::vector<Loaded> loaded_;
+    struct Place {  // a contact's sort key and where it is
         double height;
         std::uint64_t key;
         size_t index;
