@@ -243,6 +243,7 @@ private:
     struct Manifold {
         int begin, end;     // in contacts_
         std::uint64_t key;  // its friction's, for warm starting
+        bool impact;        // a point came in faster than kImpactSpeed: swept until it settles
         FrictionRows rows;  // the points' friction and rolling, at their centre
     };
     void prepareFriction(Manifold& m);
