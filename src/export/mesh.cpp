@@ -12,7 +12,9 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
+#include <functional>
 #include <memory>
+#include <unordered_map>
 #include <unistd.h>
 
 namespace mb {
@@ -243,6 +245,31 @@ void pullNearSurface(const SceneSdf& sdf, double voxel, TriangleMesh* m) {
     });
 }
 
+// volumeToMesh can give two vertices one position (16 triangles of a torus of 0.1 m tube at
+// S = 5 mm spanned such a pair). Tools that join an STL's vertices by position then find those
+// triangles flat and their edges shared three ways. Each such pair becomes one vertex, and the
+// triangles it collapses are dropped: the surface about them closes, as it does by position.
+void weldCoincidentPoints(TriangleMesh* m) {
+    struct Hash {
+        size_t operator()(const glm::vec3& p) const {
+            const std::hash<float> h;
+            return h(p.x) ^ (h(p.y) * 0x9e3779b97f4a7c15ull) ^ (h(p.z) * 0xc2b2ae3d27d4eb4full);
+        }
+    };
+    std::unordered_map<glm::vec3, unsigned, Hash> placed;
+    std::vector<glm::vec3> points;
+    std::vector<unsigned> to(m->points.size());
+    for (size_t i = 0; i < m->points.size(); ++i) {
+        const auto [at, fresh] = placed.emplace(m->points[i], unsigned(points.size()));
+        if (fresh) points.push_back(m->points[i]);
+        to[i] = at->second;
+    }
+    m->points = std::move(points);
+    for (glm::uvec3& t : m->triangles) t = glm::uvec3(to[t.x], to[t.y], to[t.z]);
+    std::erase_if(m->triangles,
+                  [](const glm::uvec3& t) { return t.x == t.y || t.y == t.z || t.z == t.x; });
+}
+
 }  // namespace
 
 MeshStatus meshSdf(const SceneSdf& sdf, const MeshSettings& settings, TriangleMesh* out,
@@ -314,6 +341,7 @@ MeshStatus meshSdf(const SceneSdf& sdf, const MeshSettings& settings, TriangleMe
     grid.reset();
     collectTriangles(points, tris, quads, out);
     pullNearSurface(sdf, voxel, out);
+    weldCoincidentPoints(out);
     return MeshStatus::Ok;
 }
 

@@ -13,6 +13,8 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <map>
+#include <set>
+#include <tuple>
 #include <utility>
 
 using namespace mb;
@@ -249,6 +251,21 @@ TEST(Mesh, TorusHasOneHandleAndHoldsItsVolume) {
     EXPECT_LE(largestVertexError(m, [&](vec3 p) { return sdObject(solid, p); }), voxel / 2);
     const double exact = 2.0 * kPi * kPi * 0.8 * 0.25 * 0.25;
     EXPECT_NEAR(meshVolume(m), exact, 0.01 * exact);
+}
+
+// A torus of a 0.1 m tube at S = 5 mm, where volumeToMesh gave 8 pairs of vertices one position
+// each: no two vertices share a position, so a tool that joins an STL's vertices by position
+// sees the same closed surface. Planted: the pairs left apart (16 triangles flat by position,
+// and their edges shared three ways).
+TEST(Mesh, NoTwoVerticesShareAPosition) {
+    Object ring = shape(ShapeType::Torus, vec3(0.0f));
+    ring.radius = 0.5f;
+    ring.minor = 0.1f;
+    const TriangleMesh m = meshOf(sceneOf({ring}), 0.005);
+    EXPECT_TRUE(closedAndOriented(m));
+    std::set<std::tuple<float, float, float>> places;
+    for (const vec3& p : m.points) places.insert({p.x, p.y, p.z});
+    EXPECT_EQ(places.size(), m.points.size()) << "vertices at one position";
 }
 
 TEST(Mesh, HoledBoxHasOneHandleAndHoldsItsVolume) {
