@@ -35,6 +35,7 @@ namespace {
 
 constexpr double kImpactSpeed = 3.0;      // m/s: a point coming in faster makes an impact (solve)
 constexpr int kImpactSweeps = 4;          // times the relax pass's sweeps, at most, for an impact
+constexpr double kOwnSurface = 1e-4;      // of a body's bound: a point this near lies on it
 constexpr double kSweepTolerance = 1e-3;  // m/s: a sweep that changed no row more has converged
 constexpr double kTurnTolerance = 0.1;    // of an inverse inertia, moved by a turn (followTurns)
 constexpr int kNewtonSteps = 4;           // at most, projecting a point onto a bound's surface
@@ -113,6 +114,12 @@ double shapeDistance(const RigidBody& b, const glm::vec3& l) {
 }
 
 double distanceTo(const RigidBody& b, const dvec3& p) { return shapeDistance(b, localPoint(b, p)); }
+
+// Whether world point p lies on the body's own surface (or in it), not carved away: where a
+// partial probe's sphere meets another surface (Probe::partial).
+bool onOwnSurface(const RigidBody& b, const dvec3& p) {
+    return distanceTo(b, p) <= kOwnSurface * b.bound;
+}
 
 // 4h·∇f in the shape's frame (tetra_gradient.h), unnormalised.
 dvec3 gradientAt(const RigidBody& b, const dvec3& p, double* step) {
@@ -604,7 +611,7 @@ bool groupBody(const Scene& scene, int g, std::map<std::string, GroupFound>& fou
     if (b.exact) b.bound = std::min(b.bound, glm::length(b.hull.centre) + glm::length(b.hull.half));
     const dquat toBody = glm::conjugate(b.axes);
     for (const Probe& p : it->second.probes.probes)
-        b.probes.push_back({toBody * (p.local - b.centre), p.radius, p.part});
+        b.probes.push_back({toBody * (p.local - b.centre), p.radius, p.part, p.partial});
     for (const Rim& r : it->second.probes.rims)
         b.rims.push_back(
             {toBody * (r.centre - b.centre), r.radius, toBody * r.axis, r.tube, r.part});
@@ -828,9 +835,12 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
             {point, hit.normal, hit.separation, probe, point, centre});
     };
     for (size_t k = 0; k < b.probes.size(); ++k) {
-        const dvec3 c = b.pos + b.orient * b.probes[k].local;
-        statics_.query(b.staticIds + int(k), c, b.probes[k].radius, reach, hits_, b.bound);
-        for (const StaticHit& hit : hits_) add(hit, c, b.probes[k].radius, int(k), c);
+        const Probe& p = b.probes[k];
+        const dvec3 c = b.pos + b.orient * p.local;
+        statics_.query(b.staticIds + int(k), c, p.radius, reach, hits_, b.bound);
+        for (const StaticHit& hit : hits_)
+            if (!p.partial || onOwnSurface(b, c - p.radius * hit.normal))
+                add(hit, c, p.radius, int(k), c);
     }
     for (size_t r = 0; r < b.rims.size(); ++r) {
         const Rim& rim = b.rims[r];
@@ -933,7 +943,7 @@ void RigidBodies::probeShape(int proberIndex, int shapeIndex, bool flip, int off
         const Probe& p = prober.probes[k];
         if (q.partwise && nearOf(p.part).empty()) continue;
         const dvec3 c = prober.pos + prober.orient * p.local;
-        probePoint(q, c, p.radius, int(k), c, nearOf(p.part));
+        probePoint(q, c, p.radius, int(k), c, nearOf(p.part), p.partial);
     }
     for (size_t r = 0; r < prober.rims.size(); ++r)
         if (!q.partwise || !nearOf(prober.rims[r].part).empty())
@@ -954,7 +964,7 @@ void RigidBodies::probeShape(int proberIndex, int shapeIndex, bool flip, int off
 // part, else its bounding sphere, its parts' boxes, its distance, and only then the four more
 // samples of its normal (or, on a bound, the projection onto its surface).
 void RigidBodies::probePoint(const Probing& q, const dvec3& at, double radius, int key,
-                             const dvec3& centre, std::span<const int> near) {
+                             const dvec3& centre, std::span<const int> near, bool partial) {
     const RigidBody& shape = q.shape;
     ShapeSample sample;
     if (q.partwise) {
@@ -971,6 +981,7 @@ void RigidBodies::probePoint(const Probing& q, const dvec3& at, double radius, i
     }
     const double separation = sample.distance - radius;
     if (separation >= q.reach) return;
+    if (partial && !onOwnSurface(q.prober, at - radius * sample.normal)) return;
     const dvec3 point = at - (radius + 0.5 * separation) * sample.normal;
     candidates_.push_back({point, q.flip ? -sample.normal : sample.normal, separation,
                            q.offset + key, q.flip ? centre : point, q.flip ? point : centre});

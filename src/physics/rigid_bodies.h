@@ -209,7 +209,7 @@ private:
         bool partwise;  // part by part, against nearParts_
     };
     void probePoint(const Probing& q, const glm::dvec3& at, double radius, int key,
-                    const glm::dvec3& centre, std::span<const int> near);
+                    const glm::dvec3& centre, std::span<const int> near, bool partial = false);
     void probeRim(const Probing& q, int r, std::span<const int> near);
     bool collideAnalytic(const RigidBody& a, const RigidBody& b);
     void dropUnreachable(const RigidBody& a, const RigidBody& b);

@@ -25,6 +25,9 @@ struct Probe {
     glm::dvec3 local;  // centre, in the body's frame
     double radius;     // of the sphere about it that the shape holds
     int part = 0;      // the body's part it lies on (RigidBody::parts; a group's member)
+    // The shape holds the sphere only in part (a group's member carved or hollowed): a contact
+    // counts only where its point on the sphere lies on the shape's surface.
+    bool partial = false;
 };
 
 // In the shape's own frame (sdObjectLocal's).
