@@ -120,6 +120,7 @@ static bool applyValue(const std::string& opt, const std::string& v, Args* a, st
 bool parseArgs(int argc, char** argv, int first, Args* out, std::string* error) {
     for (int i = first; i < argc; ++i) {
         std::string arg = argv[i];
+        if (arg.size() > 1 && arg[0] == '-') out->given.push_back(arg);
         if (arg == "--uber") {
             out->uber = true;
         } else if (arg == "--skip-existing") {
@@ -140,6 +141,20 @@ bool parseArgs(int argc, char** argv, int first, Args* out, std::string* error) 
         }
     }
     return true;
+}
+
+std::string optionNotIn(const Args& a, std::string_view allowed) {
+    for (const std::string& option : a.given) {
+        bool found = false;
+        for (size_t at = allowed.find(option); at != std::string_view::npos && !found;
+             at = allowed.find(option, at + 1)) {
+            const size_t end = at + option.size();
+            found = (at == 0 || allowed[at - 1] == ' ') &&
+                    (end == allowed.size() || allowed[end] == ' ');
+        }
+        if (!found) return option;
+    }
+    return "";
 }
 
 }  // namespace mb

@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace mb {
@@ -30,11 +31,16 @@ struct Args {
     std::string post = "none";             // --post none|fxaa|fxaa-edges|fxaa-direction
     std::string backend = "osmesa";        // --backend osmesa|egl
     std::string quality = "normal";        // --quality draft|normal|final
+    std::vector<std::string> given;        // the options on the command line, in order
 };
 
 // Parses argv[first..argc). Returns false with *error set on an unknown option, a missing or
 // malformed value, or a value out of range.
 bool parseArgs(int argc, char** argv, int first, Args* out, std::string* error);
+
+// The first of a.given that `allowed` (options separated by spaces) does not hold; empty where
+// every option belongs. Each command takes its own (docs/cli.md's Options).
+std::string optionNotIn(const Args& a, std::string_view allowed);
 
 // An argument quoted for an error message: control characters shown as '?' so the message
 // stays one line, and cut at 60 bytes so a pasted file does not fill the terminal.

@@ -51,11 +51,18 @@ int main(int argc, char** argv) {
     struct Command {
         const char* name;
         int (*run)(const Args&);
+        const char* options;  // the options it takes (docs/cli.md's Options)
     };
-    static const Command commands[] = {{"render", runRender}, {"simulate", runSimulate},
-                                       {"check", runCheck},   {"shader", runShader},
-                                       {"bench", runBench},   {"report", runReport},
-                                       {"export", runExport}};
+    static const Command commands[] = {
+        {"render", runRender,
+         "-o --size --seconds --frames --fps --skip-existing --uber --mode --quality --post "
+         "--backend --threads"},
+        {"simulate", runSimulate, "-o --seconds --threads"},
+        {"check", runCheck, ""},
+        {"shader", runShader, "--uber"},
+        {"bench", runBench, "--size --frames --uber --mode --quality --post --backend"},
+        {"report", runReport, "--backend"},
+        {"export", runExport, "-o --seconds --frames --fps --voxel --threads"}};
     const Command* command = nullptr;
     for (const Command& c : commands)
         if (argc > 1 && !std::strcmp(argv[1], c.name)) command = &c;
@@ -68,6 +75,13 @@ int main(int argc, char** argv) {
     std::string error;
     if (!parseArgs(argc, argv, command ? 2 : 1, &args, &error)) {
         std::cerr << "marchbox: " << error << " (see marchbox --help)\n";
+        return kExitUsage;
+    }
+    // An option the command does not take would be ignored: say so, as for an unknown one.
+    if (const std::string stray = optionNotIn(args, command ? command->options : "");
+        !stray.empty()) {
+        std::cerr << "marchbox: " << (command ? command->name : "the editor") << " takes no option "
+                  << quoteArg(stray) << " (see marchbox --help)\n";
         return kExitUsage;
     }
     return command ? command->run(args) : runEditor(args);

@@ -52,6 +52,12 @@ args_cases() {
   done
   expect 2 "$mb" render "$scene" -o "$tmp/x.png" --quality
   for opt in --seconds --size -o --frames --mode; do expect 2 "$mb" simulate "$scene" "$opt"; done
+  # An option another command takes is refused, not ignored.
+  expect_says "simulate takes no option '--size'" 2 "$mb" simulate "$scene" --seconds 1 --size 10x10
+  expect_says "render takes no option '--voxel'" 2 "${r[@]}" --voxel 1
+  expect_says "check takes no option '--seconds'" 2 "$mb" check "$scene" --seconds 1
+  expect_says "export takes no option '--mode'" 2 "$mb" export "$scene" -o "$tmp/x.stl" --mode id
+  expect_says "the editor takes no option '-o'" 2 "$mb" -o "$tmp/x.png"
   expect_says "unknown command 'foo'" 2 "$mb" foo
   expect_says "unknown command 'rendr'" 2 "$mb" rendr "$scene"
   expect 2 "$mb" "$(printf 'a%.0s' {1..5000})"         # too long for a file name
