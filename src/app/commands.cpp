@@ -1,5 +1,6 @@
 // commands.cpp — render, simulate, check, shader and bench: load, act, report in one line.
 #include "commands.h"
+#include "frame_output.h"
 #include "interrupt.h"
 
 #include "marchbox/export/export.h"
@@ -153,6 +154,11 @@ int runRender(const Args& a) {
     std::string error;
     if (!loadOrReport(a.positional[0], &scene) || !reported(checkSavePng(a.output, &error), error))
         return kExitBadInput;
+    if (!hasExtension(a.output, ".png")) {  // PNG bytes in an .mp4 or .stl would pass for one
+        std::cerr << "render writes one frame as a PNG: -o must end in .png"
+                  << (isVideo(a.output) ? " (a video takes --frames A-B)" : "") << '\n';
+        return kExitUsage;
+    }
     const double seconds = a.seconds.value_or(0);
     simulate(scene, seconds, physicsSettings(a));
     scene.camera = cameraAt(scene.keyframes, scene.camera, seconds);

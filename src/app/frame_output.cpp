@@ -6,12 +6,14 @@
 
 namespace mb {
 
-// .MP4 is as common a spelling as .mp4, and no frame pattern either way.
-bool isVideo(const std::string& path) {
+bool hasExtension(const std::string& path, const std::string& lowercase) {
     std::string ext = std::filesystem::path(path).extension().string();
     for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-    return ext == ".mp4";
+    return ext == lowercase;
 }
+
+// .MP4 is as common a spelling as .mp4, and no frame pattern either way.
+bool isVideo(const std::string& path) { return hasExtension(path, ".mp4"); }
 
 std::string framesError(const Args& a, FramePattern* pattern) {
     const double fps = a.fps.value_or(30);

@@ -34,6 +34,8 @@ std::unique_ptr<FrameOutput> videoFrames(const std::string& path, int width, int
                                          std::string* error);
 
 // The frame output render --frames and File > Render Animation... share (frame_output.cpp).
+// Whether path's extension, in any case, is `lowercase` (".png").
+bool hasExtension(const std::string& path, const std::string& lowercase);
 bool isVideo(const std::string& path);  // .mp4 in any case; anything else is a PATTERN
 // What the options alone show wrong with render --frames, in one line (a bad PATTERN, an odd
 // size for H.264, a frame past 3600 s); "" when nothing, with *pattern parsed where -o is not

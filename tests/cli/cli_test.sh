@@ -58,6 +58,11 @@ args_cases() {
   expect_says "check takes no option '--seconds'" 2 "$mb" check "$scene" --seconds 1
   expect_says "export takes no option '--mode'" 2 "$mb" export "$scene" -o "$tmp/x.stl" --mode id
   expect_says "the editor takes no option '-o'" 2 "$mb" -o "$tmp/x.png"
+  # One frame is a PNG: written to another name it would pass for what it is not.
+  echo video > "$tmp/v.mp4"
+  expect_says "a video takes --frames A-B" 2 "$mb" render "$scene" -o "$tmp/v.mp4" --size 16x10
+  grep -qx video "$tmp/v.mp4" || { echo "FAIL: render wrote over v.mp4" >&2; failures=$((failures + 1)); }
+  expect_says "-o must end in .png" 2 "$mb" render "$scene" -o "$tmp/x.stl" --size 16x10
   expect_says "unknown command 'foo'" 2 "$mb" foo
   expect_says "unknown command 'rendr'" 2 "$mb" rendr "$scene"
   expect 2 "$mb" "$(printf 'a%.0s' {1..5000})"         # too long for a file name
