@@ -176,6 +176,10 @@ int runRender(const Args& a) {
 int runSimulate(const Args& a) {
     if (!needOne(a, "marchbox simulate SCENE --seconds T [-o OUT.txt] [--threads N]"))
         return kExitUsage;
+    if (!a.seconds) {  // left out, it would write the scene as it was and look like a result
+        std::cerr << "simulate needs --seconds T\n";
+        return kExitUsage;
+    }
     Scene scene;
     std::string error;
     if (!loadOrReport(a.positional[0], &scene) ||

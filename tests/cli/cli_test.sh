@@ -72,6 +72,7 @@ args_cases() {
   expect 2 "$mb" render "$scene"
   expect 2 "$mb" render "$scene" "$scene" -o "$tmp/x.png"
   expect 2 "$mb" simulate
+  expect_says "simulate needs --seconds T" 2 "$mb" simulate "$scene"
   expect 2 "$mb" check
   expect 2 "$mb" shader
   expect 2 "$mb" report bogus
@@ -81,7 +82,7 @@ files_cases() {
   # A directory where a scene belongs, for each command that reads one.
   expect_says "is a directory" 1 "$mb" "$src/scenes"
   expect 1 "$mb" render "$src/scenes" -o "$tmp/x.png" --size 8x8
-  expect 1 "$mb" simulate "$src/scenes"
+  expect 1 "$mb" simulate "$src/scenes" --seconds 0
   expect 1 "$mb" check "$src/scenes"
   expect 1 "$mb" check "$tmp/missing.txt"
   # A file name with a newline in it: each error still one line.
@@ -111,15 +112,15 @@ files_cases() {
   # Outputs that cannot be written; a device is refused, not replaced.
   expect 1 "$mb" render "$scene" -o "$tmp/missing/x.png" --size 8x8
   expect 1 "$mb" render "$scene" -o "$tmp" --size 8x8
-  expect 1 "$mb" simulate "$scene" -o "$tmp/missing/x.txt"
+  expect 1 "$mb" simulate "$scene" --seconds 0 -o "$tmp/missing/x.txt"
   # Refused before the work: with no shaders a render that got as far as drawing would exit 3.
   MB_ENV=MARCHBOX_SHADERS=/nonexistent expect_says "cannot write '$tmp/missing/x.png'" 1 "$mb" render "$scene" \
     -o "$tmp/missing/x.png" --size 8x8
-  expect 1 "$mb" simulate "$scene" -o "$tmp"
-  expect_says "not a regular file" 1 "$mb" simulate "$scene" -o /dev/null
+  expect 1 "$mb" simulate "$scene" --seconds 0 -o "$tmp"
+  expect_says "not a regular file" 1 "$mb" simulate "$scene" --seconds 0 -o /dev/null
   [[ -c /dev/null ]] || { echo "FAIL: /dev/null was replaced" >&2; failures=$((failures + 1)); }
   if [[ -w /dev/full ]]; then
-    expect 1 sh -c '"$0" simulate "$1" >/dev/full' "$mb" "$scene"
+    expect 1 sh -c '"$0" simulate "$1" --seconds 0 >/dev/full' "$mb" "$scene"
     expect 1 sh -c '"$0" shader "$1" >/dev/full' "$mb" "$scene"
   fi
 }
