@@ -35,6 +35,8 @@ namespace {
 
 constexpr double kImpactSpeed = 3.0;      // m/s: a point coming in faster makes an impact (solve)
 constexpr int kImpactSweeps = 4;          // times the relax pass's sweeps, at most, for an impact
+constexpr int kStaticKeyBase = 128;       // static probes' contact keys: 128 to 254 (255: friction)
+constexpr int kStaticKeys = 127;          // of them
 constexpr double kOwnSurface = 1e-4;      // of a body's bound: a point this near lies on it
 constexpr double kSweepTolerance = 1e-3;  // m/s: a sweep that changed no row more has converged
 constexpr double kTurnTolerance = 0.1;    // of an inverse inertia, moved by a turn (followTurns)
@@ -860,6 +862,7 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
             }
         }
     }
+    probeStaticProbes(b, reach, byFeature);
     if (!b.ellipsoid) return;
     // An ellipsoid touches each surface at its support point along that surface's normal: the
     // normal seen from its centre first, then the one seen from that point (a curved surface's).
@@ -883,6 +886,30 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
             }
             normal = hit->normal;
         }
+    }
+}
+
+// The static objects' own probes (StaticProbe) against the body's shape, keyed above the body's
+// own probes: a box lands flat on a post's top, which no corner or edge of its own meets.
+void RigidBodies::probeStaticProbes(const RigidBody& b, double reach,
+                                    std::vector<std::vector<Candidate>>& byFeature) {
+    for (const StaticProbe& p : statics_.near(b.pos, b.bound, reach)) {
+        if (glm::length(p.centre - b.pos) - p.radius >= b.bound + reach) continue;
+        if (beyondParts(b, p.centre, p.radius + reach)) continue;
+        const double bound = distanceTo(b, p.centre);
+        if (bound - p.radius >= reach) continue;
+        const ShapeSample sample = b.exact
+                                       ? ShapeSample{bound, normalAt(b, p.centre)}
+                                       : projectOntoSurface(b, p.centre, bound, p.radius + reach);
+        if (sample.distance - p.radius >= reach) continue;
+        const int key = kStaticKeyBase + int(&p - statics_.probes().data()) % kStaticKeys;
+        // The normal from the static side to the body, against the body's own; the point midway
+        // between the probe's sphere and the body's surface, on the body's face.
+        const double separation = sample.distance - p.radius;
+        const dvec3 point = p.centre - (p.radius + 0.5 * separation) * sample.normal;
+        if (size_t(p.feature) >= byFeature.size()) byFeature.resize(size_t(p.feature) + 1);
+        byFeature[size_t(p.feature)].push_back(
+            {point, -sample.normal, separation, key, point, point});
     }
 }
 

@@ -200,6 +200,8 @@ private:
     void collidePair(int i, int j);
     void collideSphere(int i, PhysicsBody& sphere, int sphereIndex);
     void probeStatics(int i, std::vector<std::vector<Candidate>>& byFeature);
+    void probeStaticProbes(const RigidBody& b, double reach,
+                           std::vector<std::vector<Candidate>>& byFeature);
     void probeShape(int prober, int shape, bool flip, int offset);
     struct Probing {  // one body's probes against another's shape, this step
         const RigidBody &prober, &shape;

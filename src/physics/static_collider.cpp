@@ -1,6 +1,8 @@
 // static_collider.cpp — contacts and sweeps against the static scene's SDF.
 #include "static_collider.h"
 
+#include "rigid_probes.h"
+
 #include "tetra_gradient.h"
 
 #include <algorithm>
@@ -76,6 +78,49 @@ StaticCollider::StaticCollider(const Scene& scene)
     chainGroups(scene.world, own);
     local_.ground = false;
     path_.ground = false;
+    findProbes();
+}
+
+// Each top-level static object's probes, and sixteen points of each rim (a static rim does not
+// roll), kept where its group's drawn surface holds them: a corner carved away, or inside
+// another object of its group, touches nothing. Members of static groups are left to the
+// bodies' own probes.
+void StaticCollider::findProbes() {
+    for (size_t g = 0; g < groups_.size(); ++g)
+        for (int i = groups_[g].first; i < groups_[g].last; ++i) {
+            const SdfObject& o = statics_[size_t(i)];
+            if (o.group >= 0) continue;
+            const glm::dmat3 toWorld = glm::transpose(glm::dmat3(o.toLocal));
+            std::vector<Probe> local = probesOf(o);
+            for (const Rim& rim : rimsOf(o))
+                for (const glm::dvec3& p : rimPoints(rim)) local.push_back({p, rim.tube});
+            if (o.type == ShapeType::Ellipsoid)
+                for (int k = 0; k < 6; ++k) {
+                    glm::dvec3 tip(0.0);
+                    tip[k % 3] = (k < 3 ? 1.0 : -1.0) * double(o.size[k % 3]);
+                    local.push_back({tip, 0.0});
+                }
+            const double tol = 1e-5 * std::max(double(o.bound), 1.0);
+            for (const Probe& p : local) {
+                const glm::dvec3 centre = glm::dvec3(o.pos) + toWorld * p.local;
+                // Its own group's surface: another group's solid it lies in holds no body there.
+                const double d = groupDistance(int(g), centre, p.radius + 2.0 * groups_[g].size);
+                if (d > -p.radius + tol || d < -p.radius - std::max(tol, 0.25 * p.radius)) continue;
+                probes_.push_back({centre, p.radius, int(g) + 1});
+                probeRadius_ = std::max(probeRadius_, p.radius);
+            }
+        }
+    std::sort(probes_.begin(), probes_.end(),
+              [](const StaticProbe& a, const StaticProbe& b) { return a.centre.x < b.centre.x; });
+}
+
+std::span<const StaticProbe> StaticCollider::near(const glm::dvec3& centre, double radius,
+                                                  double reach) const {
+    const double most = radius + reach + probeRadius_;
+    const auto x = [](const StaticProbe& p, double v) { return p.centre.x < v; };
+    const auto begin = std::lower_bound(probes_.begin(), probes_.end(), centre.x - most, x);
+    const auto end = std::lower_bound(begin, probes_.end(), centre.x + most, x);
+    return {begin, end};
 }
 
 // The chain is split into groups whose union is the whole: the records up to the last one that

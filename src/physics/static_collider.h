@@ -26,9 +26,20 @@
 #include <array>
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
+#include <span>
 #include <vector>
 
 namespace mb {
+
+// A point of a static object's own surface that the static scene's drawn surface holds: a
+// corner, an edge's midpoint, a point of a rim, or the centre of a sphere of the surface. Probed
+// against a body's shape, as a body's probes are against the statics: a face lands on a post's
+// top, on a dome's crown, or past a table's edge, where none of its own points touch.
+struct StaticProbe {
+    glm::dvec3 centre;  // world
+    double radius;      // of the sphere about it that the static surface holds
+    int feature;        // StaticHit::feature of the group it lies on
+};
 
 struct StaticHit {
     // 0 the ground plane, g + 1 static group g; g + 1 + G·k (G groups) for the contacts with a
@@ -72,6 +83,12 @@ public:
     // ground, a group's first object's (its own or the world's) for a group, which is one
     // surface however many objects shape it.
     const Surface& surface(int feature) const { return surfaces_[size_t(feature)]; }
+
+    // The top-level static objects' probes on the drawn surface, sorted by centre.x for near().
+    const std::vector<StaticProbe>& probes() const { return probes_; }
+    // The probes whose spheres come within `reach` of a sphere at `centre` of radius `radius`,
+    // by x; the caller tests the rest of the reach.
+    std::span<const StaticProbe> near(const glm::dvec3& centre, double radius, double reach) const;
 
 private:
     struct Group {
@@ -153,15 +170,19 @@ private:
         double distance = -1.0;  // none yet
     };
     std::vector<Clearance> clearance_;  // per body given to query()
-    std::vector<SdfObject> statics_;  // `group`: an index in sdfGroups_
-    std::vector<SdfGroup> sdfGroups_;  // the static top-level groups and their subgroups
-    std::vector<int> slot_;            // per sdfGroups_: its place in its Group's sdfGroups
-    std::vector<Bound> bounds_;        // per static object; a member's is its top group's
-    std::vector<char> adds_;           // per static object: whether lowerBound counts it
+    std::vector<SdfObject> statics_;    // `group`: an index in sdfGroups_
+    std::vector<SdfGroup> sdfGroups_;   // the static top-level groups and their subgroups
+    std::vector<int> slot_;             // per sdfGroups_: its place in its Group's sdfGroups
+    std::vector<Bound> bounds_;         // per static object; a member's is its top group's
+    std::vector<char> adds_;            // per static object: whether lowerBound counts it
     void chainGroups(const World& world, const std::vector<Surface>& own);
     std::vector<Group> groups_;
     std::vector<Surface> surfaces_;  // per feature: the ground, then each group, again per k
     int groupOf(int feature) const { return (feature - 1) % int(groups_.size()); }
+
+    void findProbes();  // probes_, once the groups are known
+    std::vector<StaticProbe> probes_;
+    double probeRadius_ = 0.0;  // the largest probe's
     bool ground_ = true;
     double floor_ = 0.0;
     SceneSdf local_;       // scratch: one group moved to a local origin
