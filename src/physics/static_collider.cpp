@@ -86,7 +86,12 @@ StaticCollider::StaticCollider(const Scene& scene)
 // another object of its group, touches nothing. Members of static groups are left to the
 // bodies' own probes.
 void StaticCollider::findProbes() {
-    for (size_t g = 0; g < groups_.size(); ++g)
+    // A probe is checked against its whole group: a chain of thousands of objects before a
+    // subtract, checked probe by probe, took a minute to set up. Such a group keeps to the
+    // bodies' own probes.
+    constexpr int kMostObjects = 64;
+    for (size_t g = 0; g < groups_.size(); ++g) {
+        if (groups_[g].last - groups_[g].first > kMostObjects) continue;
         for (int i = groups_[g].first; i < groups_[g].last; ++i) {
             const SdfObject& o = statics_[size_t(i)];
             if (o.group >= 0) continue;
@@ -110,6 +115,7 @@ void StaticCollider::findProbes() {
                 probeRadius_ = std::max(probeRadius_, p.radius);
             }
         }
+    }
     std::sort(probes_.begin(), probes_.end(),
               [](const StaticProbe& a, const StaticProbe& b) { return a.centre.x < b.centre.x; });
 }
