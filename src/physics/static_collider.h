@@ -31,10 +31,10 @@
 
 namespace mb {
 
-// A point of a static object's own surface that the static scene's drawn surface holds: a
-// corner, an edge's midpoint, a point of a rim, or the centre of a sphere of the surface. Probed
-// against a body's shape, as a body's probes are against the statics: a face lands on a post's
-// top, on a dome's crown, or past a table's edge, where none of its own points touch.
+// A point of a static object's own surface that its group's drawn surface holds: a corner, an
+// edge's midpoint, a point of a rim, or the centre of a sphere of the surface. Probed against a
+// body's shape, as a body's probes are against the statics: a face lands on a post's top, on a
+// dome's crown, or past a table's edge, where none of its own points touch.
 struct StaticProbe {
     glm::dvec3 centre;  // world
     double radius;      // of the sphere about it that the static surface holds
