@@ -14,6 +14,7 @@
 #include <glm/gtc/matrix_access.hpp>
 #include <limits>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <tuple>
@@ -259,6 +260,19 @@ bool beyondParts(const RigidBody& b, const dvec3& p, double reach) {
     for (const OrientedBox& part : b.parts)
         if (distanceToBox(part, local) < far) return false;
     return true;
+}
+
+// The shape's distance and normal at p, for a sphere of `radius` about p, where the shape's
+// bounding sphere, its parts' boxes and its distance bound leave it within `reach` (the distance
+// projected onto the surface where the SDF is a bound); none where it is out of reach.
+std::optional<ShapeSample> sampleNear(const RigidBody& shape, const dvec3& p, double radius,
+                                      double reach) {
+    if (glm::length(p - shape.pos) - radius >= shape.bound + reach) return std::nullopt;
+    if (beyondParts(shape, p, radius + reach)) return std::nullopt;
+    const double bound = distanceTo(shape, p);
+    if (bound - radius >= reach) return std::nullopt;
+    return shape.exact ? ShapeSample{bound, normalAt(shape, p)}
+                       : projectOntoSurface(shape, p, bound, radius + reach);
 }
 
 dvec3 relativeVelocity(const RigidContact& c) {
@@ -894,14 +908,9 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
 void RigidBodies::probeStaticProbes(const RigidBody& b, double reach,
                                     std::vector<std::vector<Candidate>>& byFeature) {
     for (const StaticProbe& p : statics_.near(b.pos, b.bound, reach)) {
-        if (glm::length(p.centre - b.pos) - p.radius >= b.bound + reach) continue;
-        if (beyondParts(b, p.centre, p.radius + reach)) continue;
-        const double bound = distanceTo(b, p.centre);
-        if (bound - p.radius >= reach) continue;
-        const ShapeSample sample = b.exact
-                                       ? ShapeSample{bound, normalAt(b, p.centre)}
-                                       : projectOntoSurface(b, p.centre, bound, p.radius + reach);
-        if (sample.distance - p.radius >= reach) continue;
+        const std::optional<ShapeSample> near = sampleNear(b, p.centre, p.radius, reach);
+        if (!near || near->distance - p.radius >= reach) continue;
+        const ShapeSample& sample = *near;
         const int key = kStaticKeyBase + int(&p - statics_.probes().data()) % kStaticKeys;
         // The normal from the static side to the body, against the body's own; the point midway
         // between the probe's sphere and the body's surface, on the body's face.
@@ -998,13 +1007,10 @@ void RigidBodies::probePoint(const Probing& q, const dvec3& at, double radius, i
         const NearParts::Sample nearest = nearParts_.nearest(near, at, radius + q.reach);
         if (nearest.part < 0) return;
         sample = {nearest.distance, nearParts_.normal(nearest.part, at)};
+    } else if (const std::optional<ShapeSample> whole = sampleNear(shape, at, radius, q.reach)) {
+        sample = *whole;
     } else {
-        if (glm::length(at - shape.pos) - radius >= shape.bound + q.reach) return;
-        if (beyondParts(shape, at, radius + q.reach)) return;
-        const double bound = distanceTo(shape, at);
-        if (bound - radius >= q.reach) return;
-        sample = shape.exact ? ShapeSample{bound, normalAt(shape, at)}
-                             : projectOntoSurface(shape, at, bound, radius + q.reach);
+        return;
     }
     const double separation = sample.distance - radius;
     if (separation >= q.reach) return;
