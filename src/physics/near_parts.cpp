@@ -59,7 +59,7 @@ void NearParts::find(std::span<const OrientedBox> proberBoxes, const RigidBody& 
         const dmat3 toMember(member.toLocal);
         frames_[q] = {&member, toMember * toShape, toMember * (shift - dvec3(member.pos))};
     }
-    step_ = float(1e-3 * shape.bound);
+    step_ = float(kTetraStep * shape.bound);
 }
 
 NearParts::Sample NearParts::nearest(std::span<const int> parts, const dvec3& x,
@@ -74,11 +74,12 @@ NearParts::Sample NearParts::nearest(std::span<const int> parts, const dvec3& x,
 
 // The gradient in the part's frame (tetra_gradient.h); its turn is a rotation, so its transpose
 // takes the gradient back to the world.
-dvec3 NearParts::normal(int part, const dvec3& x) const {
+dvec3 NearParts::normal(int part, const dvec3& x, bool* creased) const {
     const Frame& f = frames_[size_t(part)];
     const dvec3 g = tetraGradient([&f](const glm::vec3& m) { return sdObjectLocal(*f.shape, m); },
                                   glm::vec3(f.turn * x + f.shift), step_);
     const double len = glm::length(g);
+    if (creased) *creased = isCreased(len, double(step_));
     return len > 0.0 ? glm::transpose(f.turn) * (g / len) : dvec3(0.0, 1.0, 0.0);
 }
 

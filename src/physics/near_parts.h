@@ -44,8 +44,8 @@ public:
     // The nearest of the listed parts to world point x, and its distance.
     Sample nearest(std::span<const int> parts, const glm::dvec3& x,
                    double limit = std::numeric_limits<double>::infinity()) const;
-    // The unit normal (world) of the part's surface at x.
-    glm::dvec3 normal(int part, const glm::dvec3& x) const;
+    // The unit normal (world) of the part's surface at x; `creased`, where asked, as isCreased.
+    glm::dvec3 normal(int part, const glm::dvec3& x, bool* creased = nullptr) const;
 
 private:
     // A part of the shape as the probes see it: x (world) → turn·x + shift in its own frame.

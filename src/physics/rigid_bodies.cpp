@@ -104,6 +104,7 @@ double turnError(const RigidBody& b) {
 struct ShapeSample {
     double distance;
     dvec3 normal;
+    bool creased = false;  // the normal's samples straddled an edge or corner (normalAt)
 };
 
 // p in the shape's frame (the body's, moved to its centre and turned to its axes where framed).
@@ -126,7 +127,7 @@ bool onOwnSurface(const RigidBody& b, const dvec3& p) {
 
 // 4h·∇f in the shape's frame (tetra_gradient.h), unnormalised.
 dvec3 gradientAt(const RigidBody& b, const dvec3& p, double* step) {
-    const float h = float(1e-3 * b.bound);
+    const float h = float(kTetraStep * b.bound);
     *step = double(h);
     return tetraGradient([&b](const glm::vec3& l) { return shapeDistance(b, l); }, localPoint(b, p),
                          h);
@@ -151,10 +152,13 @@ dvec3 fineGradient(const RigidBody& b, const dvec3& p) {
     return toWorld(b, g);
 }
 
-dvec3 normalAt(const RigidBody& b, const dvec3& p) {
+// `creased`, where asked: whether the gradient's four samples straddled an edge or a corner of
+// the shape (isCreased).
+dvec3 normalAt(const RigidBody& b, const dvec3& p, bool* creased = nullptr) {
     double h;
     const dvec3 n = gradientAt(b, p, &h);
     const double len = glm::length(n);
+    if (creased) *creased = isCreased(len, h);
     return toWorld(b, len > 0.0 ? n / len : dvec3(0, 1, 0));
 }
 
@@ -271,8 +275,10 @@ std::optional<ShapeSample> sampleNear(const RigidBody& shape, const dvec3& p, do
     if (beyondParts(shape, p, radius + reach)) return std::nullopt;
     const double bound = distanceTo(shape, p);
     if (bound - radius >= reach) return std::nullopt;
-    return shape.exact ? ShapeSample{bound, normalAt(shape, p)}
-                       : projectOntoSurface(shape, p, bound, radius + reach);
+    if (!shape.exact) return projectOntoSurface(shape, p, bound, radius + reach);
+    ShapeSample sample{bound, dvec3(0.0)};
+    sample.normal = normalAt(shape, p, &sample.creased);
+    return sample;
 }
 
 dvec3 relativeVelocity(const RigidContact& c) {
@@ -846,9 +852,11 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
     auto add = [&](const StaticHit& hit, const dvec3& at, double radius, int probe,
                    const dvec3& centre) {
         if (size_t(hit.feature) >= byFeature.size()) byFeature.resize(size_t(hit.feature) + 1);
-        const dvec3 point = at - (radius + 0.5 * hit.separation) * hit.normal;
+        const dvec3 normal =
+            hit.creased ? staticNormalBesideCrease(b, hit, at, radius) : hit.normal;
+        const dvec3 point = at - (radius + 0.5 * hit.separation) * normal;
         byFeature[size_t(hit.feature)].push_back(
-            {point, hit.normal, hit.separation, probe, point, centre});
+            {point, normal, hit.separation, probe, point, centre});
     };
     for (size_t k = 0; k < b.probes.size(); ++k) {
         const Probe& p = b.probes[k];
@@ -867,12 +875,17 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
         for (const StaticHit& surface : near) {
             const std::vector<dvec3> support = rimSupport(c, axis, rim.radius, surface.normal);
             const bool flat = rimLiesFlat(axis, surface.normal);
+            const double inset = rimInset(rim, axis, surface.normal);
             for (size_t k = 0; k < support.size(); ++k) {
-                statics_.query(id + 1, support[k], rim.tube, reach, hits_, b.bound);
-                for (const StaticHit& hit : hits_)
-                    if (hit.feature == surface.feature)
-                        add(hit, support[k], rim.tube, int(b.probes.size() + 4 * r + k),
-                            k == 0 && !flat ? c : support[k]);
+                dvec3 at = support[k];
+                const StaticHit* hit = hitOn(surface.feature, id + 1, at, rim.tube, reach, b.bound);
+                if (hit && inset > 0.0 && glm::dot(hit->normal, surface.normal) < 0.5) {
+                    at += inset * glm::normalize(c - at);  // a wall across the face: look inside
+                    hit = hitOn(surface.feature, id + 1, at, rim.tube, reach, b.bound);
+                }
+                if (hit)
+                    add(*hit, at, rim.tube, int(b.probes.size() + 4 * r + k),
+                        k == 0 && !flat ? c : at);
             }
         }
     }
@@ -903,6 +916,34 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
     }
 }
 
+// The static surface `feature` as a sphere at `at` meets it within reach, in hits_; null where
+// it does not. `id` names the sphere for the query.
+const StaticHit* RigidBodies::hitOn(int feature, int id, const dvec3& at, double radius,
+                                    double reach, double size) {
+    statics_.query(id, at, radius, reach, hits_, size);
+    const auto hit = std::find_if(hits_.begin(), hits_.end(),
+                                  [feature](const StaticHit& h) { return h.feature == feature; });
+    return hit == hits_.end() ? nullptr : &*hit;
+}
+
+// As normalBesideCrease, for a sharp probe of the body on an edge of a static surface. The
+// surface is sampled as the query sampled it, at the body's size.
+dvec3 RigidBodies::staticNormalBesideCrease(const RigidBody& b, const StaticHit& hit,
+                                            const dvec3& at, double radius) {
+    const double inside = kBesideCrease * b.bound - radius;
+    if (inside <= 0.0) return hit.normal;
+    return statics_.hit(hit.feature, at - inside * normalAt(b, at), b.bound).normal;
+}
+
+// As normalBesideCrease, for a static object's sharp probe on an edge of the body: the body's
+// normal a little way into the static object, along the object's own inward normal.
+dvec3 RigidBodies::normalBesideStaticProbe(const RigidBody& b, const StaticProbe& p,
+                                           const dvec3& normal) {
+    const double inside = kBesideCrease * b.bound - p.radius;
+    if (inside <= 0.0) return normal;
+    return normalAt(b, p.centre - inside * statics_.hit(p.feature, p.centre, b.bound).normal);
+}
+
 // The static objects' own probes (StaticProbe) against the body's shape, keyed above the body's
 // own probes: a box lands flat on a post's top, which no corner or edge of its own meets.
 void RigidBodies::probeStaticProbes(const RigidBody& b, double reach,
@@ -910,7 +951,8 @@ void RigidBodies::probeStaticProbes(const RigidBody& b, double reach,
     for (const StaticProbe& p : statics_.near(b.pos, b.bound, reach)) {
         const std::optional<ShapeSample> near = sampleNear(b, p.centre, p.radius, reach);
         if (!near || near->distance - p.radius >= reach) continue;
-        const ShapeSample& sample = *near;
+        ShapeSample sample = *near;
+        if (sample.creased) sample.normal = normalBesideStaticProbe(b, p, sample.normal);
         const int key = kStaticKeyBase + int(&p - statics_.probes().data()) % kStaticKeys;
         // The normal from the static side to the body, against the body's own; the point midway
         // between the probe's sphere and the body's surface, on the body's face.
@@ -1000,13 +1042,17 @@ void RigidBodies::probeShape(int proberIndex, int shapeIndex, bool flip, int off
 // part, else its bounding sphere, its parts' boxes, its distance, and only then the four more
 // samples of its normal (or, on a bound, the projection onto its surface).
 void RigidBodies::probePoint(const Probing& q, const dvec3& at, double radius, int key,
-                             const dvec3& centre, std::span<const int> near, bool partial) {
+                             const dvec3& centre, std::span<const int> near, bool partial,
+                             const WallRetry* retry) {
     const RigidBody& shape = q.shape;
     ShapeSample sample;
+    int part = -1;
     if (q.partwise) {
         const NearParts::Sample nearest = nearParts_.nearest(near, at, radius + q.reach);
         if (nearest.part < 0) return;
-        sample = {nearest.distance, nearParts_.normal(nearest.part, at)};
+        part = nearest.part;
+        bool creased;
+        sample = {nearest.distance, nearParts_.normal(part, at, &creased), creased};
     } else if (const std::optional<ShapeSample> whole = sampleNear(shape, at, radius, q.reach)) {
         sample = *whole;
     } else {
@@ -1015,9 +1061,26 @@ void RigidBodies::probePoint(const Probing& q, const dvec3& at, double radius, i
     const double separation = sample.distance - radius;
     if (separation >= q.reach) return;
     if (partial && !onOwnSurface(q.prober, at - radius * sample.normal)) return;
+    if (retry && glm::dot(sample.normal, retry->face) < 0.5)
+        return probePoint(q, at + retry->move, radius, key, centre + retry->move, near, partial);
+    if (sample.creased) sample.normal = normalBesideCrease(q, at, radius, part, sample.normal);
     const dvec3 point = at - (radius + 0.5 * separation) * sample.normal;
     candidates_.push_back({point, q.flip ? -sample.normal : sample.normal, separation,
                            q.offset + key, q.flip ? centre : point, q.flip ? point : centre});
+}
+
+// A sharp probe on an edge of the shape (two cylinders standing side by side on one floor: each
+// rim lies on the other's edge) may take any normal between the edge's faces, and the samples
+// straddling the edge give a slanted one: (0.64, 0.64, -0.42) at a right-angled edge, which
+// turned their bounce at restitution 1 into spin and lost half its energy. The contact's normal
+// is the shape's a little way into the prober, along the prober's own inward normal, where the
+// samples clear the edge: there the shape's nearest face is the one the prober lies against.
+dvec3 RigidBodies::normalBesideCrease(const Probing& q, const dvec3& at, double radius, int part,
+                                      const dvec3& normal) {
+    const double inside = kBesideCrease * q.shape.bound - radius;
+    if (inside <= 0.0) return normal;  // the probe's sphere holds the samples clear already
+    const dvec3 beside = at - inside * normalAt(q.prober, at);
+    return part >= 0 ? nearParts_.normal(part, beside) : normalAt(q.shape, beside);
 }
 
 // Rim r of the prober against the shape, or its `near` parts where probing part by part: its
@@ -1041,9 +1104,12 @@ void RigidBodies::probeRim(const Probing& q, int r, std::span<const int> near) {
     if (centre.distance >= rimReach) return;
     const dvec3 normal = q.partwise ? nearParts_.normal(centre.part, c) : normalAt(shape, c);
     const std::vector<dvec3> support = rimSupport(c, axis, rim.radius, normal);
-    for (size_t k = 0; k < support.size(); ++k)
-        probePoint(q, support[k], rim.tube, int(prober.probes.size() + 4 * r + k), support[k],
-                   near);
+    const double inset = rimInset(rim, axis, normal);
+    for (size_t k = 0; k < support.size(); ++k) {
+        const WallRetry retry{normal, inset * glm::normalize(c - support[k])};
+        probePoint(q, support[k], rim.tube, int(prober.probes.size() + 4 * r + k), support[k], near,
+                   false, inset > 0.0 ? &retry : nullptr);
+    }
     if (!shape.groupShape) return;
     // A group's shape can meet the rim in several places, each where the distance along the
     // rim is least (a rim across another cup's rim touches it where the two edges cross):

@@ -210,8 +210,21 @@ private:
         double reach;   // reachOf the two
         bool partwise;  // part by part, against nearParts_
     };
+    struct WallRetry {    // a rim's support point that meets a wall across its face (rimInset)
+        glm::dvec3 face;  // the shape's normal at the rim's centre
+        glm::dvec3 move;  // to the point inside the rim probed instead
+    };
     void probePoint(const Probing& q, const glm::dvec3& at, double radius, int key,
-                    const glm::dvec3& centre, std::span<const int> near, bool partial = false);
+                    const glm::dvec3& centre, std::span<const int> near, bool partial = false,
+                    const WallRetry* retry = nullptr);
+    const StaticHit* hitOn(int feature, int id, const glm::dvec3& at, double radius, double reach,
+                           double size);
+    glm::dvec3 normalBesideCrease(const Probing& q, const glm::dvec3& at, double radius, int part,
+                                  const glm::dvec3& normal);
+    glm::dvec3 staticNormalBesideCrease(const RigidBody& b, const StaticHit& hit,
+                                        const glm::dvec3& at, double radius);
+    glm::dvec3 normalBesideStaticProbe(const RigidBody& b, const StaticProbe& p,
+                                       const glm::dvec3& normal);
     void probeRim(const Probing& q, int r, std::span<const int> near);
     bool collideAnalytic(const RigidBody& a, const RigidBody& b);
     void dropUnreachable(const RigidBody& a, const RigidBody& b);

@@ -145,6 +145,11 @@ std::vector<dvec3> rimSupport(const dvec3& centre, const dvec3& axis, double rad
     return {centre + radius * u, centre + radius * v, centre - radius * u, centre - radius * v};
 }
 
+double rimInset(const Rim& rim, const dvec3& axis, const dvec3& face) {
+    if (rim.tube > 0.0 || std::abs(glm::dot(axis, face)) < 0.5) return 0.0;
+    return 0.1 * rim.radius;
+}
+
 bool rimLiesFlat(const dvec3& axis, const dvec3& normal) {
     return glm::length(-normal + glm::dot(normal, axis) * axis) <= kFlat;
 }

@@ -326,7 +326,7 @@ StaticHit StaticCollider::localHit(int group, double radius, double d, double si
     const double len = glm::length(n);
     const glm::dvec3 normal = len > 0.0 ? n / len : glm::dvec3(0, 1, 0);
     const Group& g = groups_[size_t(group)];
-    if (!g.loose) return {group + 1, d - radius, normal};
+    if (!g.loose) return {group + 1, d - radius, normal, isCreased(len, double(h))};
     const Measure m = measure(glm::dvec3(0.0), d, normal, radius + reach, g.size, asker);
     // Nothing drawn in reach: out of it, whatever the rounding of (radius + reach) − radius.
     return {group + 1 + (m.searched ? int(groups_.size()) : 0),

@@ -45,8 +45,9 @@ struct StaticHit {
     // 0 the ground plane, g + 1 static group g; g + 1 + G·k (G groups) for the contacts with a
     // carved group that its search found, k = 1 the nearest, k > 1 the others in reach (query()).
     int feature;
-    double separation;  // centre distance minus radius; negative when overlapping
-    glm::dvec3 normal;  // unit, out of the static surface towards the sphere
+    double separation;     // centre distance minus radius; negative when overlapping
+    glm::dvec3 normal;     // unit, out of the static surface towards the sphere
+    bool creased = false;  // the normal's samples straddled an edge or corner (isCreased)
 };
 
 class StaticCollider {

@@ -4,9 +4,22 @@
 // direction bends by about h·curvature: h/d at d from an edge.
 #pragma once
 
+#include <cmath>
 #include <glm/vec3.hpp>
 
 namespace mb {
+
+// The bodies' tetrahedron: h is this fraction of the shape's bound.
+constexpr double kTetraStep = 1e-3;
+
+// Whether a gradient of length `length` taken at step h (4h·∇f) straddled a crease of the shape,
+// an edge or a corner: there the samples on either side disagree and the length falls short of
+// 4h (by 6 % at a right-angled edge), where a smooth surface changes it by (h/R)² and the float
+// SDF's rounding by ~3e-5.
+inline bool isCreased(double length, double h) { return std::abs(length / (4.0 * h) - 1.0) > 1e-3; }
+
+// How far from a crease the samples clear it: twice the tetrahedron's reach, h·√3, in bounds.
+constexpr double kBesideCrease = 2.0 * 1.7320508075688772 * kTetraStep;
 
 // 4h·∇f at p, unnormalised; f takes a float point and returns its distance.
 template <typename Distance>

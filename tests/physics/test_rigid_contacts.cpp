@@ -218,6 +218,65 @@ TEST(RigidContacts, AStaticEdgePostOrDomeHoldsAFaceOnIt) {
     }
 }
 
+// Bodies of one height side by side have their edges level: each sharp probe of one lies on an
+// edge of the other, where the normal is any between the edge's faces. Struck at 2 m/s with
+// restitution 1 and no friction, an equal body takes the striker's whole speed (the striker
+// stops) and a static one sends it back at 2 m/s, square on: no spin, no speed across, kinetic
+// energy kept. Measured: 0.002 % of the energy lost at most, spin 0.04 rad/s at most. Planted,
+// the normals as the straddling samples give them, (0.64, ±0.64, ±0.42): between bodies, the two
+// cylinders lose 50 % and the groups spin at 3.3 rad/s; against a static surface, the box leaves
+// 1.2 m/s off; against the static objects' own probes, 1.6 m/s off.
+TEST(RigidContacts, BodiesOfOneHeightBounceSquareOffEachOther) {
+    const char* fast = "mass:1 vel:-2,0,0\n";
+    const std::string member =
+        "type:cylinder radius:0.3 height:0.5 pos:0,-0.25,0\n"
+        "object type:cylinder radius:0.2 height:0.5 pos:0,0.25,0 in:";
+    const struct {
+        const char* name;
+        std::string scene;
+        bool staticFirst;
+    } cases[] = {
+        {"cylinders",
+         std::string("object type:cylinder pos:0,0,0 radius:0.3 height:1 mass:1\n"
+                     "object type:cylinder pos:1.5,0,0 radius:0.3 height:1 ") +
+             fast,
+         false},
+        {"groups",
+         "group name:a mass:1\nobject in:a " + member + "a\ngroup name:b pos:1.5,0,0 " + fast +
+             "object in:b " + member + "b\n",
+         false},
+        {"cylinder at a static box",
+         std::string("object type:box pos:0,0,0 size:0.3,0.5,0.3 static:1\n"
+                     "object type:cylinder pos:1.5,0,0 radius:0.3 height:1 ") +
+             fast,
+         true},
+        {"box at a static box",
+         std::string("object type:box pos:0,0,0 size:0.3,0.5,0.3 static:1\n"
+                     "object type:box pos:1.5,0,0 size:0.3,0.5,0.3 ") +
+             fast,
+         true},
+    };
+    for (const auto& c : cases) {
+        PhysicsWorld w(sceneFromText(
+            "scene version:3\nworld gravity:0 restitution:1 friction:0 ground:0\n" + c.scene));
+        const double energy = w.kineticEnergy();
+        run(w, 1.0);
+        // The first body: the one struck, or the striker sent back from a static one.
+        const RigidState first = w.rigid(0), last = w.rigid(w.rigidCount() - 1);
+        const dvec3 expected = c.staticFirst ? dvec3(2, 0, 0) : dvec3(-2, 0, 0);
+        const double spin = std::max(glm::length(first.spin), glm::length(last.spin));
+        std::printf("%s: %.4g m/s off, spin %.3g rad/s, energy %+.3g %%\n", c.name,
+                    glm::length(first.vel - expected), spin,
+                    100.0 * (w.kineticEnergy() / energy - 1.0));
+        EXPECT_LT(glm::length(first.vel - expected), 0.02) << c.name;
+        if (!c.staticFirst) {
+            EXPECT_LT(glm::length(last.vel), 0.02) << c.name << ": the striker goes on";
+        }
+        EXPECT_LT(spin, 0.1) << c.name;
+        EXPECT_NEAR(w.kineticEnergy(), energy, 1e-3 * energy) << c.name;
+    }
+}
+
 // A ring (a torus of radius 0.3, tube 0.05) on its edge rolls as a wheel of radius 0.35: on
 // level ground (no rolling resistance) it keeps its 2 m/s and does not bounce; down a 20° ramp
 // it gains g·sin θ / (1 + I/(m·ρ²)) a second, I = m·(R² + ¾·r²) about its axis, ρ = R + r.
@@ -261,6 +320,38 @@ TEST(RigidContacts, TenBoxStackStands) {
                 w.stats().awake);
     EXPECT_LT(glm::length(settled - placed), 0.015);
     EXPECT_LT(glm::length(w.rigid(9).pos - settled), 0.01);
+}
+
+// Cylinders of one radius stacked: each rim lies on the other cylinder's edge, inside its side
+// wall as soon as the contacts press in. A column of eight on the ground, and three on a static
+// cylinder, stand: the top settles by the slop and the weight (measured 7.9 and 3.7 mm) and does
+// not tip. Planted: the rims' points that meet the wall not looked for again inside the rim:
+// both columns sink through themselves, the eight by 3.5 m, the three by 1 m.
+TEST(RigidContacts, ColumnsOfCylindersOfOneRadiusStand) {
+    const struct {
+        const char* name;
+        const char* base;
+        int count;
+    } cases[] = {{"eight on the ground", "", 8},
+                 {"three on a static one",
+                  "object type:cylinder pos:0,0.25,0 radius:0.3 height:0.5 static:1\n", 3}};
+    for (const auto& c : cases) {
+        std::string text =
+            std::string("scene version:3\nworld restitution:0.3 friction:0.5\n") + c.base;
+        const int first = *c.base ? 1 : 0;
+        for (int i = first; i < first + c.count; ++i)
+            text += "object type:cylinder radius:0.3 height:0.5 mass:1 pos:0," +
+                    std::to_string(0.25 + 0.5 * i) + ",0\n";
+        PhysicsWorld w(sceneFromText(text));
+        const dvec3 placed = w.rigid(c.count - 1).pos;
+        run(w, 10.0);
+        const RigidState top = w.rigid(c.count - 1);
+        std::printf("%s: top %.4g m from where it was placed, turned %.3g°\n", c.name,
+                    glm::length(top.pos - placed),
+                    glm::degrees(2.0 * std::acos(std::min(1.0, std::abs(top.orient.w)))));
+        EXPECT_LT(glm::length(top.pos - placed), 0.02) << c.name;
+        EXPECT_GT(std::abs(top.orient.w), std::cos(glm::radians(1.0))) << c.name << " tipped";
+    }
 }
 
 // A torus (ring 0.3, tube 0.05) dropped tilted over an upright capsule peg (radius 0.1) settles
