@@ -414,6 +414,14 @@ void solveFriction(FrictionRows& r, double normalImpulse) {
     }
 }
 
+// Whether the manifold's friction rows hold an impulse. One that holds none, under a manifold
+// that pushes nothing, has nothing to give: its limits are 0, and its rows would only be clamped
+// to 0 again (half of a pile of tables' manifolds, each sweep: speculative points not yet met).
+bool holdsFriction(const FrictionRows& r) {
+    return r.tangentImpulse[0] != 0.0 || r.tangentImpulse[1] != 0.0 || r.twistImpulse != 0.0 ||
+           r.rollImpulse[0] != 0.0 || r.rollImpulse[1] != 0.0;
+}
+
 // A bounce: the normal speed the contact leaves with at the step's end, and how far past the
 // surface the body should be by then (0 where it touched from the step's start).
 struct Bounce {
@@ -1386,8 +1394,10 @@ void RigidBodies::solve(const Softness& soft, double h, bool useBias) {
                 change = std::max(change, solveNormal(rows_[size_t(i)], soft, h, useBias));
             double pushed = 0.0;
             for (int i = m.begin; i < m.end; ++i) pushed += rows_[size_t(i)].impulse;
-            if (rolling_ > 0.0) solveRolling(m.rows, pushed);
-            solveFriction(m.rows, pushed);
+            if (pushed > 0.0 || holdsFriction(m.rows)) {
+                if (rolling_ > 0.0) solveRolling(m.rows, pushed);
+                solveFriction(m.rows, pushed);
+            }
             if (change < kSweepTolerance) break;
         }
     }
