@@ -1416,13 +1416,22 @@ void RigidBodies::restitute(double threshold, double gravity) {
             undo(m);
             continue;
         }
+        // A point bounces where it came in faster than the threshold and pushed; most of a pile's
+        // manifolds have none, and their points need not be read again each sweep.
+        auto bounces = [&](int i) {
+            const RigidContact& c = contacts_[size_t(i)];
+            return c.relativeVelocity <= -threshold && rows_[size_t(i)].maxImpulse != 0.0 &&
+                   c.restitution != 0.0;
+        };
+        bool any = false;
+        for (int i = m.begin; i < m.end && !any; ++i) any = bounces(i);
+        if (!any) continue;
         double rise = 1e300;
         for (int sweep = 0; sweep < settings_.bounceSweeps; ++sweep)
             for (int i = m.begin; i < m.end; ++i) {
+                if (!bounces(i)) continue;
                 const RigidContact& c = contacts_[size_t(i)];
                 NormalRow& r = rows_[size_t(i)];
-                if (c.relativeVelocity > -threshold || r.maxImpulse == 0.0 || c.restitution == 0.0)
-                    continue;
                 const Bounce b = bounceOf(c, accel, dt_);
                 rise = std::min(rise, b.rise);
                 const double impulse = -r.mass * (normalSpeed(r) - b.speed);
