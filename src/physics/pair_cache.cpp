@@ -55,14 +55,21 @@ bool PairCache::reuse(std::uint64_t pair, const RigidBody& a, const RigidBody& b
 
 void PairCache::keep(std::uint64_t pair, const RigidBody& a, const RigidBody& b, double reach,
                      const std::vector<PairCandidate>& found) {
-    Entry e{toFrame(a, b.pos), glm::conjugate(a.orient) * b.orient, reach, {}};
+    // The pair's entry of the last step, where it had one, is rewritten in place: its node and
+    // its points' room are used again rather than freed and made anew.
+    auto node = last_.extract(pair);
+    Entry& e = node ? node.mapped() : now_[pair];
+    e.offset = toFrame(a, b.pos);
+    e.turn = glm::conjugate(a.orient) * b.orient;
+    e.reach = reach;
+    e.points.clear();
     for (const PairCandidate& c : found) {
         const dvec3 half = 0.5 * c.separation * c.normal;
         e.points.push_back({toFrame(a, c.point - half), toFrame(a, c.centreA),
                             toFrame(b, c.point + half), toFrame(b, c.centreB),
                             glm::conjugate(a.orient) * c.normal, c.probe});
     }
-    now_[pair] = std::move(e);
+    if (node) now_.insert(std::move(node));
 }
 
 }  // namespace mb

@@ -830,7 +830,8 @@ RigidContact RigidBodies::contactFrom(const Candidate& c, double height, std::ui
 // One manifold per static surface the body's probes reach.
 void RigidBodies::collideStatics(int i) {
     RigidBody& b = bodies_[size_t(i)];
-    std::vector<std::vector<Candidate>> byFeature;
+    std::vector<std::vector<Candidate>>& byFeature = byFeature_;
+    for (std::vector<Candidate>& feature : byFeature) feature.clear();
     probeStatics(i, byFeature);
     ContactSide fixed;
     for (size_t f = 0; f < byFeature.size(); ++f) {
@@ -879,9 +880,9 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
         const dvec3 c = b.pos + b.orient * rim.centre, axis = b.orient * rim.axis;
         const int id = rimIds + int(2 * r);
         statics_.query(id, c, 0.0, rim.radius + rim.tube + reach, hits_, b.bound);
-        const std::vector<StaticHit> near = hits_;
-        for (const StaticHit& surface : near) {
-            const std::vector<dvec3> support = rimSupport(c, axis, rim.radius, surface.normal);
+        surfaces_ = hits_;  // the queries below write hits_
+        for (const StaticHit& surface : surfaces_) {
+            const std::array<dvec3, 4> support = rimSupport(c, axis, rim.radius, surface.normal);
             const bool flat = rimLiesFlat(axis, surface.normal);
             const double inset = rimInset(rim, axis, surface.normal);
             for (size_t k = 0; k < support.size(); ++k) {
@@ -904,8 +905,8 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
     const dvec3 semi(b.shape.size);
     const int key = int(b.probes.size() + 4 * b.rims.size());
     statics_.query(lastId, b.pos, 0.0, std::max({semi.x, semi.y, semi.z}) + reach, hits_, b.bound);
-    const std::vector<StaticHit> near = hits_;
-    for (const StaticHit& surface : near) {
+    surfaces_ = hits_;
+    for (const StaticHit& surface : surfaces_) {
         dvec3 normal = surface.normal;
         for (int pass = 0; pass < 2; ++pass) {
             const dvec3 at =
@@ -1111,7 +1112,7 @@ void RigidBodies::probeRim(const Probing& q, int r, std::span<const int> near) {
         q.partwise ? nearParts_.nearest(near, c) : NearParts::Sample{distanceTo(shape, c), -1};
     if (centre.distance >= rimReach) return;
     const dvec3 normal = q.partwise ? nearParts_.normal(centre.part, c) : normalAt(shape, c);
-    const std::vector<dvec3> support = rimSupport(c, axis, rim.radius, normal);
+    const std::array<dvec3, 4> support = rimSupport(c, axis, rim.radius, normal);
     const double inset = rimInset(rim, axis, normal);
     for (size_t k = 0; k < support.size(); ++k) {
         const WallRetry retry{normal, inset * glm::normalize(c - support[k])};
@@ -1210,9 +1211,10 @@ void RigidBodies::collidePair(int i, int j) {
         }
         return ways;
     }();
-    std::vector<Candidate> all;
+    std::vector<Candidate>& all = binned_;
     all.swap(candidates_);
-    std::vector<int> bins(all.size());
+    std::vector<int>& bins = bins_;
+    bins.resize(all.size());
     for (size_t c = 0; c < all.size(); ++c) {
         const dvec3 n = glm::conjugate(a.orient) * all[c].normal;
         double best = -2.0;

@@ -266,6 +266,13 @@ private:
     void undo(Manifold& m);
     std::vector<Manifold> manifolds_;
     std::vector<Candidate> candidates_;
+    // Scratch kept from call to call for its room: collideStatics' candidates by static surface,
+    // collidePair's candidates before and their bins while they are split by their normals'
+    // ways, probeStatics' surfaces near a rim or an ellipsoid while each is probed.
+    std::vector<std::vector<Candidate>> byFeature_;
+    std::vector<Candidate> binned_;
+    std::vector<int> bins_;
+    std::vector<StaticHit> surfaces_;
     NearParts nearParts_;  // the parts of the pair being probed that come near each other
     PairCache pairCache_;  // points of pairs that have barely moved, not found again
     WarmStarts kept_;      // last step's impulses, to start this step's rows from

@@ -129,8 +129,8 @@ dvec3 ellipsoidSupport(const dvec3& a, const dvec3& dir) {
     return len > 0.0 ? a * scaled / len : dvec3(0.0);
 }
 
-std::vector<dvec3> rimSupport(const dvec3& centre, const dvec3& axis, double radius,
-                              const dvec3& normal) {
+std::array<dvec3, 4> rimSupport(const dvec3& centre, const dvec3& axis, double radius,
+                                const dvec3& normal) {
     const dvec3 across = -normal + glm::dot(normal, axis) * axis;  // −normal, in the rim's plane
     const double len = glm::length(across);
     if (len > kFlat) {  // the lowest point first, then the rest of its quarter turns

@@ -69,8 +69,8 @@ glm::dvec3 ellipsoidSupport(const glm::dvec3& semiAxes, const glm::dvec3& dir);
 // (rimLiesFlat: within kFlat of parallel, 0.6°) the four come from any direction across the
 // axis, so a standing cylinder rests on a square.
 constexpr double kFlat = 0.01;
-std::vector<glm::dvec3> rimSupport(const glm::dvec3& centre, const glm::dvec3& axis, double radius,
-                                   const glm::dvec3& normal);
+std::array<glm::dvec3, 4> rimSupport(const glm::dvec3& centre, const glm::dvec3& axis,
+                                     double radius, const glm::dvec3& normal);
 bool rimLiesFlat(const glm::dvec3& axis, const glm::dvec3& normal);
 
 // How far inside a sharp rim its support points look again where one meets a wall across the
