@@ -857,6 +857,7 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
     // The sphere about the whole body first: inside a pile most bodies are nowhere near a wall.
     statics_.query(lastId + 2, b.pos, b.bound, reach, hits_, b.bound);
     if (hits_.empty()) return;
+    faces_ = hits_;  // each surface near, as its normal faces the body's centre
     // A rim's support point turns about the rim's centre: that is its probe's centre.
     auto add = [&](const StaticHit& hit, const dvec3& at, double radius, int probe,
                    const dvec3& centre) {
@@ -870,10 +871,19 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
     for (size_t k = 0; k < b.probes.size(); ++k) {
         const Probe& p = b.probes[k];
         const dvec3 c = b.pos + b.orient * p.local;
-        statics_.query(b.staticIds + int(k), c, p.radius, reach, hits_, b.bound);
-        for (const StaticHit& hit : hits_)
-            if (!p.partial || onOwnSurface(b, c - p.radius * hit.normal))
-                add(hit, c, p.radius, int(k), c);
+        const int id = b.staticIds + int(k);
+        statics_.query(id, c, p.radius, reach, hits_, b.bound);
+        surfaces_ = hits_;  // lookInside writes hits_
+        for (StaticHit hit : surfaces_) {
+            if (p.partial && !onOwnSurface(b, c - p.radius * hit.normal)) continue;
+            dvec3 at = c;
+            const auto face = std::find_if(faces_.begin(), faces_.end(), [&](const StaticHit& f) {
+                return f.feature == hit.feature;
+            });
+            if (p.radius == 0.0 && face != faces_.end())
+                lookInside(b, id, reach, face->normal, b.pos, &hit, &at);
+            add(hit, at, p.radius, int(k), at);
+        }
     }
     for (size_t r = 0; r < b.rims.size(); ++r) {
         const Rim& rim = b.rims[r];
@@ -884,17 +894,14 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
         for (const StaticHit& surface : surfaces_) {
             const std::array<dvec3, 4> support = rimSupport(c, axis, rim.radius, surface.normal);
             const bool flat = rimLiesFlat(axis, surface.normal);
-            const double inset = rimInset(rim, axis, surface.normal);
             for (size_t k = 0; k < support.size(); ++k) {
                 dvec3 at = support[k];
-                const StaticHit* hit = hitOn(surface.feature, id + 1, at, rim.tube, reach, b.bound);
-                if (hit && inset > 0.0 && glm::dot(hit->normal, surface.normal) < 0.5) {
-                    at += inset * glm::normalize(c - at);  // a wall across the face: look inside
-                    hit = hitOn(surface.feature, id + 1, at, rim.tube, reach, b.bound);
-                }
-                if (hit)
-                    add(*hit, at, rim.tube, int(b.probes.size() + 4 * r + k),
-                        k == 0 && !flat ? c : at);
+                const StaticHit* found =
+                    hitOn(surface.feature, id + 1, at, rim.tube, reach, b.bound);
+                if (!found) continue;
+                StaticHit hit = *found;
+                if (rim.tube == 0.0) lookInside(b, id + 1, reach, surface.normal, c, &hit, &at);
+                add(hit, at, rim.tube, int(b.probes.size() + 4 * r + k), k == 0 && !flat ? c : at);
             }
         }
     }
@@ -933,6 +940,24 @@ const StaticHit* RigidBodies::hitOn(int feature, int id, const dvec3& at, double
     const auto hit = std::find_if(hits_.begin(), hits_.end(),
                                   [feature](const StaticHit& h) { return h.feature == feature; });
     return hit == hits_.end() ? nullptr : &*hit;
+}
+
+// A sharp point of the body (a corner, a sharp rim's) that meets a wall across the face it lies
+// on (`face`, the surface's normal seen from `centre`, more than 60° away) lies on the surface's
+// edge, pressed in: a box on a static box of its own footprint has each corner on the other's
+// side wall, where the distance inside is 0 (the wall's), not the depth below the face; so has a
+// cylinder on a static one of its radius. Every such point met a wall, none held the weight,
+// and the body sank through. Looked at again a tenth of the way towards `centre` along the face,
+// the point meets the face: where that is deeper, it is the contact. `at` and `hit` move there.
+void RigidBodies::lookInside(const RigidBody& b, int id, double reach, const dvec3& face,
+                             const dvec3& centre, StaticHit* hit, dvec3* at) {
+    if (glm::dot(hit->normal, face) >= 0.5) return;
+    const dvec3 towards = centre - *at;
+    const dvec3 inside = *at + 0.1 * (towards - glm::dot(towards, face) * face);
+    const StaticHit* there = hitOn(hit->feature, id, inside, 0.0, reach, b.bound);
+    if (!there || there->separation >= hit->separation) return;
+    *hit = *there;
+    *at = inside;
 }
 
 // As normalBesideCrease, for a sharp probe of the body on an edge of a static surface. The

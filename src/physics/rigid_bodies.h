@@ -219,6 +219,8 @@ private:
                     const WallRetry* retry = nullptr);
     const StaticHit* hitOn(int feature, int id, const glm::dvec3& at, double radius, double reach,
                            double size);
+    void lookInside(const RigidBody& b, int id, double reach, const glm::dvec3& face,
+                    const glm::dvec3& centre, StaticHit* hit, glm::dvec3* at);
     glm::dvec3 normalBesideCrease(const Probing& q, const glm::dvec3& at, double radius, int part,
                                   const glm::dvec3& normal);
     glm::dvec3 staticNormalBesideCrease(const RigidBody& b, const StaticHit& hit,
@@ -268,14 +270,15 @@ private:
     std::vector<Candidate> candidates_;
     // Scratch kept from call to call for its room: collideStatics' candidates by static surface,
     // collidePair's candidates before and their bins while they are split by their normals'
-    // ways, probeStatics' surfaces near a rim or an ellipsoid while each is probed.
+    // ways, probeStatics' surfaces near a probe, a rim or an ellipsoid while each is probed.
     std::vector<std::vector<Candidate>> byFeature_;
     std::vector<Candidate> binned_;
     std::vector<int> bins_;
     std::vector<StaticHit> surfaces_;
-    NearParts nearParts_;  // the parts of the pair being probed that come near each other
-    PairCache pairCache_;  // points of pairs that have barely moved, not found again
-    WarmStarts kept_;      // last step's impulses, to start this step's rows from
+    std::vector<StaticHit> faces_;  // probeStatics': the surfaces near the body, from its centre
+    NearParts nearParts_;           // the parts of the pair being probed that come near each other
+    PairCache pairCache_;           // points of pairs that have barely moved, not found again
+    WarmStarts kept_;               // last step's impulses, to start this step's rows from
     // Each body's record as the scene gave it, and the state made from it. A body still in
     // that state is written back as it was read: a float turn made a double, normalised and
     // made a float again can come back an ulp apart, and each save would walk it further.
