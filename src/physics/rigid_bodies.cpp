@@ -15,6 +15,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <ranges>
 #include <span>
 #include <string>
 #include <tuple>
@@ -1140,7 +1141,8 @@ void RigidBodies::probeRim(const Probing& q, int r, std::span<const int> near) {
     const std::array<dvec3, 4> support = rimSupport(c, axis, rim.radius, normal);
     const double inset = rimInset(rim, axis, normal);
     for (size_t k = 0; k < support.size(); ++k) {
-        const WallRetry retry{normal, inset * glm::normalize(c - support[k])};
+        WallRetry retry{normal, dvec3(0.0)};
+        if (inset > 0.0) retry.move = inset * glm::normalize(c - support[k]);
         probePoint(q, support[k], rim.tube, int(prober.probes.size() + 4 * r + k), support[k], near,
                    false, inset > 0.0 ? &retry : nullptr);
     }
@@ -1443,16 +1445,15 @@ void RigidBodies::restitute(double threshold, double gravity) {
             undo(m);
             continue;
         }
-        // A point bounces where it came in faster than the threshold and pushed; most of a pile's
-        // manifolds have none, and their points need not be read again each sweep.
+        // A point bounces where it came in faster than the threshold and pushed. Most of a pile's
+        // manifolds have no such point, and are not swept at all.
         auto bounces = [&](int i) {
             const RigidContact& c = contacts_[size_t(i)];
             return c.relativeVelocity <= -threshold && rows_[size_t(i)].maxImpulse != 0.0 &&
                    c.restitution != 0.0;
         };
-        bool any = false;
-        for (int i = m.begin; i < m.end && !any; ++i) any = bounces(i);
-        if (!any) continue;
+        const std::ranges::iota_view points(m.begin, m.end);
+        if (std::ranges::none_of(points, bounces)) continue;
         double rise = 1e300;
         for (int sweep = 0; sweep < settings_.bounceSweeps; ++sweep)
             for (int i = m.begin; i < m.end; ++i) {
