@@ -40,6 +40,7 @@ constexpr int kImpactSweeps = 4;          // times the relax pass's sweeps, at m
 constexpr int kStaticKeyBase = 128;       // static probes' contact keys: 128 to 254 (255: friction)
 constexpr int kStaticKeys = 127;          // of them
 constexpr double kOwnSurface = 1e-4;      // of a body's bound: a point this near lies on it
+constexpr double kSideLevel = 0.1;        // of the slop: a side's stretch this level is a line
 constexpr double kSweepTolerance = 1e-3;  // m/s: a sweep that changed no row more has converged
 constexpr double kTurnTolerance = 0.1;    // of an inverse inertia, moved by a turn (followTurns)
 constexpr int kNewtonSteps = 4;           // at most, projecting a point onto a bound's surface
@@ -483,6 +484,18 @@ void applyCentre(FrictionRows& r, double sign) {
     }
 }
 
+// The first contact key of a body's side (probeSide, two), after its probes' and its rims': an
+// ellipsoid's support point, which has neither rims nor side, takes the same.
+int sideKey(const RigidBody& b) { return int(b.probes.size()) + kRimIds * int(b.rims.size()); }
+
+// The body's side (RigidBody::side) in the world.
+Side worldSide(const RigidBody& b) {
+    Side s = *b.side;
+    s.from = b.pos + b.orient * s.from;
+    s.to = b.pos + b.orient * s.to;
+    return s;
+}
+
 std::uint64_t pairKey(int a, int b) {
     return std::uint64_t(a + 1) << 40 | std::uint64_t(b + 1) << 16;
 }
@@ -564,10 +577,12 @@ RigidBody objectBody(const Object& o, int index, const World& world) {
     b.object = index;
     b.probes = probesOf(o);
     b.rims = rimsOf(o);
+    b.side = sideOf(b.shape);
     if (b.exact) setParts(b, {boxAbout(b.shape)});
     if (b.framed) {
         for (Probe& p : b.probes) p.local -= b.centre;
         for (Rim& r : b.rims) r.centre -= b.centre;
+        if (b.side) b.side->from -= b.centre, b.side->to -= b.centre;
     }
     return b;
 }
@@ -677,7 +692,8 @@ RigidBodies::RigidBodies(const Scene& scene, const PhysicsSettings& settings)
     int ids = 0;
     for (RigidBody& b : bodies_) {
         b.staticIds = ids;
-        ids += int(b.probes.size() + 2 * b.rims.size()) + 3;  // + an ellipsoid's two, the body
+        // The probes', the rims' two each, an ellipsoid's two, the whole body's and the side's.
+        ids += int(b.probes.size() + 2 * b.rims.size()) + 4;
         auto keep = [&](const auto& r) {
             loaded_.push_back(
                 {r.pos, r.rot, r.vel, r.spin, r.orient, b.pos, b.vel, b.spin, b.orient});
@@ -862,12 +878,7 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
     // A rim's support point turns about the rim's centre: that is its probe's centre.
     auto add = [&](const StaticHit& hit, const dvec3& at, double radius, int probe,
                    const dvec3& centre) {
-        if (size_t(hit.feature) >= byFeature.size()) byFeature.resize(size_t(hit.feature) + 1);
-        const dvec3 normal =
-            hit.creased ? staticNormalBesideCrease(b, hit, at, radius) : hit.normal;
-        const dvec3 point = at - (radius + 0.5 * hit.separation) * normal;
-        byFeature[size_t(hit.feature)].push_back(
-            {point, normal, hit.separation, probe, point, centre});
+        addStaticCandidate(b, hit, at, radius, probe, centre, byFeature);
     };
     for (size_t k = 0; k < b.probes.size(); ++k) {
         const Probe& p = b.probes[k];
@@ -906,12 +917,13 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
             }
         }
     }
+    if (b.side) probeStaticSide(b, reach, byFeature);
     probeStaticProbes(b, reach, byFeature);
     if (!b.ellipsoid) return;
     // An ellipsoid touches each surface at its support point along that surface's normal: the
     // normal seen from its centre first, then the one seen from that point (a curved surface's).
     const dvec3 semi(b.shape.size);
-    const int key = int(b.probes.size() + 4 * b.rims.size());
+    const int key = sideKey(b);
     statics_.query(lastId, b.pos, 0.0, std::max({semi.x, semi.y, semi.z}) + reach, hits_, b.bound);
     surfaces_ = hits_;
     for (const StaticHit& surface : surfaces_) {
@@ -929,6 +941,41 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
                 break;
             }
             normal = hit->normal;
+        }
+    }
+}
+
+// The sphere of the body's probe `probe` (centre `centre`) at `at` meeting a static surface.
+void RigidBodies::addStaticCandidate(const RigidBody& b, const StaticHit& hit, const dvec3& at,
+                                     double radius, int probe, const dvec3& centre,
+                                     std::vector<std::vector<Candidate>>& byFeature) {
+    if (size_t(hit.feature) >= byFeature.size()) byFeature.resize(size_t(hit.feature) + 1);
+    const dvec3 normal = hit.creased ? staticNormalBesideCrease(b, hit, at, radius) : hit.normal;
+    const dvec3 point = at - (radius + 0.5 * hit.separation) * normal;
+    byFeature[size_t(hit.feature)].push_back({point, normal, hit.separation, probe, point, centre});
+}
+
+// The body's side against each static group near it, as probeSide (the ground, a plane, never
+// comes nearest between the rims).
+void RigidBodies::probeStaticSide(const RigidBody& b, double reach,
+                                  std::vector<std::vector<Candidate>>& byFeature) {
+    const Side side = worldSide(b);
+    const int id = b.staticIds + int(b.probes.size() + 2 * b.rims.size()) + 3;  // the last
+    statics_.query(id, 0.5 * (side.from + side.to), 0.0, sideBound(side) + reach, hits_, b.bound);
+    surfaces_ = hits_;  // hitOn writes hits_
+    for (const StaticHit& surface : surfaces_) {
+        if (!statics_.isGroupSurface(surface.feature)) continue;
+        auto distance = [&](const dvec3& p) {
+            return statics_.surfaceDistance(surface.feature, p);
+        };
+        const SideTouch touch = nearestOnSide(distance, side.from, side.to, side.radius, reach,
+                                              1e-6 * (glm::length(side.from) + b.bound),
+                                              kSideLevel * settings_.linearSlop);
+        for (int k = 0; k < touch.count; ++k) {
+            const dvec3 at = glm::mix(side.from, side.to, touch.t[k]);
+            const double radius = sideRadius(side, touch.t[k]);
+            if (const StaticHit* hit = hitOn(surface.feature, id, at, radius, reach, b.bound))
+                addStaticCandidate(b, *hit, at, radius, sideKey(b) + k, at, byFeature);
         }
     }
 }
@@ -980,23 +1027,44 @@ dvec3 RigidBodies::normalBesideStaticProbe(const RigidBody& b, const StaticProbe
 }
 
 // The static objects' own probes (StaticProbe) against the body's shape, keyed above the body's
-// own probes: a box lands flat on a post's top, which no corner or edge of its own meets.
+// own probes: a box lands flat on a post's top, which no corner or edge of its own meets. Then
+// their sides, as a body's (probeSide), keyed after the probes.
 void RigidBodies::probeStaticProbes(const RigidBody& b, double reach,
                                     std::vector<std::vector<Candidate>>& byFeature) {
-    for (const StaticProbe& p : statics_.near(b.pos, b.bound, reach)) {
-        const std::optional<ShapeSample> near = sampleNear(b, p.centre, p.radius, reach);
-        if (!near || near->distance - p.radius >= reach) continue;
-        ShapeSample sample = *near;
-        if (sample.creased) sample.normal = normalBesideStaticProbe(b, p, sample.normal);
-        const int key = kStaticKeyBase + int(&p - statics_.probes().data()) % kStaticKeys;
-        // The normal from the static side to the body, against the body's own; the point midway
-        // between the probe's sphere and the body's surface, on the body's face.
-        const double separation = sample.distance - p.radius;
-        const dvec3 point = p.centre - (p.radius + 0.5 * separation) * sample.normal;
-        if (size_t(p.feature) >= byFeature.size()) byFeature.resize(size_t(p.feature) + 1);
-        byFeature[size_t(p.feature)].push_back(
-            {point, -sample.normal, separation, key, point, point});
+    const std::vector<StaticProbe>& probes = statics_.probes();
+    for (const StaticProbe& p : statics_.near(b.pos, b.bound, reach))
+        meetStaticProbe(b, p, int(&p - probes.data()), reach, byFeature);
+    const std::vector<StaticSide>& sides = statics_.sides();
+    for (size_t k = 0; k < sides.size(); ++k) {
+        const Side& side = sides[k].side;
+        if (glm::length(b.pos - 0.5 * (side.from + side.to)) >= sideBound(side) + b.bound + reach)
+            continue;
+        auto distance = [&](const dvec3& p) { return distanceTo(b, p); };
+        const SideTouch touch =
+            nearestOnSide(distance, side.from, side.to, side.radius, reach,
+                          1e-6 * (glm::length(b.pos) + b.bound), kSideLevel * settings_.linearSlop);
+        for (int e = 0; e < touch.count; ++e) {
+            const StaticProbe sphere{glm::mix(side.from, side.to, touch.t[e]),
+                                     sideRadius(side, touch.t[e]), sides[k].feature};
+            meetStaticProbe(b, sphere, int(probes.size() + 2 * k) + e, reach, byFeature);
+        }
     }
+}
+
+// A static object's sphere (a probe's, or its side's), the `index`th, against the body's shape.
+void RigidBodies::meetStaticProbe(const RigidBody& b, const StaticProbe& p, int index, double reach,
+                                  std::vector<std::vector<Candidate>>& byFeature) {
+    const std::optional<ShapeSample> near = sampleNear(b, p.centre, p.radius, reach);
+    if (!near || near->distance - p.radius >= reach) return;
+    ShapeSample sample = *near;
+    if (sample.creased) sample.normal = normalBesideStaticProbe(b, p, sample.normal);
+    const int key = kStaticKeyBase + index % kStaticKeys;
+    // The normal from the static side to the body, against the body's own; the point midway
+    // between the probe's sphere and the body's surface, on the body's face.
+    const double separation = sample.distance - p.radius;
+    const dvec3 point = p.centre - (p.radius + 0.5 * separation) * sample.normal;
+    if (size_t(p.feature) >= byFeature.size()) byFeature.resize(size_t(p.feature) + 1);
+    byFeature[size_t(p.feature)].push_back({point, -sample.normal, separation, key, point, point});
 }
 
 // How far apart two bodies' points may be and still meet within the step: the slop's margin
@@ -1061,6 +1129,7 @@ void RigidBodies::probeShape(int proberIndex, int shapeIndex, bool flip, int off
     for (size_t r = 0; r < prober.rims.size(); ++r)
         if (!q.partwise || !nearOf(prober.rims[r].part).empty())
             probeRim(q, int(r), nearOf(prober.rims[r].part));
+    if (prober.side && (!q.partwise || !nearOf(0).empty())) probeSide(q, nearOf(0));
     if (!prober.ellipsoid) return;
     // The ellipsoid's point furthest into the shape: its support point along the shape's normal.
     const dvec3 semi(prober.shape.size);
@@ -1070,7 +1139,7 @@ void RigidBodies::probeShape(int proberIndex, int shapeIndex, bool flip, int off
     if (distanceTo(shape, prober.pos) >= longest + q.reach) return;
     const dvec3 down = glm::conjugate(prober.orient) * -normalAt(shape, prober.pos);
     const dvec3 at = prober.pos + prober.orient * ellipsoidSupport(semi, down);
-    probePoint(q, at, 0.0, int(prober.probes.size() + kRimIds * prober.rims.size()), at, {});
+    probePoint(q, at, 0.0, sideKey(prober), at, {});
 }
 
 // A sphere of the prober at `at` against the shape: by its `near` parts where probing part by
@@ -1163,6 +1232,28 @@ void RigidBodies::probeRim(const Probing& q, int r, std::span<const int> near) {
             bend > 0.0 ? std::clamp(0.5 * (before - after) / bend, -0.5, 0.5) : 0.0;
         const dvec3 at = prober.pos + prober.orient * rimPoint(rim, double(k) + shift);
         probePoint(q, at, rim.tube, fixed + k, at, near);
+    }
+}
+
+// The prober's side against the shape, by the sphere where its axis comes nearest the shape
+// between the rims (nearestOnSide), keyed after the rims.
+void RigidBodies::probeSide(const Probing& q, std::span<const int> near) {
+    const RigidBody &prober = q.prober, &shape = q.shape;
+    const Side side = worldSide(prober);
+    const dvec3 middle = 0.5 * (side.from + side.to);
+    const double most = sideBound(side) + q.reach;
+    if (!q.partwise &&
+        (glm::length(middle - shape.pos) >= shape.bound + most || beyondParts(shape, middle, most)))
+        return;
+    auto distance = [&](const dvec3& p) {
+        return q.partwise ? nearParts_.nearest(near, p).distance : distanceTo(shape, p);
+    };
+    const SideTouch touch =
+        nearestOnSide(distance, side.from, side.to, side.radius, q.reach,
+                      1e-6 * (prober.bound + shape.bound), kSideLevel * settings_.linearSlop);
+    for (int k = 0; k < touch.count; ++k) {
+        const dvec3 at = glm::mix(side.from, side.to, touch.t[k]);
+        probePoint(q, at, sideRadius(side, touch.t[k]), sideKey(prober) + k, at, near);
     }
 }
 
@@ -1330,9 +1421,16 @@ void RigidBodies::prepare(RigidContact& c) {
     if (const WarmImpulses* warm = kept_.find(c.key)) c.normalImpulse = warm->normal;
 }
 
-// The manifold's friction contact: its first point's, moved to the points' centre; and its rows.
+// The manifold's friction contact: its nearest point's, moved to the points' centre; and its
+// rows. A fast-turning body keeps speculative points on a static box's other faces in the
+// manifold: a spinning rod's far rim on a wall's end face came first, the friction's tangents
+// took its normal, and along one of them the friction row pushed against the point on the
+// wall's face (+30 % energy in one step).
 void RigidBodies::prepareFriction(Manifold& m) {
-    RigidContact f = contacts_[size_t(m.begin)];
+    int nearest = m.begin;
+    for (int i = m.begin + 1; i < m.end; ++i)
+        if (contacts_[size_t(i)].separation < contacts_[size_t(nearest)].separation) nearest = i;
+    RigidContact f = contacts_[size_t(nearest)];
     f.key |= 0xff;
     m.key = f.key;
     const int count = m.end - m.begin;

@@ -76,9 +76,10 @@ struct alignas(64) RigidBody {
     bool framed = false;
     bool exact = true;          // its SDF is exact: no projection onto the surface needed
     bool ellipsoid = false;     // probed at its support point along each surface's normal
-    int staticIds = 0;          // its first StaticCollider id (probes, rims, then the whole body)
+    int staticIds = 0;          // its first StaticCollider id (probes, rims, body, side)
     std::vector<Probe> probes;  // in the body's frame
     std::vector<Rim> rims;      // in the body's frame
+    std::optional<Side> side;   // in the body's frame: a cylinder's or a cone's
     // Boxes in the body's frame that no point is nearer than its shape (an exact object's own
     // box, a sharp union's members', unionParts), and the box about them all, which holds its
     // probes. No parts where its distance is a bound that may lie nearer.
@@ -200,8 +201,15 @@ private:
     void collidePair(int i, int j);
     void collideSphere(int i, PhysicsBody& sphere, int sphereIndex);
     void probeStatics(int i, std::vector<std::vector<Candidate>>& byFeature);
+    void addStaticCandidate(const RigidBody& b, const StaticHit& hit, const glm::dvec3& at,
+                            double radius, int probe, const glm::dvec3& centre,
+                            std::vector<std::vector<Candidate>>& byFeature);
+    void probeStaticSide(const RigidBody& b, double reach,
+                         std::vector<std::vector<Candidate>>& byFeature);
     void probeStaticProbes(const RigidBody& b, double reach,
                            std::vector<std::vector<Candidate>>& byFeature);
+    void meetStaticProbe(const RigidBody& b, const StaticProbe& p, int index, double reach,
+                         std::vector<std::vector<Candidate>>& byFeature);
     void probeShape(int prober, int shape, bool flip, int offset);
     struct Probing {  // one body's probes against another's shape, this step
         const RigidBody &prober, &shape;
@@ -228,6 +236,7 @@ private:
     glm::dvec3 normalBesideStaticProbe(const RigidBody& b, const StaticProbe& p,
                                        const glm::dvec3& normal);
     void probeRim(const Probing& q, int r, std::span<const int> near);
+    void probeSide(const Probing& q, std::span<const int> near);
     bool collideAnalytic(const RigidBody& a, const RigidBody& b);
     void dropUnreachable(const RigidBody& a, const RigidBody& b);
     double reachOf(const RigidBody& a, const RigidBody& b) const;

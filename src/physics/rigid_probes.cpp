@@ -123,6 +123,21 @@ std::array<dvec3, kRimPoints> rimPoints(const Rim& rim) {
     return points;
 }
 
+std::optional<Side> sideOf(const SdfObject& o) {
+    const double round = double(o.round);
+    if (o.type == ShapeType::Cylinder) {
+        const double h = 0.5 * double(o.height) - round, r = double(o.radius);
+        return Side{dvec3(0.0, -h, 0.0), dvec3(0.0, h, 0.0), {r, r}};
+    }
+    if (o.type != ShapeType::Cone) return std::nullopt;
+    const InsetCone c = insetCone(o, round);
+    const double slope = (c.r1 - c.r2) / (c.y1 - c.y0),
+                 cosine = 1.0 / std::sqrt(1.0 + slope * slope);
+    return Side{dvec3(0.0, c.y0, 0.0),
+                dvec3(0.0, c.y1, 0.0),
+                {c.r1 * cosine + round, c.r2 * cosine + round}};
+}
+
 dvec3 ellipsoidSupport(const dvec3& a, const dvec3& dir) {
     const dvec3 scaled = a * dir;
     const double len = glm::length(scaled);

@@ -7,16 +7,21 @@
 // (ρ = its tube), a sphere's centre, a pointed cone's apex. A cylinder's and a cone's rims are
 // probed, against each surface, at the rim's lowest point along that surface's normal
 // (rimSupport), so that a rolling cylinder touches exactly where a real one does; a rim lying
-// flat on it, at four. A rounded shape's corners and rims are its inset shape's, each holding a
-// sphere of the rounding's radius. An ellipsoid has no fixed probes: it touches at its support
-// point along the surface's normal (ellipsoidSupport), found against each surface in turn.
+// flat on it, at four; their sides, where a surface crosses them between the rims (Side). A
+// rounded shape's corners and rims are its inset shape's, each holding a sphere of the rounding's
+// radius. An ellipsoid has no fixed probes: it touches at its support point along the surface's
+// normal (ellipsoidSupport), found against each surface in turn.
 #pragma once
 
 #include "marchbox/scene/scene.h"
 #include "marchbox/scene/sdf.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <vector>
 
 namespace mb {
@@ -57,6 +62,81 @@ constexpr int kRimIds = 4 + kRimPoints;
 void rimBasis(const Rim& rim, glm::dvec3* u, glm::dvec3* v);
 glm::dvec3 rimPoint(const Rim& rim, double k);  // in the rim's frame, k sixteenths of a turn
 std::array<glm::dvec3, kRimPoints> rimPoints(const Rim& rim);  // rimPoint at k = 0, 1, … 15
+
+// A cylinder's or a cone's side: the surface that spheres centred on its axis sweep, from `from`
+// to `to` (its rims' centres), of radius `radius[0]` to `radius[1]`, each touching the side all
+// round (a cone's inscribed spheres, r·cos α). A surface that crosses the side between the rims,
+// as another cylinder lying across it does or a box's edge, meets neither rim: a column of
+// cylinders laid crosswise sank through itself. The side is probed by the sphere where the axis
+// comes nearest such a surface (nearestOnSide).
+struct Side {
+    glm::dvec3 from, to;
+    double radius[2];
+};
+std::optional<Side> sideOf(const SdfObject& o);  // in its own frame; none for other shapes
+
+// Where along a side (world `from` to `to`) F(t) = f(point) − radius(t) is least, for a distance
+// f that is convex along the axis: one t in (0, 1), found by golden sections to kSideStep; or,
+// where F stays within `level` of its least along a stretch (a side lying across a box's face),
+// the two ends of that stretch: a bar laid on two pipes rocked on one point a pipe, crept along
+// them and never slept. A curved surface crossing the side comes within `level` over a stretch
+// too, whose ends then let it in up to `level` past its nearest point. None where F is least at an
+// end, whose rim meets the surface there (F does not fall by `noise`, f's rounding, a kSideStep in
+// from it: a side along a face never probes), or where the side lies out of `reach` by f's values
+// at the ends.
+constexpr double kSideStep = 1e-3;  // of the axis
+// Of the side's mean radius: F within `level` this far to one side of its least is a stretch.
+constexpr double kLevelSpan = 0.25;
+struct SideTouch {
+    double t[2];
+    int count = 0;
+};
+template <class Distance>
+SideTouch nearestOnSide(Distance f, const glm::dvec3& from, const glm::dvec3& to,
+                        const double (&radius)[2], double reach, double noise, double level) {
+    auto F = [&](double t) {
+        return f(from + t * (to - from)) - (radius[0] + t * (radius[1] - radius[0]));
+    };
+    const double f0 = F(0.0), f1 = F(1.0);
+    // F changes no faster than the axis's length and the radii's difference together.
+    const double steepest = glm::length(to - from) + std::abs(radius[1] - radius[0]);
+    if (0.5 * (f0 + f1 - steepest) >= reach) return {};
+    if (F(kSideStep) >= f0 - noise || F(1.0 - kSideStep) >= f1 - noise) return {};
+    const double gold = 0.5 * (std::sqrt(5.0) - 1.0);
+    double lo = kSideStep, hi = 1.0 - kSideStep;
+    double x1 = hi - gold * (hi - lo), x2 = lo + gold * (hi - lo);
+    double F1 = F(x1), F2 = F(x2);
+    while (hi - lo > kSideStep) {
+        if (F1 < F2) {
+            hi = x2, x2 = x1, F2 = F1;
+            x1 = hi - gold * (hi - lo), F1 = F(x1);
+        } else {
+            lo = x1, x1 = x2, F1 = F2;
+            x2 = lo + gold * (hi - lo), F2 = F(x2);
+        }
+    }
+    const double t = 0.5 * (lo + hi), least = std::min(F1, F2) + level;
+    const double span = kLevelSpan * (radius[0] + radius[1]) / std::max(steepest, 1e-300);
+    if (F(std::max(t - span, 0.0)) > least && F(std::min(t + span, 1.0)) > least)
+        return {{t, t}, 1};
+    // Level: each end of the stretch where F ≤ least, by bisection between t and the side's end.
+    auto edge = [&](double inside, double outside) {
+        while (std::abs(outside - inside) > kSideStep) {
+            const double mid = 0.5 * (inside + outside);
+            (F(mid) <= least ? inside : outside) = mid;
+        }
+        return inside;
+    };
+    return {{edge(t, 0.0), edge(t, 1.0)}, 2};
+}
+
+inline double sideRadius(const Side& s, double t) {
+    return s.radius[0] + t * (s.radius[1] - s.radius[0]);
+}
+// The radius about the side's middle that holds its spheres.
+inline double sideBound(const Side& s) {
+    return 0.5 * glm::length(s.to - s.from) + std::max(s.radius[0], s.radius[1]);
+}
 
 // The point of an ellipsoid (semi-axes, its own frame) furthest along unit `dir`: A²·d / |A·d|.
 glm::dvec3 ellipsoidSupport(const glm::dvec3& semiAxes, const glm::dvec3& dir);

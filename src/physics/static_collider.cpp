@@ -106,13 +106,22 @@ void StaticCollider::findProbes() {
                     local.push_back({tip, 0.0});
                 }
             const double tol = 1e-5 * std::max(double(o.bound), 1.0);
+            // Its own group's surface: another group's solid it lies in holds no body there.
+            auto held = [&](const glm::dvec3& centre, double radius) {
+                const double d = groupDistance(int(g), centre, radius + 2.0 * groups_[g].size);
+                return d <= -radius + tol && d >= -radius - std::max(tol, 0.25 * radius);
+            };
             for (const Probe& p : local) {
                 const glm::dvec3 centre = glm::dvec3(o.pos) + toWorld * p.local;
-                // Its own group's surface: another group's solid it lies in holds no body there.
-                const double d = groupDistance(int(g), centre, p.radius + 2.0 * groups_[g].size);
-                if (d > -p.radius + tol || d < -p.radius - std::max(tol, 0.25 * p.radius)) continue;
+                if (!held(centre, p.radius)) continue;
                 probes_.push_back({centre, p.radius, int(g) + 1});
                 probeRadius_ = std::max(probeRadius_, p.radius);
+            }
+            if (std::optional<Side> side = sideOf(o)) {  // held where its middle sphere is
+                side->from = glm::dvec3(o.pos) + toWorld * side->from;
+                side->to = glm::dvec3(o.pos) + toWorld * side->to;
+                if (held(0.5 * (side->from + side->to), sideRadius(*side, 0.5)))
+                    sides_.push_back({*side, int(g) + 1});
             }
         }
     }
@@ -312,6 +321,11 @@ void StaticCollider::query(int body, const glm::dvec3& centre, double radius, do
 StaticHit StaticCollider::hit(int feature, const glm::dvec3& centre, double radius) {
     localise(groups_[size_t(groupOf(feature))], centre, local_, false);
     return localHit(groupOf(feature), radius, localDistance(), 0.0, radius, kRecall);
+}
+
+double StaticCollider::surfaceDistance(int feature, const glm::dvec3& p) {
+    localise(groups_[size_t(groupOf(feature))], p, local_, false);
+    return localDistance();
 }
 
 double StaticCollider::localDistance() const { return mapObjects(local_, glm::vec3(0.0f)).d; }

@@ -21,6 +21,7 @@
 
 #include "marchbox/scene/scene.h"
 #include "marchbox/scene/sdf.h"
+#include "rigid_probes.h"
 #include "surface.h"
 
 #include <array>
@@ -39,6 +40,13 @@ struct StaticProbe {
     glm::dvec3 centre;  // world
     double radius;      // of the sphere about it that the static surface holds
     int feature;        // StaticHit::feature of the group it lies on
+};
+
+// A static cylinder's or cone's side (rigid_probes.h's Side, in the world) that its group's drawn
+// surface holds: a box's edge laid across a static pipe meets no point of the pipe's rims.
+struct StaticSide {
+    Side side;
+    int feature;  // StaticHit::feature of the group it lies on
 };
 
 struct StaticHit {
@@ -63,6 +71,13 @@ public:
 
     // One surface (StaticHit::feature, not the ground) seen from a sphere at `centre`.
     StaticHit hit(int feature, const glm::dvec3& centre, double radius);
+    // Its signed distance at p alone: its group's SDF, a bound where the group is loose.
+    double surfaceDistance(int feature, const glm::dvec3& p);
+    // Whether a feature is a static group's surface: neither the ground nor one of the further
+    // contacts that a carved group's search found (StaticHit::feature).
+    bool isGroupSurface(int feature) const {
+        return feature >= 1 && feature <= int(groups_.size());
+    }
 
     // How far a sphere at `centre` moving by `move` ends from surface `feature`, less the linear
     // guess s + n·move from hit(): the surface's curvature along the move, 0 on a flat face,
@@ -87,6 +102,7 @@ public:
 
     // The top-level static objects' probes on the drawn surface, sorted by centre.x for near().
     const std::vector<StaticProbe>& probes() const { return probes_; }
+    const std::vector<StaticSide>& sides() const { return sides_; }
     // The probes whose spheres come within `reach` of a sphere at `centre` of radius `radius`,
     // by x; the caller tests the rest of the reach.
     std::span<const StaticProbe> near(const glm::dvec3& centre, double radius, double reach) const;
@@ -181,8 +197,9 @@ private:
     std::vector<Surface> surfaces_;  // per feature: the ground, then each group, again per k
     int groupOf(int feature) const { return (feature - 1) % int(groups_.size()); }
 
-    void findProbes();  // probes_, once the groups are known
+    void findProbes();  // probes_ and sides_, once the groups are known
     std::vector<StaticProbe> probes_;
+    std::vector<StaticSide> sides_;
     double probeRadius_ = 0.0;  // the largest probe's
     bool ground_ = true;
     double floor_ = 0.0;

@@ -496,3 +496,46 @@ TEST(RigidContacts, CapsuleRollsAcrossABoxAtItsRadius) {
                 w.rigid(1).pos.x);
     EXPECT_LT(worst, 0.2 * w.settings().linearSlop);
 }
+
+// Bodies laid across a lying cylinder's side, where no rim of it and no corner or edge point of
+// theirs meets the other: each comes to rest on the side, its centre the radii above it, within
+// the slop (5 mm), and sleeps. Planted: no side probes (nearestOnSide finding nothing): every one
+// falls through the cylinder under it, to the ground.
+TEST(RigidContacts, BodiesLaidAcrossACylinderRestOnItsSide) {
+    const struct {
+        const char* name;
+        const char* scene;
+        int body;       // the one laid across, in scene order among the dynamic bodies
+        double height;  // where its centre rests
+    } cases[] = {
+        {"a cylinder across a static one",
+         "object type:cylinder pos:0,0.2,0 radius:0.2 height:2 rot:90,0,0 static:1\n"
+         "object type:cylinder pos:0,0.7,0 radius:0.2 height:2 rot:0,0,90 mass:1\n",
+         0, 0.6},
+        {"a cylinder across a lying one",
+         "object type:cylinder pos:0,0.2,0 radius:0.2 height:2 rot:90,0,0 mass:1\n"
+         "object type:cylinder pos:0,0.7,0 radius:0.2 height:2 rot:0,0,90 mass:1\n",
+         1, 0.6},
+        {"a bar across two static pipes",
+         "object type:cylinder pos:-0.3,0.1,0 radius:0.1 height:2 rot:90,0,0 static:1\n"
+         "object type:cylinder pos:0.3,0.1,0 radius:0.1 height:2 rot:90,0,0 static:1\n"
+         "object type:box pos:0,0.35,0 size:0.6,0.1,0.1 mass:1\n",
+         0, 0.3},
+        {"a cylinder across two static rails",
+         "object type:box pos:0.6,0.05,-0.5 size:1,0.05,0.05 static:1\n"
+         "object type:box pos:0.6,0.05,0.5 size:1,0.05,0.05 static:1\n"
+         "object type:cylinder pos:0,0.35,0 radius:0.2 height:2 rot:90,0,0 mass:1\n",
+         0, 0.3},
+    };
+    for (const auto& c : cases) {
+        PhysicsWorld w(sceneFromText(std::string("scene version:3\nworld restitution:0.3 "
+                                                 "friction:0.5\n") +
+                                     c.scene));
+        run(w, 5.0);
+        const RigidState laid = w.rigid(c.body);
+        std::printf("%s: rests at %.4f m (%.4f), %d awake\n", c.name, laid.pos.y, c.height,
+                    w.stats().awake);
+        EXPECT_NEAR(laid.pos.y, c.height, 0.005) << c.name;
+        EXPECT_EQ(w.stats().awake, 0) << c.name;
+    }
+}
