@@ -276,6 +276,30 @@ struct Cover {
     bool covered() const { return wanted > 0 && kept == wanted; }
 };
 
+namespace {
+
+// A member's side (`side`, in the group's frame) is kept where its middle's circle lies on the
+// combined surface, as a probe's, partial where the surface does not hold each of its spheres
+// (a tube's outer wall, whose axis is hollow): its contacts then count only where they touch
+// the group's own surface. Only a member that adds to the solid: a subtracted one's side faces
+// into the hole it carves.
+void considerSide(Side side, const Sampler& s, std::vector<Side>* sides) {
+    const dvec3 axis = glm::normalize(side.to - side.from);
+    const dvec3 u =
+        glm::normalize(glm::cross(axis, std::abs(axis.x) < 0.57 ? dvec3(1, 0, 0) : dvec3(0, 1, 0)));
+    const dvec3 v = glm::cross(axis, u);
+    for (int k = 0; k < 8; ++k) {
+        const double phi = 2.0 * M_PI * k / 8.0;
+        const dvec3 p = sideSurfacePoint(side, 0.5, std::cos(phi) * u + std::sin(phi) * v);
+        if (std::abs(s.f(p)) > s.tol) return;
+    }
+    for (const double t : {0.1, 0.5, 0.9})
+        side.partial |= !s.holds(glm::mix(side.from, side.to, t), sideRadius(side, t));
+    sides->push_back(side);
+}
+
+}  // namespace
+
 GroupProbes groupProbes(const GroupShape& shape) {
     GroupProbes out;
     if (shape.empty()) return out;
@@ -285,6 +309,7 @@ GroupProbes groupProbes(const GroupShape& shape) {
     // that the surface cuts, and the lattice's points by how many gathered on each.
     std::vector<Candidate> first, second, third;
     std::vector<Rim> rims;
+    std::vector<Side> sides;
     std::vector<Cover> cover(sdf.objects.size());
     // A rim is kept whole where all of its circle lies on the surface, on a convex edge (or a
     // rounded one's sphere); a concave edge (a cup's inner floor) can touch nothing first. Where
@@ -344,6 +369,20 @@ GroupProbes groupProbes(const GroupShape& shape) {
             for (const Feature& f :
                  imagesOf(sdf, o, {dvec3(o.pos) + turn * r.centre, turn * r.axis}))
                 considerRim({f.point, r.radius, glm::normalize(f.axis), r.tube}, int(i), &cover[i]);
+        if (const std::optional<Side> side = sideOf(o); side && o.op == CsgOp::Union)
+            for (const Feature& f : imagesOf(
+                     sdf, o, {dvec3(o.pos) + turn * side->from, turn * (side->to - side->from)})) {
+                Side image = *side;
+                image.from = f.point;
+                image.to = f.point + f.axis;
+                image.part = int(i);
+                for (int end = 0; end < 2; ++end)
+                    image.open[end] = std::none_of(rims.begin(), rims.end(), [&](const Rim& r) {
+                        return r.part == int(i) &&
+                               glm::length(r.centre - (end ? image.to : image.from)) <= s.tol;
+                    });
+                considerSide(image, s, &sides);
+            }
     }
     // The circles where a cylinder's or cone's side meets a coaxial one's cap: a cup's inner
     // rim, where the carved cylinder leaves the top; a tube's inner edges.
@@ -401,7 +440,9 @@ GroupProbes groupProbes(const GroupShape& shape) {
     // The closest spacing whose probes fit the contact keys (kRimIds a rim).
     if (int(rims.size()) * kRimIds > kMaxGroupProbeIds)
         rims.resize(size_t(kMaxGroupProbeIds / kRimIds));
-    const int room = kMaxGroupProbeIds - kRimIds * int(rims.size());
+    const int left = kMaxGroupProbeIds - kRimIds * int(rims.size());
+    if (int(sides.size()) * kSideIds > left) sides.resize(size_t(left / kSideIds));
+    const int room = left - kSideIds * int(sides.size());
     // The members' corners and held spheres, where they fit, are kept however near each other
     // (a thin top's upper corners lie a thickness from its lower ones): the body's own shape.
     // The spacing thins every other point, and only ever-closer copies of one corner.
@@ -424,6 +465,7 @@ GroupProbes groupProbes(const GroupShape& shape) {
         }
     }
     out.rims = rims;
+    out.sides = sides;
     return out;
 }
 

@@ -52,13 +52,14 @@ bool disjointUnionMoments(const GroupShape& shape, Moments* out);
 // nearer the group than the nearest box. Empty for every other group.
 std::vector<OrientedBox> unionParts(const GroupShape& shape);
 
-// Probes and rims on the combined surface, in the group's frame. At most kMaxGroupProbeIds
-// contact keys: a probe takes one, a rim kRimIds (rimSupport's four, and its sixteen fixed
-// points, which probe a group's shape).
+// Probes, rims and sides on the combined surface, in the group's frame. At most
+// kMaxGroupProbeIds contact keys: a probe takes one, a rim kRimIds (rimSupport's four, and its
+// sixteen fixed points, which probe a group's shape), a side kSideIds.
 constexpr int kMaxGroupProbeIds = 120;
 struct GroupProbes {
     std::vector<Probe> probes;
     std::vector<Rim> rims;
+    std::vector<Side> sides;
 };
 GroupProbes groupProbes(const GroupShape& shape);
 

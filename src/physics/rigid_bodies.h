@@ -79,7 +79,7 @@ struct alignas(64) RigidBody {
     int staticIds = 0;          // its first StaticCollider id (probes, rims, body, side)
     std::vector<Probe> probes;  // in the body's frame
     std::vector<Rim> rims;      // in the body's frame
-    std::optional<Side> side;   // in the body's frame: a cylinder's or a cone's
+    std::vector<Side> sides;    // in the body's frame: a cylinder's or a cone's, its members
     // Boxes in the body's frame that no point is nearer than its shape (an exact object's own
     // box, a sharp union's members', unionParts), and the box about them all, which holds its
     // probes. No parts where its distance is a bound that may lie nearer.
@@ -204,7 +204,7 @@ private:
     void addStaticCandidate(const RigidBody& b, const StaticHit& hit, const glm::dvec3& at,
                             double radius, int probe, const glm::dvec3& centre,
                             std::vector<std::vector<Candidate>>& byFeature);
-    void probeStaticSide(const RigidBody& b, double reach,
+    void probeStaticSide(const RigidBody& b, int k, double reach,
                          std::vector<std::vector<Candidate>>& byFeature);
     void probeStaticProbes(const RigidBody& b, double reach,
                            std::vector<std::vector<Candidate>>& byFeature);
@@ -236,7 +236,7 @@ private:
     glm::dvec3 normalBesideStaticProbe(const RigidBody& b, const StaticProbe& p,
                                        const glm::dvec3& normal);
     void probeRim(const Probing& q, int r, std::span<const int> near);
-    void probeSide(const Probing& q, std::span<const int> near);
+    void probeSide(const Probing& q, int k, std::span<const int> near);
     bool collideAnalytic(const RigidBody& a, const RigidBody& b);
     void dropUnreachable(const RigidBody& a, const RigidBody& b);
     double reachOf(const RigidBody& a, const RigidBody& b) const;

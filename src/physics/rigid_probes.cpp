@@ -138,6 +138,17 @@ std::optional<Side> sideOf(const SdfObject& o) {
                 {c.r1 * cosine + round, c.r2 * cosine + round}};
 }
 
+// The inscribed sphere of radius ρ touches a cone's side along its normal, tilted from `across`
+// towards the narrow end by α, where sin α is how fast ρ falls along the axis.
+dvec3 sideSurfacePoint(const Side& s, double t, const dvec3& across) {
+    const dvec3 axis = s.to - s.from;
+    const double length = glm::length(axis);
+    const double sine = length > 0.0 ? (s.radius[0] - s.radius[1]) / length : 0.0;
+    const dvec3 normal = std::sqrt(std::max(0.0, 1.0 - sine * sine)) * across +
+                         (length > 0.0 ? sine / length : 0.0) * axis;
+    return glm::mix(s.from, s.to, t) + sideRadius(s, t) * normal;
+}
+
 dvec3 ellipsoidSupport(const dvec3& a, const dvec3& dir) {
     const dvec3 scaled = a * dir;
     const double len = glm::length(scaled);

@@ -72,38 +72,75 @@ std::array<glm::dvec3, kRimPoints> rimPoints(const Rim& rim);  // rimPoint at k 
 struct Side {
     glm::dvec3 from, to;
     double radius[2];
+    int part = 0;                   // as a probe's
+    bool partial = false;           // as a probe's: a tube's outer side holds no sphere on its axis
+    bool open[2] = {false, false};  // an end with no rim (a table's leg under its top)
 };
-std::optional<Side> sideOf(const SdfObject& o);  // in its own frame; none for other shapes
+inline double sideRadius(const Side& s, double t) {
+    return s.radius[0] + t * (s.radius[1] - s.radius[0]);
+}
+// The radius about the side's middle that holds its spheres.
+inline double sideBound(const Side& s) {
+    return 0.5 * glm::length(s.to - s.from) + std::max(s.radius[0], s.radius[1]);
+}
 
-// Where along a side (world `from` to `to`) F(t) = f(point) − radius(t) is least, for a distance
-// f that is convex along the axis: one t in (0, 1), found by golden sections to kSideStep; or,
-// where F stays within `level` of its least along a stretch (a side lying across a box's face),
-// the two ends of that stretch: a bar laid on two pipes rocked on one point a pipe, crept along
-// them and never slept. A curved surface crossing the side comes within `level` over a stretch
-// too, whose ends then let it in up to `level` past its nearest point. None where F is least at an
-// end, whose rim meets the surface there (F does not fall by `noise`, f's rounding, a kSideStep in
-// from it: a side along a face never probes), or where the side lies out of `reach` by f's values
-// at the ends.
+std::optional<Side> sideOf(const SdfObject& o);  // in its own frame; none for other shapes
+// A side's contact keys: its nearest point, or the two ends of a level stretch (nearestOnSide).
+constexpr int kSideIds = 2;
+// Where the side's sphere at t touches it, in the direction `across` (unit, normal to the axis).
+glm::dvec3 sideSurfacePoint(const Side& s, double t, const glm::dvec3& across);
+
+// Where along a side (in the world) F(t) = f(point) − radius(t) is least: one t in (0, 1), found
+// by golden sections to kSideStep; or, where F stays within `level` of its least along a stretch
+// (a side lying across a box's face), the two ends of that stretch: a bar laid on two pipes
+// rocked on one point a pipe, crept along them and never slept. A curved surface crossing the
+// side comes within `level` over a stretch too, whose ends then let it in up to `level` past its
+// nearest point. For f convex along the axis (`scan` 0), none where F is least at an end, whose
+// rim meets the surface there (F does not fall by `noise`, f's rounding, a kSideStep in from it:
+// a side along a face never probes). A carved group's f is not convex (along a table's leg
+// under another table, the whole table's rose from one end, then fell below 0 near the other):
+// the least of `scan` samples between the ends brackets the search, or names the end. An `open`
+// end, with no rim, is probed itself where F is least there. None where the side lies out of
+// `reach` by f's values at the ends.
 constexpr double kSideStep = 1e-3;  // of the axis
 // Of the side's mean radius: F within `level` this far to one side of its least is a stretch.
 constexpr double kLevelSpan = 0.25;
 struct SideTouch {
     double t[2];
     int count = 0;
+    double least = 0.0;  // F there
 };
 template <class Distance>
-SideTouch nearestOnSide(Distance f, const glm::dvec3& from, const glm::dvec3& to,
-                        const double (&radius)[2], double reach, double noise, double level) {
-    auto F = [&](double t) {
-        return f(from + t * (to - from)) - (radius[0] + t * (radius[1] - radius[0]));
-    };
+SideTouch nearestOnSide(Distance f, const Side& side, double reach, double noise, double level,
+                        int scan) {
+    auto F = [&](double t) { return f(glm::mix(side.from, side.to, t)) - sideRadius(side, t); };
     const double f0 = F(0.0), f1 = F(1.0);
     // F changes no faster than the axis's length and the radii's difference together.
-    const double steepest = glm::length(to - from) + std::abs(radius[1] - radius[0]);
+    const double steepest =
+        glm::length(side.to - side.from) + std::abs(side.radius[1] - side.radius[0]);
     if (0.5 * (f0 + f1 - steepest) >= reach) return {};
-    if (F(kSideStep) >= f0 - noise || F(1.0 - kSideStep) >= f1 - noise) return {};
-    const double gold = 0.5 * (std::sqrt(5.0) - 1.0);
+    auto atEnd = [&](int end) {
+        return side.open[end] ? SideTouch{{double(end), double(end)}, 1, end ? f1 : f0}
+                              : SideTouch{};
+    };
     double lo = kSideStep, hi = 1.0 - kSideStep;
+    if (scan == 0) {
+        const bool least0 = F(kSideStep) >= f0 - noise, least1 = F(1.0 - kSideStep) >= f1 - noise;
+        if (least0 || least1) return atEnd(least0 ? 0 : 1);
+    } else {
+        int best = 0;
+        double least = f0;
+        for (int i = 1; i <= scan + 1; ++i) {
+            const double value = i == scan + 1 ? f1 : F(double(i) / (scan + 1));
+            if (value < least) least = value, best = i;
+        }
+        // Least at an end, but falling inwards from it: least between it and the next sample.
+        if (best == 0 && F(kSideStep) >= f0 - noise) return atEnd(0);
+        if (best == scan + 1 && F(1.0 - kSideStep) >= f1 - noise) return atEnd(1);
+        lo = std::max(lo, double(best - 1) / (scan + 1));
+        hi = std::min(hi, double(best + 1) / (scan + 1));
+    }
+    const double gold = 0.5 * (std::sqrt(5.0) - 1.0);
     double x1 = hi - gold * (hi - lo), x2 = lo + gold * (hi - lo);
     double F1 = F(x1), F2 = F(x2);
     while (hi - lo > kSideStep) {
@@ -116,9 +153,9 @@ SideTouch nearestOnSide(Distance f, const glm::dvec3& from, const glm::dvec3& to
         }
     }
     const double t = 0.5 * (lo + hi), least = std::min(F1, F2) + level;
-    const double span = kLevelSpan * (radius[0] + radius[1]) / std::max(steepest, 1e-300);
+    const double span = kLevelSpan * (side.radius[0] + side.radius[1]) / std::max(steepest, 1e-300);
     if (F(std::max(t - span, 0.0)) > least && F(std::min(t + span, 1.0)) > least)
-        return {{t, t}, 1};
+        return {{t, t}, 1, least - level};
     // Level: each end of the stretch where F ≤ least, by bisection between t and the side's end.
     auto edge = [&](double inside, double outside) {
         while (std::abs(outside - inside) > kSideStep) {
@@ -127,15 +164,7 @@ SideTouch nearestOnSide(Distance f, const glm::dvec3& from, const glm::dvec3& to
         }
         return inside;
     };
-    return {{edge(t, 0.0), edge(t, 1.0)}, 2};
-}
-
-inline double sideRadius(const Side& s, double t) {
-    return s.radius[0] + t * (s.radius[1] - s.radius[0]);
-}
-// The radius about the side's middle that holds its spheres.
-inline double sideBound(const Side& s) {
-    return 0.5 * glm::length(s.to - s.from) + std::max(s.radius[0], s.radius[1]);
+    return {{edge(t, 0.0), edge(t, 1.0)}, 2, least - level};
 }
 
 // The point of an ellipsoid (semi-axes, its own frame) furthest along unit `dir`: A²·d / |A·d|.

@@ -499,8 +499,9 @@ TEST(RigidContacts, CapsuleRollsAcrossABoxAtItsRadius) {
 
 // Bodies laid across a lying cylinder's side, where no rim of it and no corner or edge point of
 // theirs meets the other: each comes to rest on the side, its centre the radii above it, within
-// the slop (5 mm), and sleeps. Planted: no side probes (nearestOnSide finding nothing): every one
-// falls through the cylinder under it, to the ground.
+// the slop (5 mm), and sleeps. Groups too: a tube (carved, searched by a scan) and a group's
+// cylinder member (a union's part, searched as convex). Planted: no side probes (nearestOnSide
+// finding nothing): every one falls through the cylinder under it, the tube by 14 cm.
 TEST(RigidContacts, BodiesLaidAcrossACylinderRestOnItsSide) {
     const struct {
         const char* name;
@@ -521,6 +522,20 @@ TEST(RigidContacts, BodiesLaidAcrossACylinderRestOnItsSide) {
          "object type:cylinder pos:0.3,0.1,0 radius:0.1 height:2 rot:90,0,0 static:1\n"
          "object type:box pos:0,0.35,0 size:0.6,0.1,0.1 mass:1\n",
          0, 0.3},
+        {"a tube across a tube",
+         "group name:a pos:0,0.2,0 rot:90,0,0 mass:1\n"
+         "object in:a type:cylinder pos:0,0,0 radius:0.2 height:2\n"
+         "object in:a type:cylinder pos:0,0,0 radius:0.1 height:2.2 op:subtract\n"
+         "group name:b pos:0,0.7,0 rot:0,0,90 mass:1\n"
+         "object in:b type:cylinder pos:0,0,0 radius:0.2 height:2\n"
+         "object in:b type:cylinder pos:0,0,0 radius:0.1 height:2.2 op:subtract\n",
+         1, 0.6},
+        {"a group's leg across another's",
+         "group name:a pos:0,0.2,0 rot:90,0,0 mass:1\n"
+         "object in:a type:cylinder pos:0,0,0 radius:0.2 height:2\n"
+         "group name:b pos:0,0.7,0 rot:0,0,90 mass:1\n"
+         "object in:b type:cylinder pos:0,0,0 radius:0.2 height:2\n",
+         1, 0.6},
         {"a cylinder across two static rails",
          "object type:box pos:0.6,0.05,-0.5 size:1,0.05,0.05 static:1\n"
          "object type:box pos:0.6,0.05,0.5 size:1,0.05,0.05 static:1\n"

@@ -52,7 +52,8 @@ TEST(StaticGroups, ACupGroupCatchesABallOnWhatItsMembersLeave) {
     const double onBox = restingHeight(kCup, 4.0);
     EXPECT_NEAR(onBox, 0.8 + 0.2, slop + 1e-6) << "the box inside the cup is whole";
     std::string noBox = kCup;
-    noBox.erase(noBox.find("object type:box"), noBox.find("group name") - noBox.find("object type:box"));
+    noBox.erase(noBox.find("object type:box"),
+                noBox.find("group name") - noBox.find("object type:box"));
     const double onFloor = restingHeight(noBox, 4.0);
     EXPECT_NEAR(onFloor, 0.06 + 0.2, slop + 1e-6) << "on the cup's inner floor";
 }
