@@ -125,8 +125,14 @@ SideTouch nearestOnSide(Distance f, const Side& side, double reach, double noise
     };
     double lo = kSideStep, hi = 1.0 - kSideStep;
     if (scan == 0) {
-        const bool least0 = F(kSideStep) >= f0 - noise, least1 = F(1.0 - kSideStep) >= f1 - noise;
+        const double in0 = F(kSideStep), in1 = F(1.0 - kSideStep);
+        const bool least0 = in0 >= f0 - noise, least1 = in1 >= f1 - noise;
         if (least0 || least1) return atEnd(least0 ? 0 : 1);
+        // A convex F lies above each end's secant, extended: where the two lines cross, F's
+        // least is no lower. Most of the leasts between the ends lie out of reach so.
+        const double s0 = (in0 - f0) / kSideStep, s1 = (f1 - in1) / kSideStep;
+        const double cross = (f1 - s1 - f0) / (s0 - s1);
+        if (f0 + s0 * cross >= reach) return {};
     } else {
         int best = 0;
         double least = f0;
