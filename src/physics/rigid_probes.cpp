@@ -123,14 +123,17 @@ std::array<dvec3, kRimPoints> rimPoints(const Rim& rim) {
     return points;
 }
 
+// None where the rims meet (a rounding of half the height): its rims' spheres are all of it.
 std::optional<Side> sideOf(const SdfObject& o) {
     const double round = double(o.round);
     if (o.type == ShapeType::Cylinder) {
         const double h = 0.5 * double(o.height) - round, r = double(o.radius);
+        if (!(h > 0.0)) return std::nullopt;
         return Side{dvec3(0.0, -h, 0.0), dvec3(0.0, h, 0.0), {r, r}};
     }
     if (o.type != ShapeType::Cone) return std::nullopt;
     const InsetCone c = insetCone(o, round);
+    if (!(c.y1 > c.y0)) return std::nullopt;
     const double slope = (c.r1 - c.r2) / (c.y1 - c.y0),
                  cosine = 1.0 / std::sqrt(1.0 + slope * slope);
     return Side{dvec3(0.0, c.y0, 0.0),
