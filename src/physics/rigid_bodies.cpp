@@ -1200,8 +1200,8 @@ dvec3 RigidBodies::normalBesideCrease(const Probing& q, const dvec3& at, double 
 }
 
 // Rim r of the prober against the shape, or its `near` parts where probing part by part: its
-// support points along the shape's normal at its centre, and against a group's shape the
-// points along it where the shape comes nearest.
+// support points along the shape's normal at its centre, and against a group's shape, or for a
+// torus's core, the points along it where the shape comes nearest.
 void RigidBodies::probeRim(const Probing& q, int r, std::span<const int> near) {
     const RigidBody &prober = q.prober, &shape = q.shape;
     const Rim& rim = prober.rims[size_t(r)];
@@ -1227,10 +1227,13 @@ void RigidBodies::probeRim(const Probing& q, int r, std::span<const int> near) {
         probePoint(q, support[k], rim.tube, int(prober.probes.size() + 4 * r + k), support[k], near,
                    false, inset > 0.0 ? &retry : nullptr);
     }
-    if (!shape.groupShape) return;
+    const bool ring = !prober.groupShape && prober.shape.type == ShapeType::Torus;
+    if (!shape.groupShape && !ring) return;
     // A group's shape can meet the rim in several places, each where the distance along the
     // rim is least (a rim across another cup's rim touches it where the two edges cross):
     // sixteen points of the rim, and a parabola through each least one and its neighbours.
+    // So can any shape a torus's core: a bar laid across a ring crosses its tube twice, and
+    // met none of the four support points of a core lying flat under it, and fell through.
     const int fixed = int(prober.probes.size() + 4 * prober.rims.size() + kRimPoints * r);
     const std::array<dvec3, kRimPoints> points = rimPoints(rim);
     double f[kRimPoints];
