@@ -204,6 +204,8 @@ private:
     void addStaticCandidate(const RigidBody& b, const StaticHit& hit, const glm::dvec3& at,
                             double radius, int probe, const glm::dvec3& centre,
                             std::vector<std::vector<Candidate>>& byFeature);
+    void probeStaticRing(const RigidBody& b, int r, int feature, int id, double reach,
+                         std::vector<std::vector<Candidate>>& byFeature);
     void probeStaticSide(const RigidBody& b, int k, double reach,
                          std::vector<std::vector<Candidate>>& byFeature);
     void probeStaticProbes(const RigidBody& b, double reach,

@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 #include <optional>
 #include <vector>
@@ -171,6 +172,26 @@ SideTouch nearestOnSide(Distance f, const Side& side, double reach, double noise
         return inside;
     };
     return {{edge(t, 0.0), edge(t, 1.0)}, 2, least - level};
+}
+
+// Where a distance f comes nearest a rim (of a body at `pos`, turned by `orient`) along it, in
+// as many places as it has leasts: each of its sixteen points lower than the one before it and
+// no higher than the one after, its tube within `reach`, moved by the parabola through the
+// three. `found(point, k)` for each, k the point's index.
+template <class Distance, class Found>
+void leastAlongRim(const Rim& rim, const glm::dvec3& pos, const glm::dquat& orient, Distance f,
+                   double reach, Found found) {
+    const std::array<glm::dvec3, kRimPoints> points = rimPoints(rim);
+    double d[kRimPoints];
+    for (int k = 0; k < kRimPoints; ++k) d[k] = f(pos + orient * points[size_t(k)]);
+    for (int k = 0; k < kRimPoints; ++k) {
+        const double before = d[(k + kRimPoints - 1) % kRimPoints], after = d[(k + 1) % kRimPoints];
+        if (d[k] > before || d[k] >= after || d[k] - rim.tube >= reach) continue;
+        const double bend = before - 2.0 * d[k] + after;
+        const double shift =
+            bend > 0.0 ? std::clamp(0.5 * (before - after) / bend, -0.5, 0.5) : 0.0;
+        found(pos + orient * rimPoint(rim, double(k) + shift), k);
+    }
 }
 
 // The point of an ellipsoid (semi-axes, its own frame) furthest along unit `dir`: A²·d / |A·d|.
