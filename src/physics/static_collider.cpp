@@ -123,6 +123,14 @@ void StaticCollider::findProbes() {
                 if (held(0.5 * (side->from + side->to), sideRadius(*side, 0.5)))
                     sides_.push_back({*side, int(g) + 1});
             }
+            if (o.type != ShapeType::Torus) continue;
+            Rim core = rimsOf(o)[0];  // held where all its points are
+            core.centre = glm::dvec3(o.pos) + toWorld * core.centre;
+            core.axis = toWorld * core.axis;
+            const std::array<glm::dvec3, kRimPoints> points = rimPoints(core);
+            if (std::all_of(points.begin(), points.end(),
+                            [&](const glm::dvec3& p) { return held(p, core.tube); }))
+                rings_.push_back({core, int(g) + 1});
         }
     }
     std::sort(probes_.begin(), probes_.end(),

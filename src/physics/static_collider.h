@@ -49,6 +49,13 @@ struct StaticSide {
     int feature;  // StaticHit::feature of the group it lies on
 };
 
+// A static torus's core (rigid_probes.h's Rim, in the world) that its group's drawn surface holds
+// all round: a bar laid across a static ring crosses its tube between the core's fixed points.
+struct StaticRing {
+    Rim core;
+    int feature;
+};
+
 struct StaticHit {
     // 0 the ground plane, g + 1 static group g; g + 1 + G·k (G groups) for the contacts with a
     // carved group that its search found, k = 1 the nearest, k > 1 the others in reach (query()).
@@ -103,6 +110,7 @@ public:
     // The top-level static objects' probes on the drawn surface, sorted by centre.x for near().
     const std::vector<StaticProbe>& probes() const { return probes_; }
     const std::vector<StaticSide>& sides() const { return sides_; }
+    const std::vector<StaticRing>& rings() const { return rings_; }
     // The probes whose spheres come within `reach` of a sphere at `centre` of radius `radius`,
     // by x; the caller tests the rest of the reach.
     std::span<const StaticProbe> near(const glm::dvec3& centre, double radius, double reach) const;
@@ -197,9 +205,10 @@ private:
     std::vector<Surface> surfaces_;  // per feature: the ground, then each group, again per k
     int groupOf(int feature) const { return (feature - 1) % int(groups_.size()); }
 
-    void findProbes();  // probes_ and sides_, once the groups are known
+    void findProbes();  // probes_, sides_ and rings_, once the groups are known
     std::vector<StaticProbe> probes_;
     std::vector<StaticSide> sides_;
+    std::vector<StaticRing> rings_;
     double probeRadius_ = 0.0;  // the largest probe's
     bool ground_ = true;
     double floor_ = 0.0;
