@@ -368,7 +368,8 @@ GroupProbes groupProbes(const GroupShape& shape) {
         for (const Rim& r : rimsOf(o))
             for (const Feature& f :
                  imagesOf(sdf, o, {dvec3(o.pos) + turn * r.centre, turn * r.axis}))
-                considerRim({f.point, r.radius, glm::normalize(f.axis), r.tube}, int(i), &cover[i]);
+                considerRim({f.point, r.radius, glm::normalize(f.axis), r.tube, 0, r.core}, int(i),
+                            &cover[i]);
         if (const std::optional<Side> side = sideOf(o); side && o.op == CsgOp::Union)
             for (const Feature& f : imagesOf(
                      sdf, o, {dvec3(o.pos) + turn * side->from, turn * (side->to - side->from)})) {

@@ -661,7 +661,7 @@ bool groupBody(const Scene& scene, int g, std::map<std::string, GroupFound>& fou
         b.probes.push_back({toBody * (p.local - b.centre), p.radius, p.part, p.partial});
     for (const Rim& r : it->second.probes.rims)
         b.rims.push_back(
-            {toBody * (r.centre - b.centre), r.radius, toBody * r.axis, r.tube, r.part});
+            {toBody * (r.centre - b.centre), r.radius, toBody * r.axis, r.tube, r.part, r.core});
     for (Side side : it->second.probes.sides) {
         side.from = toBody * (side.from - b.centre);
         side.to = toBody * (side.to - b.centre);
@@ -903,7 +903,6 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
             add(hit, at, p.radius, int(k), at);
         }
     }
-    const bool ring = !b.groupShape && b.shape.type == ShapeType::Torus;
     for (size_t r = 0; r < b.rims.size(); ++r) {
         const Rim& rim = b.rims[r];
         const dvec3 c = b.pos + b.orient * rim.centre, axis = b.orient * rim.axis;
@@ -922,7 +921,7 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
                 if (rim.tube == 0.0) lookInside(b, id + 1, reach, surface.normal, c, &hit, &at);
                 add(hit, at, rim.tube, int(b.probes.size() + 4 * r + k), k == 0 && !flat ? c : at);
             }
-            if (ring && statics_.isGroupSurface(surface.feature))
+            if (rim.core && statics_.isGroupSurface(surface.feature))
                 probeStaticRing(b, int(r), surface.feature, id + 1, reach, byFeature);
         }
     }
@@ -1258,8 +1257,7 @@ void RigidBodies::probeRim(const Probing& q, int r, std::span<const int> near) {
         probePoint(q, support[k], rim.tube, int(prober.probes.size() + 4 * r + k), support[k], near,
                    false, inset > 0.0 ? &retry : nullptr);
     }
-    const bool ring = !prober.groupShape && prober.shape.type == ShapeType::Torus;
-    if (!shape.groupShape && !ring) return;
+    if (!shape.groupShape && !rim.core) return;
     // A group's shape can meet the rim in several places, each where the distance along the
     // rim is least (a rim across another cup's rim touches it where the two edges cross):
     // sixteen points of the rim, and a parabola through each least one and its neighbours.

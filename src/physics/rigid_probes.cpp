@@ -76,7 +76,7 @@ std::vector<Rim> rimsOf(const SdfObject& o) {
     // A torus is its core circle swept by its tube: a rim, whose support point rolls round it,
     // where 24 fixed points rolled as a polygon (on its edge at 2 m/s it slowed to 1 m/s in 2 s).
     if (o.type == ShapeType::Torus)
-        return {{dvec3(0.0), double(o.radius), dvec3(0, 1, 0), double(o.minor)}};
+        return {{dvec3(0.0), double(o.radius), dvec3(0, 1, 0), double(o.minor), 0, true}};
     const double round = double(o.round);
     if (o.type == ShapeType::Cylinder) {
         const double h = 0.5 * double(o.height) - round, r = double(o.radius) - round;

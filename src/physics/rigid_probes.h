@@ -48,7 +48,8 @@ struct Rim {
     double radius;
     glm::dvec3 axis{0.0, 1.0, 0.0};  // unit, normal to the rim's plane
     double tube = 0.0;
-    int part = 0;  // as a probe's
+    int part = 0;       // as a probe's
+    bool core = false;  // a torus's core: searched along against every shape (leastAlongRim)
 };
 std::vector<Rim> rimsOf(const SdfObject& o);
 std::vector<Rim> rimsOf(const Object& o);

@@ -558,21 +558,28 @@ TEST(RigidContacts, BodiesLaidAcrossACylinderRestOnItsSide) {
 // A bar laid across a ring lying flat crosses its tube twice, 30° from where the four support
 // points of its flat core stand (a static ring's fixed points, 22.5° apart, miss it by 7.5°): it
 // rests on the tube, its centre a tube's diameter and its own half height above the ground
-// (0.25 m), within 2 mm, and sleeps. Planted: the ring's core not searched along for the nearest
-// point, the bar falls through the ring to the ground (0.049 m); the static ring's, it sinks
-// 8.7 mm between the fixed points.
+// (0.25 m), within 2 mm, and sleeps: on a ring, a static ring, and a group's ring. Planted: the
+// ring's core not searched along for the nearest point, the bar falls through the ring to the
+// ground (0.049 m); the static ring's, it sinks 8.7 mm between the fixed points.
 TEST(RigidContacts, ABarLaidAcrossARingRestsOnItsTube) {
-    for (const char* ring : {"mass:1", "static:1"}) {
+    const struct {
+        const char* name;
+        const char* ring;
+    } cases[] = {{"a ring", "object type:torus pos:0,0.1,0 radius:0.5 minor:0.1 mass:1\n"},
+                 {"a static ring", "object type:torus pos:0,0.1,0 radius:0.5 minor:0.1 static:1\n"},
+                 {"a group's ring",
+                  "group name:ring pos:0,0.1,0 mass:1\n"
+                  "object in:ring type:torus pos:0,0,0 radius:0.5 minor:0.1\n"}};
+    for (const auto& c : cases) {
         PhysicsWorld w(sceneFromText(
-            std::string("scene version:3\nworld restitution:0.2 friction:0.5\n"
-                        "object type:torus pos:0,0.1,0 radius:0.5 minor:0.1 ") +
-            ring + "\nobject type:box pos:0,0.5,0 size:1,0.05,0.05 rot:0,30,0 mass:1\n"));
+            std::string("scene version:3\nworld restitution:0.2 friction:0.5\n") + c.ring +
+            "object type:box pos:0,0.5,0 size:1,0.05,0.05 rot:0,30,0 mass:1\n"));
         run(w, 3.0);
         const RigidState bar = w.rigid(w.rigidCount() - 1);
-        std::printf("bar on a ring of %s: rests at %.4f m (0.25), %d awake\n", ring, bar.pos.y,
+        std::printf("bar on %s: rests at %.4f m (0.25), %d awake\n", c.name, bar.pos.y,
                     w.stats().awake);
-        EXPECT_NEAR(bar.pos.y, 0.25, 0.002) << ring;
-        EXPECT_EQ(w.stats().awake, 0) << ring;
+        EXPECT_NEAR(bar.pos.y, 0.25, 0.002) << c.name;
+        EXPECT_EQ(w.stats().awake, 0) << c.name;
     }
 }
 
