@@ -284,10 +284,8 @@ namespace {
 // the group's own surface. Only a member that adds to the solid: a subtracted one's side faces
 // into the hole it carves.
 void considerSide(Side side, const Sampler& s, std::vector<Side>* sides) {
-    const dvec3 axis = glm::normalize(side.to - side.from);
-    const dvec3 u =
-        glm::normalize(glm::cross(axis, std::abs(axis.x) < 0.57 ? dvec3(1, 0, 0) : dvec3(0, 1, 0)));
-    const dvec3 v = glm::cross(axis, u);
+    dvec3 u, v;
+    rimBasis({side.from, 0.0, glm::normalize(side.to - side.from)}, &u, &v);
     for (int k = 0; k < 8; ++k) {
         const double phi = 2.0 * M_PI * k / 8.0;
         const dvec3 p = sideSurfacePoint(side, 0.5, std::cos(phi) * u + std::sin(phi) * v);

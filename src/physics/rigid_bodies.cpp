@@ -485,6 +485,13 @@ void applyCentre(FrictionRows& r, double sign) {
     }
 }
 
+// The contact keys of a body's rim r: its four support points' from rimKey, and its sixteen
+// points' (leastAlongRim), after every rim's support points, from rimPointKey.
+int rimKey(const RigidBody& b, int r) { return int(b.probes.size()) + 4 * r; }
+int rimPointKey(const RigidBody& b, int r) {
+    return int(b.probes.size() + 4 * b.rims.size()) + kRimPoints * r;
+}
+
 // The first contact key of a body's sides (probeSide, two each), after its probes' and its
 // rims': an ellipsoid's support point, which has neither rims nor sides, takes the same.
 int sideKey(const RigidBody& b) { return int(b.probes.size()) + kRimIds * int(b.rims.size()); }
@@ -919,7 +926,7 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
                 if (!found) continue;
                 StaticHit hit = *found;
                 if (rim.tube == 0.0) lookInside(b, id + 1, reach, surface.normal, c, &hit, &at);
-                add(hit, at, rim.tube, int(b.probes.size() + 4 * r + k), k == 0 && !flat ? c : at);
+                add(hit, at, rim.tube, rimKey(b, int(r)) + int(k), k == 0 && !flat ? c : at);
             }
             if (rim.core && statics_.isGroupSurface(surface.feature))
                 probeStaticRing(b, int(r), surface.feature, id + 1, reach, byFeature);
@@ -969,7 +976,7 @@ void RigidBodies::addStaticCandidate(const RigidBody& b, const StaticHit& hit, c
 void RigidBodies::probeStaticRing(const RigidBody& b, int r, int feature, int id, double reach,
                                   std::vector<std::vector<Candidate>>& byFeature) {
     const Rim& rim = b.rims[size_t(r)];
-    const int fixed = int(b.probes.size() + 4 * b.rims.size() + kRimPoints * r);
+    const int fixed = rimPointKey(b, r);
     auto distance = [&](const dvec3& p) { return statics_.surfaceDistance(feature, p); };
     leastAlongRim(rim, b.pos, b.orient, distance, reach, [&](const dvec3& at, int k) {
         if (const StaticHit* hit = hitOn(feature, id, at, rim.tube, reach, b.bound))
@@ -1254,8 +1261,8 @@ void RigidBodies::probeRim(const Probing& q, int r, std::span<const int> near) {
     for (size_t k = 0; k < support.size(); ++k) {
         WallRetry retry{normal, dvec3(0.0)};
         if (inset > 0.0) retry.move = inset * glm::normalize(c - support[k]);
-        probePoint(q, support[k], rim.tube, int(prober.probes.size() + 4 * r + k), support[k], near,
-                   false, inset > 0.0 ? &retry : nullptr);
+        probePoint(q, support[k], rim.tube, rimKey(prober, r) + int(k), support[k], near, false,
+                   inset > 0.0 ? &retry : nullptr);
     }
     if (!shape.groupShape && !rim.core) return;
     // A group's shape can meet the rim in several places, each where the distance along the
@@ -1263,7 +1270,7 @@ void RigidBodies::probeRim(const Probing& q, int r, std::span<const int> near) {
     // sixteen points of the rim, and a parabola through each least one and its neighbours.
     // So can any shape a torus's core: a bar laid across a ring crosses its tube twice, and
     // met none of the four support points of a core lying flat under it, and fell through.
-    const int fixed = int(prober.probes.size() + 4 * prober.rims.size() + kRimPoints * r);
+    const int fixed = rimPointKey(prober, r);
     leastAlongRim(rim, prober.pos, prober.orient, distance, rimReach, [&](const dvec3& at, int k) {
         probePoint(q, at, rim.tube, fixed + k, at, near);
     });
