@@ -321,6 +321,14 @@ double rowMass(const RowBodies& r, const dvec3& armA, const dvec3& turnA, const 
     return k > 0.0 ? 1.0 / k : 0.0;
 }
 
+// K⁻¹ of two rows whose K is [[k00, k01], [k01, k11]]. K is positive definite where either
+// side moves (each row's own mass is positive): 0 where neither does.
+PairMass invertPair(double k00, double k01, double k11) {
+    const double det = k00 * k11 - k01 * k01;
+    if (!(det > 0.0)) return {};
+    return {k11 / det, -k01 / det, k00 / det};
+}
+
 // What a normal row's arms do through each side's inverse inertia (world): the turns and the
 // row's mass.
 void setTurns(NormalRow& r, const dmat3& invInertiaA, const dmat3& invInertiaB) {
@@ -338,12 +346,19 @@ void setTurns(FrictionRows& r, const dmat3& invInertiaA, const dmat3& invInertia
     for (int k = 0; k < 2; ++k) {
         r.turnA[k] = invInertiaA * r.armA[k];
         r.turnB[k] = invInertiaB * r.armB[k];
-        r.tangentMass[k] = rowMass(r, r.armA[k], r.turnA[k], r.armB[k], r.turnB[k]);
         r.rollA[k] = r.invMassA > 0.0 ? invInertiaA * r.tangent[k] : dvec3(0.0);
         r.rollB[k] = r.invMassB > 0.0 ? invInertiaB * r.tangent[k] : dvec3(0.0);
-        const double turn = glm::dot(r.tangent[k], r.rollA[k] + r.rollB[k]);
-        r.rollMass[k] = turn > 0.0 ? 1.0 / turn : 0.0;
     }
+    // Tangent i's speed from tangent j's unit impulse: along it, and through each side's turn.
+    auto tangents = [&](int i, int j) {
+        double k = i == j ? r.invMassA + r.invMassB : 0.0;
+        if (r.invMassA > 0.0) k += glm::dot(r.armA[i], r.turnA[j]);
+        if (r.invMassB > 0.0) k += glm::dot(r.armB[i], r.turnB[j]);
+        return k;
+    };
+    auto rolls = [&](int i, int j) { return glm::dot(r.tangent[i], r.rollA[j] + r.rollB[j]); };
+    r.tangentMass = invertPair(tangents(0, 0), tangents(0, 1), tangents(1, 1));
+    r.rollMass = invertPair(rolls(0, 0), rolls(0, 1), rolls(1, 1));
     r.twistA = invInertiaA * r.normal;
     r.twistB = invInertiaB * r.normal;
 }
@@ -385,7 +400,8 @@ void tangentsOf(RigidContact& c) {
 // A manifold's friction, at its centre (c: the manifold's friction contact): Coulomb's disc
 // |λ_t| ≤ μ·Σλ_n, and the twist about the normal, |λ_w| ≤ μ·r·Σλ_n with r the points' mean
 // distance from the centre. Row by row at each point, the first point's friction would turn a
-// face that lands flat about its normal; at the centre, nothing but a twist can.
+// face that lands flat about its normal; at the centre, nothing but a twist can. The twist goes
+// first and the tangents meet the spin it left, as one pair (PairMass).
 void solveFriction(FrictionRows& r, double normalImpulse) {
     const double twist = glm::dot(r.normal, *r.spinB - (r.spinA ? *r.spinA : dvec3(0.0)));
     double w = r.twistImpulse - r.twistMass * twist;
@@ -393,12 +409,15 @@ void solveFriction(FrictionRows& r, double normalImpulse) {
     w = std::clamp(w, -twistLimit, twistLimit);
     const double dw = w - r.twistImpulse;
     r.twistImpulse = w;
-    double t[2], dt[2];
+    if (r.invMassA > 0.0) *r.spinA -= dw * r.twistA;
+    if (r.invMassB > 0.0) *r.spinB += dw * r.twistB;
+    double speed[2], t[2], dt[2];
     for (int k = 0; k < 2; ++k) {
-        double speed = glm::dot(r.tangent[k], *r.velB) + glm::dot(r.armB[k], *r.spinB);
-        if (r.velA) speed -= glm::dot(r.tangent[k], *r.velA) + glm::dot(r.armA[k], *r.spinA);
-        t[k] = r.tangentImpulse[k] - r.tangentMass[k] * speed;
+        speed[k] = glm::dot(r.tangent[k], *r.velB) + glm::dot(r.armB[k], *r.spinB);
+        if (r.velA) speed[k] -= glm::dot(r.tangent[k], *r.velA) + glm::dot(r.armA[k], *r.spinA);
     }
+    t[0] = r.tangentImpulse[0] + r.tangentMass.first(speed[0], speed[1]);
+    t[1] = r.tangentImpulse[1] + r.tangentMass.second(speed[0], speed[1]);
     // Impulses lie far from overflow: the root of the squares, not hypot's slower guard.
     const double limit = r.friction * normalImpulse, length = std::sqrt(t[0] * t[0] + t[1] * t[1]);
     for (int k = 0; k < 2; ++k) {
@@ -409,11 +428,11 @@ void solveFriction(FrictionRows& r, double normalImpulse) {
     const dvec3 p = dt[0] * r.tangent[0] + dt[1] * r.tangent[1];
     if (r.invMassA > 0.0) {
         *r.velA -= r.invMassA * p;
-        *r.spinA -= dw * r.twistA + dt[0] * r.turnA[0] + dt[1] * r.turnA[1];
+        *r.spinA -= dt[0] * r.turnA[0] + dt[1] * r.turnA[1];
     }
     if (r.invMassB > 0.0) {
         *r.velB += r.invMassB * p;
-        *r.spinB += dw * r.twistB + dt[0] * r.turnB[0] + dt[1] * r.turnB[1];
+        *r.spinB += dt[0] * r.turnB[0] + dt[1] * r.turnB[1];
     }
 }
 
@@ -449,9 +468,9 @@ Bounce bounceOf(const RigidContact& c, double accel, double dt) {
 // products with I⁻¹ every sweep, and took 9 % of a mixed pile's step.
 void solveRolling(FrictionRows& r, double normalImpulse) {
     const dvec3 w = *r.spinB - (r.spinA ? *r.spinA : dvec3(0.0));
-    double total[2];
-    for (int k = 0; k < 2; ++k)
-        total[k] = r.rollImpulse[k] - r.rollMass[k] * glm::dot(r.tangent[k], w);
+    const double turn0 = glm::dot(r.tangent[0], w), turn1 = glm::dot(r.tangent[1], w);
+    double total[2] = {r.rollImpulse[0] + r.rollMass.first(turn0, turn1),
+                       r.rollImpulse[1] + r.rollMass.second(turn0, turn1)};
     const double limit = r.rollLimit * normalImpulse;
     const double size = std::sqrt(total[0] * total[0] + total[1] * total[1]);
     if (size > limit) {

@@ -32,13 +32,24 @@ std::uint64_t rigidHash(const PhysicsWorld& w) {
     return h;
 }
 
+// The most kinetic plus m·g·y rises to over `seconds`, as a fraction of where it began.
+double mostEnergyGain(PhysicsWorld& w, double seconds) {
+    const double start = w.kineticEnergy() + w.potentialEnergy();
+    double most = start;
+    for (int i = 0; i < stepsFor(seconds, w.settings()); ++i) {
+        w.step();
+        most = std::max(most, w.kineticEnergy() + w.potentialEnergy());
+    }
+    return most / start - 1.0;
+}
+
 }  // namespace
 
 // A mixed pile (boxes, capsules, cylinders, spheres) falling into its bin for 1.5 s: the same
 // bytes on one thread and on two, and a golden hash. A change in any arithmetic of the rigid
 // bodies' step changes it: update it deliberately, with the reason in the commit.
 TEST(RigidWorld, MixedPileIsDeterministic) {
-    const std::uint64_t golden = 0x63acf8a93a1bf585ull;
+    const std::uint64_t golden = 0xcb3a2b351290c2f7ull;
     PhysicsSettings one, two;
     two.threads = 2;
     const Scene scene = mixedPileScene(120, 3);
@@ -117,28 +128,38 @@ TEST(RigidWorld, AThinRodHitByABoxGainsNoEnergy) {
         PhysicsWorld w(sceneFromText(std::string("scene version:3\nobject type:") + rod +
                                      " pos:0,1,0 radius:0.01 height:3 mass:1 rot:45,0,0\n"
                                      "object type:box pos:0,3,0 size:0.5,0.5,0.5 vel:0,-30,0\n"));
-        const double start = w.kineticEnergy() + w.potentialEnergy();
-        double most = start;
-        for (int i = 0; i < stepsFor(2.0, w.settings()); ++i) {
-            w.step();
-            most = std::max(most, w.kineticEnergy() + w.potentialEnergy());
-        }
-        std::printf("%s rod: energy at most %+.3g %% of its start\n", rod,
-                    100.0 * (most / start - 1.0));
-        EXPECT_LT(most, 1.01 * start) << "the " << rod << " rod gained energy";
+        const double gain = mostEnergyGain(w, 2.0);
+        std::printf("%s rod: energy at most %+.3g %% of its start\n", rod, 100.0 * gain);
+        EXPECT_LT(gain, 0.01) << "the " << rod << " rod gained energy";
     }
 }
 
-// Forty bins of 2 to 7 bodies of every shape thrown at up to 30 m/s, half of them thin (0.5 to
-// 3 m long, 5 to 50 mm across), of 0.01 to 100 kg, spinning, each body 3.2 m above the last so
-// that none overlaps another at the start: the same bound as the rod's. Measured: none gains
-// (at most +1e-12 %). Planted: the rows kept with the step's start's inverse inertias: 5 of the
-// 40 gain over 1 %, one of them 10²⁶⁶ times.
+// A capsule 2.8 m long and 5.6 cm thick thrown at a wall at 37 m/s, its axis along the wall:
+// friction's two tangents both turn it about its axis, 3,000 times more easily than across it.
+// The same bound as the rod's. Measured: +7e-14 %, at most 648 rad/s. Planted: each tangent
+// solved with its own mass: +1,650 %, 8,000 rad/s about its axis.
+TEST(RigidWorld, ARodThrownAlongAWallGainsNoEnergy) {
+    PhysicsWorld w(sceneFromText(
+        "scene version:3\nobject type:box pos:0,-0.5,0 size:3,0.5,3 static:1\n"
+        "object type:box pos:-3.5,1,0 size:0.5,2,3 static:1\n"
+        "object type:capsule pos:-0.12,1.6,0.6 radius:0.028 height:2.8 rot:-86,-5,-31 mass:10 "
+        "vel:-28.5,13.7,-19.8 spin:6.8,9.4,-4.4\n"));
+    const double gain = mostEnergyGain(w, 0.5);
+    std::printf("rod along a wall: energy at most %+.3g %% of its start\n", 100.0 * gain);
+    EXPECT_LT(gain, 0.01) << "the rod gained energy";
+}
+
+// Four hundred bins of 2 to 7 bodies of every shape thrown at up to 30 m/s, half of them thin
+// (0.5 to 3 m long, 5 to 50 mm across), of 0.01 to 100 kg, spinning, each body 3.2 m above the
+// last so that none overlaps another at the start: the same bound as the rod's. Measured: none
+// gains over 1 % (at most +0.09 %). Planted: the rows kept with the step's start's inverse
+// inertias: 5 of the first 40 gain over 1 %, one of them 10²⁶⁶ times; each friction tangent solved
+// with its own mass: 7 of the 400, one of them +228 %.
 TEST(RigidWorld, ThinFastBodiesInABinGainNoEnergy) {
     const char* types[] = {"sphere", "box", "torus", "capsule", "cylinder", "cone", "ellipsoid"};
     double worst = 0.0;
     int gained = 0;
-    for (unsigned seed = 0; seed < 40; ++seed) {
+    for (unsigned seed = 0; seed < 400; ++seed) {
         std::mt19937 random(seed);
         auto uniform = [&](double lo, double hi) {
             return std::uniform_real_distribution<double>(lo, hi)(random);
@@ -175,18 +196,12 @@ TEST(RigidWorld, ThinFastBodiesInABinGainNoEnergy) {
                     "\n";
         }
         PhysicsWorld w(sceneFromText(text));
-        const double start = w.kineticEnergy() + w.potentialEnergy();
-        double most = start;
-        for (int i = 0; i < stepsFor(1.5, w.settings()); ++i) {
-            w.step();
-            most = std::max(most, w.kineticEnergy() + w.potentialEnergy());
-        }
-        worst = std::max(worst, most / start - 1.0);
-        gained += most >= 1.01 * start;
-        EXPECT_LT(most, 1.01 * start) << "bin " << seed << " gained " << most / start << "\n"
-                                      << text;
+        const double gain = mostEnergyGain(w, 1.5);
+        worst = std::max(worst, gain);
+        gained += gain >= 0.01;
+        EXPECT_LT(gain, 0.01) << "bin " << seed << " gained " << gain << "\n" << text;
     }
-    std::printf("40 bins: %d gained over 1 %%, the most %+.3g %%\n", gained, 100.0 * worst);
+    std::printf("400 bins: %d gained over 1 %%, the most %+.3g %%\n", gained, 100.0 * worst);
 }
 
 // A cone 10¹⁰ m tall and 10⁻¹⁰ m wide, as the contract allows, stands 5·10⁹ m deep in the
