@@ -52,6 +52,11 @@ Scene boxStackScene(int count);  // unit boxes one on another on the ground, μ 
 Scene pyramidScene(int base);    // boxes of 0.5 m, `base` wide at the bottom, μ = 0.6, e = 0
 // A box 5 cm thick at `speed` along +x at a static wall 10 cm thick 2 m away; no gravity.
 Scene thinBoxScene(float speed);
+// Bin `seed` of the thin fast bodies: the ground and two walls 6 m apart, and 2 to 7 bodies of
+// every shape thrown in at up to 30 m/s, half of them thin (0.5 to 3 m long, 5 to 50 mm across),
+// of 0.01 to 100 kg, spinning, each 3.2 m above the last so that none touches another or the
+// ground at the start.
+Scene thinBodiesBin(std::uint32_t seed);
 Scene stackScene(float massRatio);                   // heavy on light, in a well barely wider
 Scene tunnelScene(float speed, float angleDegrees);  // at a 2 cm plate, angle from its normal
 Scene restingScene(float radius, float x);           // at rest on the ground at x

@@ -256,6 +256,42 @@ Scene thinBoxScene(float speed) {
     return s;
 }
 
+Scene thinBodiesBin(std::uint32_t seed) {
+    Scene s = physicsWorld(9.81f, 0.8f, 0.3f, true);
+    s.objects.push_back(staticBox({0, -0.5f, 0}, {3, 0.5f, 3}));
+    s.objects.push_back(staticBox({3.5f, 1, 0}, {0.5f, 2, 3}));
+    s.objects.push_back(staticBox({-3.5f, 1, 0}, {0.5f, 2, 3}));
+    const ShapeType types[] = {ShapeType::Sphere,   ShapeType::Box,      ShapeType::Torus,
+                               ShapeType::Capsule,  ShapeType::Cylinder, ShapeType::Cone,
+                               ShapeType::Ellipsoid};
+    Lcg rng{seed};
+    auto vec = [&](float lo, float hi) {
+        return glm::vec3(rng.range(lo, hi), rng.range(lo, hi), rng.range(lo, hi));
+    };
+    const int bodies = 2 + int(rng.range(0.0f, 6.0f));
+    for (int i = 0; i < bodies; ++i) {
+        Object o = dynamicSphere({rng.range(-1, 1), 1.6f + 3.2f * float(i), rng.range(-1, 1)}, 1.0f,
+                                 std::pow(10.0f, rng.range(-2, 2)));
+        o.type = types[int(rng.range(0.0f, 7.0f))];
+        const bool thin = rng.next() < 0.5f;
+        const float across = thin ? rng.range(0.005f, 0.05f) : rng.range(0.1f, 0.5f);
+        const float along = thin ? rng.range(0.5f, 3.0f) : rng.range(0.1f, 0.6f);
+        // Every shape `along` long: a sphere a third as wide, a torus across its ring.
+        o.radius = o.type == ShapeType::Sphere  ? along / 6.0f
+                   : o.type == ShapeType::Torus ? along / 2.0f
+                                                : across;
+        o.minor = std::min(across, along / 4.0f);
+        o.height = along;
+        o.size = {across, along / 2.0f, across};
+        o.rot = vec(-90, 90);
+        const float speed = rng.next() < 0.5f ? 30.0f : 3.0f;
+        o.vel = vec(-speed, speed);
+        o.spin = vec(-10, 10);
+        s.objects.push_back(o);
+    }
+    return s;
+}
+
 Scene stackScene(float massRatio) {
     Scene s = physicsWorld(9.81f, 0.0f, 0.3f, true);
     const float r = 0.5f;
