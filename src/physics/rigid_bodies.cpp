@@ -512,8 +512,9 @@ int rimPointKey(const RigidBody& b, int r) {
 }
 
 // The first contact key of a body's sides (probeSide, two each), after its probes' and its
-// rims': an ellipsoid's support point, which has neither rims nor sides, takes the same.
+// rims'; an ellipsoid's support point's, after its sides'.
 int sideKey(const RigidBody& b) { return int(b.probes.size()) + kRimIds * int(b.rims.size()); }
+int supportKey(const RigidBody& b) { return sideKey(b) + kSideIds * int(b.sides.size()); }
 
 // The body's side k (RigidBody::sides) in the world.
 Side worldSide(const RigidBody& b, int k) {
@@ -605,6 +606,7 @@ RigidBody objectBody(const Object& o, int index, const World& world) {
     b.probes = probesOf(o);
     b.rims = rimsOf(o);
     if (const std::optional<Side> side = sideOf(b.shape)) b.sides = {*side};
+    if (b.ellipsoid) b.sides = ellipsoidSides(dvec3(o.size));
     if (b.exact) setParts(b, {boxAbout(b.shape)});
     if (b.framed) {
         for (Probe& p : b.probes) p.local -= b.centre;
@@ -957,7 +959,7 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
     // An ellipsoid touches each surface at its support point along that surface's normal: the
     // normal seen from its centre first, then the one seen from that point (a curved surface's).
     const dvec3 semi(b.shape.size);
-    const int key = sideKey(b);
+    const int key = supportKey(b);
     statics_.query(lastId, b.pos, 0.0, std::max({semi.x, semi.y, semi.z}) + reach, hits_, b.bound);
     surfaces_ = hits_;
     for (const StaticHit& surface : surfaces_) {
@@ -1207,7 +1209,7 @@ void RigidBodies::probeShape(int proberIndex, int shapeIndex, bool flip, int off
     if (distanceTo(shape, prober.pos) >= longest + q.reach) return;
     const dvec3 down = glm::conjugate(prober.orient) * -normalAt(shape, prober.pos);
     const dvec3 at = prober.pos + prober.orient * ellipsoidSupport(semi, down);
-    probePoint(q, at, 0.0, sideKey(prober), at, {});
+    probePoint(q, at, 0.0, supportKey(prober), at, {});
 }
 
 // A sphere of the prober at `at` against the shape: by its `near` parts where probing part by

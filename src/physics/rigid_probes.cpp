@@ -40,6 +40,11 @@ InsetCone insetCone(const SdfObject& o, double r) {
 
 }  // namespace
 
+Elongation elongationOf(const dvec3& semi) {
+    const int along = semi.y >= semi.x && semi.y >= semi.z ? 1 : semi.x >= semi.z ? 0 : 2;
+    return {along, semi[along], std::min(semi[(along + 1) % 3], semi[(along + 2) % 3])};
+}
+
 std::vector<Probe> probesOf(const SdfObject& o) {
     std::vector<Probe> probes;
     const double h = 0.5 * double(o.height), round = double(o.round);
@@ -64,7 +69,13 @@ std::vector<Probe> probesOf(const SdfObject& o) {
             break;
         case ShapeType::Torus:  // its core circle, a rim swept by the tube
             break;
-        case ShapeType::Ellipsoid:  // its support point, against each surface
+        case ShapeType::Ellipsoid:  // its support point, against each surface; a long one's tips
+            if (const Elongation e = elongationOf(dvec3(o.size)); e.elongated())
+                for (const double end : {-1.0, 1.0}) {
+                    dvec3 centre(0.0);
+                    centre[e.along] = end * (e.c - e.tip());
+                    probes.push_back({centre, e.tip()});
+                }
             break;
     }
     return probes;
@@ -139,6 +150,28 @@ std::optional<Side> sideOf(const SdfObject& o) {
     return Side{dvec3(0.0, c.y0, 0.0),
                 dvec3(0.0, c.y1, 0.0),
                 {c.r1 * cosine + round, c.r2 * cosine + round}};
+}
+
+std::vector<Side> ellipsoidSides(const dvec3& semi) {
+    const Elongation e = elongationOf(semi);
+    if (!e.elongated()) return {};
+    const double end = e.c - e.tip();  // where the inscribed spheres' centres end
+    auto radius = [&](double along) {  // of the sphere inscribed about that point of the axis
+        return e.a * std::sqrt(std::max(0.0, 1.0 - along * along / (e.c * e.c - e.a * e.a)));
+    };
+    std::vector<Side> sides;
+    for (const double sign : {1.0, -1.0})
+        for (int k = 0; k < kEllipsoidChords; ++k) {
+            Side s{dvec3(0.0), dvec3(0.0), {0.0, 0.0}};
+            for (int i = 0; i < 2; ++i) {
+                const double along = end * std::sin(0.5 * M_PI * (k + i) / kEllipsoidChords);
+                (i ? s.to : s.from)[e.along] = sign * along;
+                s.radius[i] = radius(along);
+            }
+            s.open[0] = sign > 0.0 || k > 0;  // each joint probed by one chord
+            sides.push_back(s);
+        }
+    return sides;
 }
 
 // The inscribed sphere of radius ρ touches a cone's side along its normal, tilted from `across`

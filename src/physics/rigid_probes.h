@@ -87,6 +87,26 @@ inline double sideBound(const Side& s) {
 }
 
 std::optional<Side> sideOf(const SdfObject& o);  // in its own frame; none for other shapes
+// An ellipsoid's longest semi-axis c (along its frame's axis `along`) and the least of the
+// other two, a. One at least 1.5 times as long as it is thick is elongated: its tips are probed
+// by the spheres of their own curvature (radius tip(), inside the surface), for its support
+// point at the step's start is one tip, and a rod turning within the step brought the other
+// one down through the ground.
+struct Elongation {
+    int along;
+    double c, a;
+    bool elongated() const { return c >= 1.5 * a; }
+    double tip() const { return a * a / c; }
+};
+Elongation elongationOf(const glm::dvec3& semi);
+// An elongated ellipsoid's sides (none for another): the spheres inscribed on its longest axis,
+// whose radius falls from a at the centre to tip() where the tip's sphere takes over; each half
+// as kEllipsoidChords chords of that curve, spaced evenly in the angle of an ellipse's point
+// (within a tenth of a of the curve, less for a thicker one). Its support point meets a face,
+// not an edge that crosses its length (a rod laid across a wall's top fell through it), nor two
+// rails under it: the sides' search finds those. Each joint is probed by the chord beyond it.
+constexpr int kEllipsoidChords = 4;
+std::vector<Side> ellipsoidSides(const glm::dvec3& semi);
 // A side's contact keys: its nearest point, or the two ends of a level stretch (nearestOnSide).
 constexpr int kSideIds = 2;
 // Where the side's sphere at t touches it, in the direction `across` (unit, normal to the axis).

@@ -555,6 +555,50 @@ TEST(RigidContacts, BodiesLaidAcrossACylinderRestOnItsSide) {
     }
 }
 
+// A rod-like ellipsoid (1 m by 5 cm) laid across two static rails, whose support point under
+// its middle meets nothing: it rests on them, its centre 0.1 + 0.05·√(1 − 0.5²) m up (the
+// rails 0.5 m from its middle, within 2 mm), and sleeps. One 6 cm thick dropped tilted 10°
+// across a wall's top edge stays on the wall (its centre above the top). Measured: 0.1434 m
+// (0.1433); 1.032 m. Planted: no sides: the first falls between the rails to 0.049 m, the
+// second through the wall to 0.04 m.
+TEST(RigidContacts, AnEllipsoidLaidAcrossEdgesRestsOnThem) {
+    PhysicsWorld rails(
+        sceneFromText("scene version:3\nworld restitution:0.3 friction:0.5\n"
+                      "object type:box pos:0.6,0.05,-0.5 size:1,0.05,0.05 static:1\n"
+                      "object type:box pos:0.6,0.05,0.5 size:1,0.05,0.05 static:1\n"
+                      "object type:ellipsoid pos:0,0.3,0 size:0.05,1,0.05 rot:90,0,0 mass:1\n"));
+    run(rails, 2.0);
+    const double expected = 0.1 + 0.05 * std::sqrt(0.75);
+    std::printf("ellipsoid on rails: rests at %.4f m (%.4f), %d awake\n", rails.rigid(0).pos.y,
+                expected, rails.stats().awake);
+    EXPECT_NEAR(rails.rigid(0).pos.y, expected, 0.002);
+    EXPECT_EQ(rails.stats().awake, 0);
+    PhysicsWorld wall(
+        sceneFromText("scene version:3\nobject type:box pos:0,0.5,0 size:0.5,0.5,3 static:1\n"
+                      "object type:ellipsoid pos:0.3,1.2,0 size:1,0.03,0.03 rot:0,0,10 mass:1\n"));
+    run(wall, 2.0);
+    std::printf("ellipsoid across a wall's edge: centre at %.3f m\n", wall.rigid(0).pos.y);
+    EXPECT_GT(wall.rigid(0).pos.y, 1.0) << "the rod went through the wall";
+}
+
+// A rod-like ellipsoid 1.7 m long and 16 mm thick lands at 30 m/s nearly flat, its lower tip
+// first: the tip's contact stops that tip, and the rod turns flat within the step. Its centre
+// never goes deeper than its own half thickness (measured: 2 mm below the ground at the worst,
+// then it bounces). Planted: no tip probes (the step's contacts at the start's support point
+// alone): the rod's far half comes down through the ground, its centre to 0.63 m below it.
+TEST(RigidContacts, AThinEllipsoidTurningAsItLandsStaysOnTheGround) {
+    PhysicsWorld w(sceneFromText(
+        "scene version:3\nobject type:ellipsoid pos:0,0.45,0 size:0.008,0.85,0.008 "
+        "orient:-0.0588,-0.7443,0.6568,0.1052 mass:0.2 vel:5,-30.5,20 spin:-3.9,4.4,5.3\n"));
+    double lowest = w.rigid(0).pos.y;
+    for (int i = 0; i < stepsFor(0.5, w.settings()); ++i) {
+        w.step();
+        lowest = std::min(lowest, w.rigid(0).pos.y);
+    }
+    std::printf("landing rod: centre at least %.4f m high\n", lowest);
+    EXPECT_GT(lowest, -0.008) << "the rod went into the ground";
+}
+
 // A bar laid across a ring lying flat crosses its tube twice, 30° from where the four support
 // points of its flat core stand (a static ring's fixed points, 22.5° apart, miss it by 7.5°): it
 // rests on the tube, its centre a tube's diameter and its own half height above the ground
