@@ -74,8 +74,13 @@ struct alignas(64) RigidBody {
     glm::dvec3 centre{0.0};
     glm::dquat axes{1.0, 0.0, 0.0, 0.0};
     bool framed = false;
-    bool exact = true;          // its SDF is exact: no projection onto the surface needed
-    bool ellipsoid = false;     // probed at its support point along each surface's normal
+    bool exact = true;       // its SDF is exact: no projection onto the surface needed
+    bool ellipsoid = false;  // probed at its support point along each surface's normal
+    // A solid of revolution about its frame's y axis. Its turn about that axis moves no point of
+    // its surface: its contacts' points follow `untwisted`, its orientation less that turn since
+    // the step began, and their speeds along the normal leave the spin about it out (normalArm).
+    bool revolved = false;
+    glm::dquat untwisted{1.0, 0.0, 0.0, 0.0};
     int staticIds = 0;          // its first StaticCollider id (probes, rims, body, side)
     std::vector<Probe> probes;  // in the body's frame
     std::vector<Rim> rims;      // in the body's frame

@@ -246,4 +246,12 @@ void rotateFree(dquat& q, dvec3& spin, const dvec3& inertia, double h) {
     spin = q * (bodyMomentum / inertia);
 }
 
+dquat untwist(const dquat& q, const dquat& from) {
+    const dvec3 was = from * dvec3(0.0, 1.0, 0.0), now = q * dvec3(0.0, 1.0, 0.0);
+    const double cosine = glm::dot(was, now);
+    if (cosine < -1.0 + 1e-12) return q;  // turned right round: no least turn
+    const dvec3 sine = glm::cross(was, now);
+    return glm::normalize(dquat(1.0 + cosine, sine.x, sine.y, sine.z) * from);
+}
+
 }  // namespace mb

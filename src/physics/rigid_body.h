@@ -28,4 +28,9 @@ MassProperties massProperties(const Object& o);
 // splitting; rigid_body.cpp has both methods and the measured errors). q leaves normalised.
 void rotateFree(glm::dquat& q, glm::dvec3& spin, const glm::dvec3& inertia, double h);
 
+// The orientation that turns `from`'s y axis to q's by the least turn: q less its twist about
+// its own y axis since `from` (the swing of a swing-twist split); q itself where the axis
+// turned right round, which has no least turn.
+glm::dquat untwist(const glm::dquat& q, const glm::dquat& from);
+
 }  // namespace mb

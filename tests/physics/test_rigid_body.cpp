@@ -287,3 +287,20 @@ TEST(RigidBodyRotation, ASymmetricTopTurnsAsTheSplittingDoes) {
     const double apart = std::min(glm::length(exact.q - split.q), glm::length(exact.q + split.q));
     EXPECT_LT(apart, 1e-7);
 }
+
+// untwist: a body turned 1 rad about its own y axis and then 0.3 rad about the world's x keeps
+// q's y axis, and lies from where it began only as far as that axis turned (0.25 rad, the swing
+// alone); the twist alone leaves it where it began. Planted: q returned whole, 0.86 rad away.
+TEST(RigidBodyRotation, UntwistKeepsTheAxisAndDropsTheTurnAboutIt) {
+    const dquat from = glm::normalize(dquat(0.9, 0.2, -0.3, 0.25));
+    const dvec3 axis = from * dvec3(0.0, 1.0, 0.0);
+    const dquat twisted = glm::angleAxis(1.0, axis) * from;
+    const dquat q = glm::angleAxis(0.3, dvec3(1.0, 0.0, 0.0)) * twisted;
+    const dquat u = untwist(q, from);
+    EXPECT_LT(glm::length(u * dvec3(0, 1, 0) - q * dvec3(0, 1, 0)), 1e-12);
+    const double turned = 2.0 * std::acos(std::min(1.0, std::abs(glm::dot(u, from))));
+    const double swing = std::acos(glm::dot(axis, q * dvec3(0, 1, 0)));
+    EXPECT_NEAR(turned, swing, 1e-9) << "untwist turned more than its axis did";
+    const dquat still = untwist(twisted, from);
+    EXPECT_NEAR(std::abs(glm::dot(still, from)), 1.0, 1e-12);
+}
