@@ -159,7 +159,7 @@ struct ContactGap {
 
 // Two rows solved as one: K⁻¹ for their 2×2 effective mass K, where K's off-diagonal is what
 // one row's impulse does to the other's speed. Each row's own mass would let both answer a
-// motion they share, and give it twice over: a rod 3 cm thick lying against a wall spins about
+// motion they share, and give it twice over: a rod 6 cm thick lying against a wall spins about
 // its axis under both tangents' arms, and each sweep turned that spin back the other way,
 // larger (4,500 rad/s, three times the energy, within a step).
 struct PairMass {
