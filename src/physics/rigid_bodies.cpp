@@ -1083,12 +1083,18 @@ void RigidBodies::lookInside(const RigidBody& b, int id, double reach, const dve
 }
 
 // As normalBesideCrease, for a sharp probe of the body on an edge of a static surface. The
-// surface is sampled as the query sampled it, at the body's size.
+// surface is sampled as the query sampled it, at the body's size. A probe too thick to sample
+// beside the crease (its centre inside the surface, near an edge) takes the surface's normal
+// as the body's centre sees it: the creased samples sum to a normal with a part along the edge,
+// which slid a thin cone along a wall's end 0.32 m into the wall.
 dvec3 RigidBodies::staticNormalBesideCrease(const RigidBody& b, const StaticHit& hit,
                                             const dvec3& at, double radius) {
     const double inside = kBesideCrease * b.bound - radius;
-    if (inside <= 0.0) return hit.normal;
-    return statics_.hit(hit.feature, at - inside * normalAt(b, at), b.bound).normal;
+    if (inside > 0.0)
+        return statics_.hit(hit.feature, at - inside * normalAt(b, at), b.bound).normal;
+    const auto face = std::find_if(faces_.begin(), faces_.end(),
+                                   [&](const StaticHit& f) { return f.feature == hit.feature; });
+    return face != faces_.end() ? face->normal : hit.normal;
 }
 
 // As normalBesideCrease, for a static object's sharp probe on an edge of the body: the body's
