@@ -943,11 +943,8 @@ void RigidBodies::probeStatics(int i, std::vector<std::vector<Candidate>>& byFea
         for (StaticHit hit : surfaces_) {
             if (p.partial && !onOwnSurface(b, c - p.radius * hit.normal)) continue;
             dvec3 at = c;
-            const auto face = std::find_if(faces_.begin(), faces_.end(), [&](const StaticHit& f) {
-                return f.feature == hit.feature;
-            });
-            if (p.radius == 0.0 && face != faces_.end())
-                lookInside(b, id, reach, face->normal, b.pos, &hit, &at);
+            const StaticHit* face = faceOf(hit.feature);
+            if (p.radius == 0.0 && face) lookInside(b, id, reach, face->normal, b.pos, &hit, &at);
             add(hit, at, p.radius, int(k), at);
         }
     }
@@ -1054,6 +1051,13 @@ void RigidBodies::probeStaticSide(const RigidBody& b, int k, double reach,
     }
 }
 
+// The static surface `feature` as the body's centre sees it (probeStatics' faces_).
+const StaticHit* RigidBodies::faceOf(int feature) const {
+    const auto face = std::find_if(faces_.begin(), faces_.end(),
+                                   [feature](const StaticHit& f) { return f.feature == feature; });
+    return face == faces_.end() ? nullptr : &*face;
+}
+
 // The static surface `feature` as a sphere at `at` meets it within reach, in hits_; null where
 // it does not. `id` names the sphere for the query.
 const StaticHit* RigidBodies::hitOn(int feature, int id, const dvec3& at, double radius,
@@ -1092,9 +1096,8 @@ dvec3 RigidBodies::staticNormalBesideCrease(const RigidBody& b, const StaticHit&
     const double inside = kBesideCrease * b.bound - radius;
     if (inside > 0.0)
         return statics_.hit(hit.feature, at - inside * normalAt(b, at), b.bound).normal;
-    const auto face = std::find_if(faces_.begin(), faces_.end(),
-                                   [&](const StaticHit& f) { return f.feature == hit.feature; });
-    return face != faces_.end() ? face->normal : hit.normal;
+    const StaticHit* face = faceOf(hit.feature);
+    return face ? face->normal : hit.normal;
 }
 
 // As normalBesideCrease, for a static object's sharp probe on an edge of the body: the body's

@@ -245,6 +245,7 @@ private:
     void probePoint(const Probing& q, const glm::dvec3& at, double radius, int key,
                     const glm::dvec3& centre, std::span<const int> near, bool partial = false,
                     const WallRetry* retry = nullptr);
+    const StaticHit* faceOf(int feature) const;  // in faces_, null where that surface is not near
     const StaticHit* hitOn(int feature, int id, const glm::dvec3& at, double radius, double reach,
                            double size);
     void lookInside(const RigidBody& b, int id, double reach, const glm::dvec3& face,
