@@ -30,23 +30,10 @@ struct PairLanes {
     Lanes3<V> deltaA, deltaB;
 };
 
-// Lanes [first, first + widthOf<V>) of batch c: the whole batch with AVX, a half of it in the
-// baseline. Its fields stay kLanes wide in memory; at(field) loads these lanes of one.
 template <class V>
-struct Slice {
-    ContactBatch& c;
-    int first;
-
-    [[gnu::always_inline]] V operator()(const Lanes& field) const {
-        V v;
-        std::memcpy(&v, reinterpret_cast<const double*>(&field) + first, sizeof v);
-        return v;
-    }
-    [[gnu::always_inline]] void set(Lanes& field, const V& v) const {
-        std::memcpy(reinterpret_cast<double*>(&field) + first, &v, sizeof v);
-    }
+struct Slice : BatchSlice<V, ContactBatch> {
     [[gnu::always_inline]] Lanes3<V> normal() const {
-        return {(*this)(c.nx), (*this)(c.ny), (*this)(c.nz)};
+        return {(*this)(this->c.nx), (*this)(this->c.ny), (*this)(this->c.nz)};
     }
 };
 
@@ -412,7 +399,7 @@ template <class V>
     for (int i = pass.levelBegin[begin]; i < pass.levelBegin[end]; ++i) {
         ContactBatch& c = pass.batches[i];
         for (int first = 0; first < lanesHeld<V>(c); first += widthOf<V>) {
-            const Slice<V> at{c, first};
+            const Slice<V> at{{c, first}};
             if (!anyImpulse(at)) continue;
             PairLanes<V> s = gather(at);
             applyNormal(s, at, c.solve, at(c.normalImpulse) * at.normal());
@@ -430,7 +417,7 @@ template <class V, bool useBias>
         ContactBatch& c = pass.batches[i];
         const LaneRows& w = useBias ? c.solve : c.relax;
         for (int first = 0; first < lanesHeld<V>(c); first += widthOf<V>) {
-            const Slice<V> at{c, first};
+            const Slice<V> at{{c, first}};
             PairLanes<V> s = gather(at);
             if (!solveRows(at, s, pass.ctx, w, useBias)) continue;
             scatter(at, w, s, sink);

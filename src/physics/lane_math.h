@@ -12,6 +12,7 @@
 #include "contact_batches.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace mb {
 
@@ -61,6 +62,23 @@ template <class V>
     for (int i = 0; i < widthOf<V>; ++i) r[i] = std::sqrt(x[i]);
     return r;
 }
+
+// Lanes [first, first + widthOf<V>) of a batch c: the whole batch with AVX, a half of it in the
+// baseline. Its fields stay kLanes wide in memory; at(field) loads these lanes of one.
+template <class V, class Batch>
+struct BatchSlice {
+    Batch& c;
+    int first;
+
+    [[gnu::always_inline]] V operator()(const Lanes& field) const {
+        V v;
+        std::memcpy(&v, reinterpret_cast<const double*>(&field) + first, sizeof v);
+        return v;
+    }
+    [[gnu::always_inline]] void set(Lanes& field, const V& v) const {
+        std::memcpy(reinterpret_cast<double*>(&field) + first, &v, sizeof v);
+    }
+};
 
 template <class V>
 struct Lanes3 {

@@ -416,53 +416,6 @@ void tangentsOf(RigidContact& c) {
     c.tangent[1] = glm::cross(n, c.tangent[0]);
 }
 
-// A manifold's friction, at its centre (c: the manifold's friction contact): Coulomb's disc
-// |λ_t| ≤ μ·Σλ_n, and the twist about the normal, |λ_w| ≤ μ·r·Σλ_n with r the points' mean
-// distance from the centre. Row by row at each point, the first point's friction would turn a
-// face that lands flat about its normal; at the centre, nothing but a twist can. The twist goes
-// first and the tangents meet the spin it left, as one pair (PairMass).
-void solveFriction(FrictionRows& r, double normalImpulse) {
-    const double twist = glm::dot(r.normal, *r.spinB - (r.spinA ? *r.spinA : dvec3(0.0)));
-    double w = r.twistImpulse - r.twistMass * twist;
-    const double twistLimit = r.friction * r.twistArm * normalImpulse;
-    w = std::clamp(w, -twistLimit, twistLimit);
-    const double dw = w - r.twistImpulse;
-    r.twistImpulse = w;
-    if (r.invMassA > 0.0) *r.spinA -= dw * r.twistA;
-    if (r.invMassB > 0.0) *r.spinB += dw * r.twistB;
-    double speed[2], t[2], dt[2];
-    for (int k = 0; k < 2; ++k) {
-        speed[k] = glm::dot(r.tangent[k], *r.velB) + glm::dot(r.armB[k], *r.spinB);
-        if (r.velA) speed[k] -= glm::dot(r.tangent[k], *r.velA) + glm::dot(r.armA[k], *r.spinA);
-    }
-    t[0] = r.tangentImpulse[0] + r.tangentMass.first(speed[0], speed[1]);
-    t[1] = r.tangentImpulse[1] + r.tangentMass.second(speed[0], speed[1]);
-    // Impulses lie far from overflow: the root of the squares, not hypot's slower guard.
-    const double limit = r.friction * normalImpulse, length = std::sqrt(t[0] * t[0] + t[1] * t[1]);
-    for (int k = 0; k < 2; ++k) {
-        if (length > limit) t[k] *= limit / length;
-        dt[k] = t[k] - r.tangentImpulse[k];
-        r.tangentImpulse[k] = t[k];
-    }
-    const dvec3 p = dt[0] * r.tangent[0] + dt[1] * r.tangent[1];
-    if (r.invMassA > 0.0) {
-        *r.velA -= r.invMassA * p;
-        *r.spinA -= dt[0] * r.turnA[0] + dt[1] * r.turnA[1];
-    }
-    if (r.invMassB > 0.0) {
-        *r.velB += r.invMassB * p;
-        *r.spinB += dt[0] * r.turnB[0] + dt[1] * r.turnB[1];
-    }
-}
-
-// Whether the manifold's friction rows hold an impulse. One that holds none, under a manifold
-// that pushes nothing, has nothing to give: its limits are 0, and its rows would only be clamped
-// to 0 again (half of a pile of tables' manifolds, each sweep: speculative points not yet met).
-bool holdsFriction(const FrictionRows& r) {
-    return r.tangentImpulse[0] != 0.0 || r.tangentImpulse[1] != 0.0 || r.twistImpulse != 0.0 ||
-           r.rollImpulse[0] != 0.0 || r.rollImpulse[1] != 0.0;
-}
-
 // A bounce: the normal speed the contact leaves with at the step's end, and how far past the
 // surface the body should be by then (0 where it touched from the step's start).
 struct Bounce {
@@ -478,30 +431,6 @@ Bounce bounceOf(const RigidContact& c, double accel, double dt) {
     const double t = std::min(dt, 2.0 * s0 / (-v0 + root));
     const double after = dt - t, out = -c.restitution * (v0 + accel * t);
     return {out + accel * after, out * after + 0.5 * accel * after * after};
-}
-
-// Rolling resistance: an angular impulse against the relative spin across the normal (twist
-// about the normal is not rolling), about each tangent as the friction's rows, within the disc
-// |τ| ≤ rolling · r · Σλ_n with r the body's rolling radius. The rows' masses are
-// made once a step: one along the spin's own axis costs two square roots, two divisions and four
-// products with I⁻¹ every sweep, and took 9 % of a mixed pile's step.
-void solveRolling(FrictionRows& r, double normalImpulse) {
-    const dvec3 w = *r.spinB - (r.spinA ? *r.spinA : dvec3(0.0));
-    const double turn0 = glm::dot(r.tangent[0], w), turn1 = glm::dot(r.tangent[1], w);
-    double total[2] = {r.rollImpulse[0] + r.rollMass.first(turn0, turn1),
-                       r.rollImpulse[1] + r.rollMass.second(turn0, turn1)};
-    const double limit = r.rollLimit * normalImpulse;
-    const double size = std::sqrt(total[0] * total[0] + total[1] * total[1]);
-    if (size > limit) {
-        const double scale = limit / size;
-        total[0] *= scale;
-        total[1] *= scale;
-    }
-    const double d0 = total[0] - r.rollImpulse[0], d1 = total[1] - r.rollImpulse[1];
-    if (r.spinA) *r.spinA -= d0 * r.rollA[0] + d1 * r.rollA[1];
-    *r.spinB += d0 * r.rollB[0] + d1 * r.rollB[1];
-    r.rollImpulse[0] = total[0];
-    r.rollImpulse[1] = total[1];
 }
 
 // Whole impulses at a manifold's centre, as the warm start applies them and undo takes them
@@ -764,6 +693,7 @@ RigidBodies::RigidBodies(const Scene& scene, const PhysicsSettings& settings)
 ContactSide RigidBodies::sideOf(RigidBody& b, const dvec3& point, const dvec3& centre) {
     ContactSide s;
     s.rigid = &b;
+    s.body = int(&b - bodies_.data());
     s.vel = &b.vel;
     s.spin = &b.spin;
     s.delta = &b.delta;
@@ -830,11 +760,11 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     for (size_t i = 0; i < contacts_.size(); ++i) {
         prepare(contacts_[i]);
         if (i == 0 || (contacts_[i].key ^ contacts_[i - 1].key) >> 8 != 0)
-            manifolds_.push_back({int(i), int(i), 0, false, {}});
+            manifolds_.push_back({.begin = int(i), .rows = {}});
         manifolds_.back().end = int(i) + 1;
         manifolds_.back().impact |= contacts_[i].relativeVelocity < -kImpactSpeed;
     }
-    for (Manifold& m : manifolds_) prepareFriction(m);
+    for (RigidManifold& m : manifolds_) prepareFriction(m);
     measureStacks(int(spheres.size()));
     rows_.clear();
     gaps_.clear();
@@ -849,6 +779,8 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
         if (r.invMassA > 0.0 && r.invMassB > 0.0)  // a static or sleeping side is not pressed in
             massRatio_ = std::max({massRatio_, r.invMassA / r.invMassB, r.invMassB / r.invMassA});
     }
+    const int most = std::max(1, settings_.relaxSweeps);
+    batches_.load(rows_, manifolds_, count() + int(spheres.size()), most, kImpactSweeps * most);
 }
 
 // Each body's depth is one more than that of the deepest body it rests on, found up the
@@ -858,7 +790,7 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
 void RigidBodies::measureStacks(int spheres) {
     depths_.assign(size_t(count() + spheres), 0);
     stackDepth_ = 0;
-    for (const Manifold& m : manifolds_) {
+    for (const RigidManifold& m : manifolds_) {
         const RigidContact& c = contacts_[size_t(m.begin)];
         if (std::abs(c.normal.y) < 0.5) continue;
         const auto [first, second] = pairOf(c.key);
@@ -1467,6 +1399,7 @@ void RigidBodies::collideSphere(int i, PhysicsBody& sphere, int sphereIndex) {
     const dvec3 point = sphere.pos - (sphere.radius + 0.5 * separation) * s.normal;
     RigidContact k;
     k.a = sideOf(b, point, point);
+    k.b.body = count() + sphereIndex;
     k.b.vel = &sphere.vel;
     k.b.spin = &sphere.spin;
     k.b.delta = &sphere.delta;
@@ -1531,13 +1464,15 @@ void RigidBodies::prepare(RigidContact& c) {
 // manifold: a spinning rod's far rim on a wall's end face came first, the friction's tangents
 // took its normal, and along one of them the friction row pushed against the point on the
 // wall's face (+30 % energy in one step).
-void RigidBodies::prepareFriction(Manifold& m) {
+void RigidBodies::prepareFriction(RigidManifold& m) {
     int nearest = m.begin;
     for (int i = m.begin + 1; i < m.end; ++i)
         if (contacts_[size_t(i)].separation < contacts_[size_t(nearest)].separation) nearest = i;
     RigidContact f = contacts_[size_t(nearest)];
     f.key |= 0xff;
     m.key = f.key;
+    m.movesA = f.a.invMass > 0.0 ? f.a.body : -1;
+    m.movesB = f.b.invMass > 0.0 ? f.b.body : -1;
     const int count = m.end - m.begin;
     dvec3 a(0.0), b(0.0);
     for (int i = m.begin; i < m.end; ++i) {
@@ -1574,36 +1509,7 @@ void RigidBodies::prepareFriction(Manifold& m) {
 // Rows
 //-----------------------------------------------------------------------------
 
-void RigidBodies::warmStart() {
-    for (NormalRow& r : rows_) applyNormal(r, r.impulse);
-    for (Manifold& m : manifolds_) applyCentre(m.rows, 1.0);
-}
-
-// The normal row: speculative where apart (close the gap in this substep, no more), a soft
-// push-out beyond the slop in the solve pass, rigid in the relax pass.
-double RigidBodies::solveNormal(NormalRow& r, const Softness& soft, double h, bool useBias) {
-    const double s = r.separation;
-    double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
-    if (s > 0.0) {
-        bias = s / h;
-    } else if (useBias) {
-        bias = std::max(soft.biasRate * std::min(0.0, s + r.slop), -settings_.maxPushSpeed);
-        massScale = soft.massScale;
-        impulseScale = soft.impulseScale;
-    }
-    const double vn = normalSpeed(r);
-    const double impulse = -r.mass * massScale * (vn + bias) - impulseScale * r.impulse;
-    const double total = std::max(r.impulse + impulse, 0.0);
-    const double applied = total - r.impulse;
-    applyNormal(r, applied);
-    r.impulse = total;
-    r.maxImpulse = std::max(r.maxImpulse, total);
-    if (useBias && total > 0.0) {
-        if (r.supportedA) *r.supportedA = true;
-        *r.supportedB = true;
-    }
-    return r.mass > 0.0 ? std::abs(applied) / r.mass : 0.0;
-}
+void RigidBodies::warmStart() { batches_.warmStart(settings_.twoLanes); }
 
 // The relax pass sweeps a manifold's rows until no row changes its speed by kSweepTolerance,
 // at most settings.relaxSweeps times: the points of a face share one body, and one sweep in a fixed
@@ -1616,23 +1522,17 @@ double RigidBodies::solveNormal(NormalRow& r, const Softness& soft, double h, bo
 // relax pass's most: a box landing flat at 20 m/s was stopped by its first corner alone, turned,
 // and the ground's friction sent it 2 cm aside (39 cm at 60 m/s).
 void RigidBodies::solve(const Softness& soft, double h, bool useBias) {
-    const int most = std::max(1, settings_.relaxSweeps);
-    for (size_t i = 0; i < rows_.size(); ++i) rows_[i].separation = separationNow(gaps_[i]);
-    for (Manifold& m : manifolds_) {
-        const int sweeps = m.impact ? kImpactSweeps * most : useBias ? 1 : most;
-        for (int sweep = 0; sweep < sweeps; ++sweep) {
-            double change = 0.0;  // the largest speed a row changed by, m/s
-            for (int i = m.begin; i < m.end; ++i)
-                change = std::max(change, solveNormal(rows_[size_t(i)], soft, h, useBias));
-            double pushed = 0.0;
-            for (int i = m.begin; i < m.end; ++i) pushed += rows_[size_t(i)].impulse;
-            if (pushed > 0.0 || holdsFriction(m.rows)) {
-                if (rolling_ > 0.0) solveRolling(m.rows, pushed);
-                solveFriction(m.rows, pushed);
-            }
-            if (change < kSweepTolerance) break;
-        }
-    }
+    for (size_t i = 0; i < gaps_.size(); ++i)
+        batches_.setSeparation(int(i), separationNow(gaps_[i]));
+    ManifoldPass pass;
+    pass.h = h;
+    pass.biasRate = soft.biasRate;
+    pass.massScale = soft.massScale;
+    pass.impulseScale = soft.impulseScale;
+    pass.maxPushSpeed = settings_.maxPushSpeed;
+    pass.sweepTolerance = kSweepTolerance;
+    pass.rolling = rolling_ > 0.0;
+    batches_.solve(pass, useBias, settings_.twoLanes);
 }
 
 // After the substeps, approaching contacts that touched bounce: the normal velocity set to
@@ -1642,7 +1542,8 @@ void RigidBodies::solve(const Softness& soft, double h, bool useBias) {
 // static surface): it bounces with −e·(v0 + a·t*) and flies the rest of the step, so the body
 // ends where the bounce at t* takes it, not where the step's speculative row held it.
 void RigidBodies::restitute(double threshold, double gravity) {
-    for (Manifold& m : manifolds_) {
+    batches_.store(rows_, manifolds_);
+    for (RigidManifold& m : manifolds_) {
         const double accel = m.rows.velA ? 0.0 : -gravity * m.rows.normal.y;
         if (heldEarly(m, accel)) {
             undo(m);
@@ -1678,7 +1579,7 @@ void RigidBodies::restitute(double threshold, double gravity) {
 // Speculative rows look a substep ahead, so the last relax pass can stop a body short of a
 // surface it would only have reached next step: every point that pushed began the step apart
 // and would not have closed its gap in free flight by the step's end.
-bool RigidBodies::heldEarly(const Manifold& m, double accel) const {
+bool RigidBodies::heldEarly(const RigidManifold& m, double accel) const {
     bool pushed = false;
     for (int i = m.begin; i < m.end; ++i) {
         const RigidContact& c = contacts_[size_t(i)];
@@ -1691,7 +1592,7 @@ bool RigidBodies::heldEarly(const Manifold& m, double accel) const {
 }
 
 // Takes back everything the manifold's rows applied this substep: free flight goes on.
-void RigidBodies::undo(Manifold& m) {
+void RigidBodies::undo(RigidManifold& m) {
     for (int i = m.begin; i < m.end; ++i) {
         NormalRow& r = rows_[size_t(i)];
         applyNormal(r, -r.impulse);
@@ -1760,11 +1661,14 @@ void RigidBodies::followTurns() {
         if (!turned(i)) continue;
         const RigidContact& c = contacts_[i];
         setTurns(rows_[i], inertiaOf(c.a), inertiaOf(c.b));
+        batches_.setTurns(int(i), rows_[i]);
     }
-    for (Manifold& m : manifolds_) {
+    for (size_t k = 0; k < manifolds_.size(); ++k) {
+        RigidManifold& m = manifolds_[k];
         if (!turned(size_t(m.begin))) continue;
         const RigidContact& c = contacts_[size_t(m.begin)];
         setTurns(m.rows, inertiaOf(c.a), inertiaOf(c.b));
+        batches_.setTurns(int(k), m.rows);
     }
 }
 
@@ -1776,7 +1680,7 @@ void RigidBodies::finishStep() {
     for (size_t i = 0; i < contacts_.size() && !held;
          ++i)  // a point: its push; friction is the manifold's
         kept_.put(contacts_[i].key, {rows_[i].impulse, {0.0, 0.0}, 0.0, {0.0, 0.0}});
-    for (const Manifold& m : manifolds_) {
+    for (const RigidManifold& m : manifolds_) {
         if (held) break;
         const FrictionRows& r = m.rows;
         kept_.put(m.key, {0.0,

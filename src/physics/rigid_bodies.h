@@ -25,10 +25,12 @@
 #include "broadphase.h"
 #include "contact_solver.h"
 #include "group_body.h"
+#include "manifold_batches.h"
 #include "near_parts.h"
 #include "oriented_box.h"
 #include "pair_cache.h"
 #include "rigid_probes.h"
+#include "rigid_rows.h"
 #include "static_collider.h"
 #include "warm_starts.h"
 
@@ -110,6 +112,7 @@ struct AnchorPath {
 // What a contact's impulses move on one side: a rigid body, a sphere, or nothing (static).
 struct ContactSide : AnchorPath {
     RigidBody* rigid = nullptr;  // where the side is a rigid body
+    int body = -1;               // a rigid body's index, or count() + a sphere's; −1: static
     glm::dvec3* vel = nullptr;
     glm::dvec3* spin = nullptr;
     bool* supported = nullptr;
@@ -129,61 +132,12 @@ struct RigidContact {
     double relativeVelocity = 0.0;  // normal, at the step's start, for restitution
 };
 
-// What a row's impulses move on each side: the velocity and spin, and the inverse mass (0 for
-// a static or sleeping side, whose pointers may be null).
-struct RowBodies {
-    glm::dvec3 *velA = nullptr, *spinA = nullptr, *velB = nullptr, *spinB = nullptr;
-    double invMassA = 0.0, invMassB = 0.0;
-};
-
-// A contact's normal row as the sweeps read and write it: what they touch and nothing else, a
-// third of a RigidContact, so that a pile's rows stay in cache through the substeps.
-struct NormalRow : RowBodies {
-    bool *supportedA = nullptr, *supportedB = nullptr;
-    glm::dvec3 normal{0.0};
-    glm::dvec3 armA{0.0}, armB{0.0};    // anchor × normal, each side
-    glm::dvec3 turnA{0.0}, turnB{0.0};  // I⁻¹·arm: the spin a unit impulse gives
-    double mass = 0.0;                  // 1 / K along the normal
-    double impulse = 0.0, maxImpulse = 0.0;
-    double separation = 0.0;  // at this substep, for its sweeps
-    double slop = 0.0;
-};
-
 // What a substep reads of a contact to find its separation now: a third of a RigidContact, so
 // that a pile of 4,000 bodies' contacts is read from the cache rather than from memory.
 struct ContactGap {
     glm::dvec3 normal{0.0};
     double separation = 0.0;  // at the step's start
     AnchorPath a, b;
-};
-
-// Two rows solved as one: K⁻¹ for their 2×2 effective mass K, where K's off-diagonal is what
-// one row's impulse does to the other's speed. Each row's own mass would let both answer a
-// motion they share, and give it twice over: a rod 6 cm thick lying against a wall spins about
-// its axis under both tangents' arms, and each sweep turned that spin back the other way,
-// larger (4,500 rad/s, three times the energy, within a step).
-struct PairMass {
-    double m00 = 0.0, m01 = 0.0, m11 = 0.0;
-
-    // The impulses that bring speeds (s0, s1) to 0.
-    double first(double s0, double s1) const { return -(m00 * s0 + m01 * s1); }
-    double second(double s0, double s1) const { return -(m01 * s0 + m11 * s1); }
-};
-
-// A manifold's friction rows at its centre: all that a sweep reads and writes, with the crosses
-// and I⁻¹ products done once a step (each tangent's arm, anchor × tangent, and turn, I⁻¹·arm,
-// per side, the twist's I⁻¹·n, and rolling's I⁻¹·t about each tangent). The manifold keeps
-// these alone: the RigidContact they are made from is not read again this step.
-struct FrictionRows : RowBodies {
-    glm::dvec3 normal{0.0}, tangent[2];
-    glm::dvec3 armA[2], armB[2], turnA[2], turnB[2];
-    glm::dvec3 twistA{0.0}, twistB{0.0};
-    glm::dvec3 rollA[2], rollB[2];
-    double friction = 0.0, twistMass = 0.0, twistArm = 0.0;
-    PairMass tangentMass, rollMass;  // each pair of rows solved as one
-    double rollLimit = 0.0;  // rolling resistance · rolling radius: the torque's bound a push
-    double tangentImpulse[2] = {0.0, 0.0}, twistImpulse = 0.0;  // from last step's, on
-    double rollImpulse[2] = {0.0, 0.0};                         // about the tangents
 };
 
 class RigidBodies {
@@ -268,8 +222,6 @@ private:
     // `centre`: the probe's, where b holds it; else the point itself, a point of b's surface.
     ContactSide sideOf(RigidBody& b, const glm::dvec3& point, const glm::dvec3& centre);
     void prepare(RigidContact& c);
-    // Returns how much the row changed the contact's normal speed, m/s.
-    double solveNormal(NormalRow& r, const Softness& soft, double h, bool useBias);
     void wake(std::vector<PhysicsBody>& spheres);
     void updateSleep();
 
@@ -287,16 +239,11 @@ private:
     double massRatio_ = 1.0;   // see massRatio()
     int stackDepth_ = 0;       // see stackDepth()
     std::vector<int> depths_;  // per body, then per sphere: its depth in its stack
-    struct Manifold {
-        int begin, end;     // in contacts_
-        std::uint64_t key;  // its friction's, for warm starting
-        bool impact;        // a point came in faster than kImpactSpeed: swept until it settles
-        FrictionRows rows;  // the points' friction and rolling, at their centre
-    };
-    void prepareFriction(Manifold& m);
-    bool heldEarly(const Manifold& m, double accel) const;
-    void undo(Manifold& m);
-    std::vector<Manifold> manifolds_;
+    void prepareFriction(RigidManifold& m);
+    bool heldEarly(const RigidManifold& m, double accel) const;
+    void undo(RigidManifold& m);
+    std::vector<RigidManifold> manifolds_;
+    ManifoldBatches batches_;  // rows_ and manifolds_ as the substeps solve them
     std::vector<Candidate> candidates_;
     // Scratch kept from call to call for its room: collideStatics' candidates by static surface,
     // collidePair's candidates before and their bins while they are split by their normals'

@@ -45,20 +45,24 @@ double mostEnergyGain(PhysicsWorld& w, double seconds) {
 }  // namespace
 
 // A mixed pile (boxes, capsules, cylinders, spheres) falling into its bin for 1.5 s: the same
-// bytes on one thread and on two, and a golden hash. A change in any arithmetic of the rigid
-// bodies' step changes it: update it deliberately, with the reason in the commit.
+// bytes on one thread and on two, in the baseline's halves of two lanes as in this CPU's four
+// (manifold_batches.cpp), and a golden hash. A change in any arithmetic of the rigid bodies'
+// step changes it: update it deliberately, with the reason in the commit.
 TEST(RigidWorld, MixedPileIsDeterministic) {
     const std::uint64_t golden = 0x39b6d6b5900470a5ull;
-    PhysicsSettings one, two;
+    PhysicsSettings one, two, halves;
     two.threads = 2;
+    halves.twoLanes = true;
     const Scene scene = mixedPileScene(120, 3);
-    PhysicsWorld a(scene, one), b(scene, two);
+    PhysicsWorld a(scene, one), b(scene, two), c(scene, halves);
     for (int i = 0; i < stepsFor(1.5, one); ++i) {
         a.step();
         b.step();
+        c.step();
     }
     ASSERT_GT(a.rigidCount(), 80);
     EXPECT_EQ(rigidHash(a), rigidHash(b)) << "two threads differ from one";
+    EXPECT_EQ(rigidHash(a), rigidHash(c)) << "two lanes at a time differ from four";
     EXPECT_EQ(rigidHash(a), golden) << "actual hash: 0x" << std::hex << rigidHash(a) << "ull";
 }
 
