@@ -382,6 +382,13 @@ void setTurns(FrictionRows& r, const dmat3& invInertiaA, const dmat3& invInertia
     r.twistB = invInertiaB * r.normal;
 }
 
+// A side's inverse inertia (world) as its rows take it: 0 where they hold it fixed. A rigid
+// body's is the one it had as the step's contacts were made (rowInertia), until it turns.
+dmat3 inverseInertiaOf(const ContactSide& s) {
+    if (s.invMass == 0.0) return dmat3(0.0);
+    return s.rigid ? s.rigid->rowInertia : dmat3(s.sphereInverseInertia);
+}
+
 NormalRow rowOf(const RigidContact& c, double slop) {
     NormalRow r;
     static_cast<RowBodies&>(r) = bodiesOf(c);
@@ -390,7 +397,7 @@ NormalRow rowOf(const RigidContact& c, double slop) {
     r.normal = c.normal;
     r.armA = normalArm(c.a, c.normal);
     r.armB = normalArm(c.b, c.normal);
-    setTurns(r, c.a.invInertia, c.b.invInertia);
+    setTurns(r, inverseInertiaOf(c.a), inverseInertiaOf(c.b));
     r.impulse = c.normalImpulse;
     r.slop = slop;
     return r;
@@ -407,13 +414,12 @@ double separationNow(const ContactGap& c) {
     return c.separation + glm::dot(c.normal, anchorMove(c.b) - anchorMove(c.a));
 }
 
-// Two unit tangents with the normal, from the normal alone, so a persisting contact keeps its
+// Two unit tangents with the normal n, from the normal alone, so a persisting contact keeps its
 // friction impulse's frame from step to step.
-void tangentsOf(RigidContact& c) {
-    const dvec3& n = c.normal;
+void tangentsOf(const dvec3& n, dvec3 (&tangent)[2]) {
     const dvec3 other = std::abs(n.x) < 0.57 ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
-    c.tangent[0] = glm::normalize(glm::cross(other, n));
-    c.tangent[1] = glm::cross(n, c.tangent[0]);
+    tangent[0] = glm::normalize(glm::cross(other, n));
+    tangent[1] = glm::cross(n, tangent[0]);
 }
 
 // A bounce: the normal speed the contact leaves with at the step's end, and how far past the
@@ -700,7 +706,6 @@ ContactSide RigidBodies::sideOf(RigidBody& b, const dvec3& point, const dvec3& c
     s.orient = b.revolved ? &b.untwisted : &b.orient;
     s.supported = &b.supported;
     s.invMass = b.awake ? b.invMass : 0.0;
-    s.invInertia = b.awake ? b.invInertia : dmat3(0.0);
     s.anchor = point - b.pos;
     s.localAnchor = glm::conjugate(b.orient) * (centre - b.pos);
     s.offset = point - centre;
@@ -721,7 +726,7 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     centres_.resize(size_t(n + m));
     extents_.resize(size_t(n + m));
     margins_.resize(size_t(n));
-    // Placed when a group's pair first asks, into room that never moves while spans are held.
+    // Placed when a pair first asks, into room that never moves while spans are held.
     boxesFirst_.assign(size_t(n), -1);
     boxes_.clear();
     size_t room = 0;
@@ -1115,13 +1120,15 @@ std::span<const OrientedBox> RigidBodies::boxesOf(int i) {
     return {boxes_.data() + first, 1 + b.parts.size()};
 }
 
-// Whether a group and a body (or two groups) lie so far apart by their hulls, which hold their
-// probes, that no probe of either comes within the pair's reach of the other's parts: probing
-// would find nothing. Checked before the probes, most of which it spares: first each hull
-// against the sphere about the other body, then the hulls' separating axes.
+// Whether two bodies lie so far apart by their hulls, which hold their probes, that no probe of
+// either comes within the pair's reach of the other's parts: probing would find nothing. Checked
+// before the probes, most of which it spares: first each hull against the sphere about the other
+// body, then the hulls' separating axes. The broad phase's spheres overlap far more often than
+// the hulls do: of the mixed pile of 1000's pairs that are probed, 47 % find no point, and this
+// sees 81 % of those (a cylinder's hull is its own box; a bound's shape has none).
 bool RigidBodies::boxesApart(int i, int j) {
     const RigidBody &a = bodies_[size_t(i)], &b = bodies_[size_t(j)];
-    if ((!a.groupShape && !b.groupShape) || a.parts.empty() || b.parts.empty()) return false;
+    if (a.parts.empty() || b.parts.empty()) return false;
     const double reach = reachOf(a, b) + boxSlack(a) + boxSlack(b);
     const OrientedBox &hullA = boxesOf(i)[0], &hullB = boxesOf(j)[0];
     if (distanceToBox(hullA, b.pos) >= b.bound + reach ||
@@ -1329,7 +1336,7 @@ void RigidBodies::collidePair(int i, int j) {
     const bool cached = bi.groupShape || bj.groupShape;
     if (cached && boxesApart(i, j)) return;  // cheaper than the cache's lookup, and sure
     if (!cached || !pairCache_.reuse(pairKey(i, j), bi, bj, reach, &candidates_)) {
-        if (!collideAnalytic(bi, bj)) {
+        if (!collideAnalytic(bi, bj) && (cached || !boxesApart(i, j))) {
             probeShape(j, i, false, 0);
             probeShape(i, j, true, 128);
         }
@@ -1405,7 +1412,7 @@ void RigidBodies::collideSphere(int i, PhysicsBody& sphere, int sphereIndex) {
     k.b.delta = &sphere.delta;
     k.b.supported = &sphere.supported;
     k.b.invMass = sphere.awake ? sphere.invMass : 0.0;
-    k.b.invInertia = dmat3(sphere.awake ? sphere.invInertia : 0.0);
+    k.b.sphereInverseInertia = sphere.invInertia;
     k.b.anchor = point - sphere.pos;
     k.normal = s.normal;
     k.separation = separation;
@@ -1481,8 +1488,8 @@ void RigidBodies::prepareFriction(RigidManifold& m) {
     }
     f.a.anchor = a / double(count);
     f.b.anchor = b / double(count);
-    tangentsOf(f);
     FrictionRows& r = m.rows;
+    tangentsOf(f.normal, r.tangent);
     static_cast<RowBodies&>(r) = bodiesOf(f);
     r.normal = f.normal;
     r.friction = f.friction;
@@ -1496,13 +1503,12 @@ void RigidBodies::prepareFriction(RigidManifold& m) {
     // axis (a lying capsule's four points of five: it slowed 1.2 % fast).
     r.rollLimit = rolling_ * std::abs(glm::dot(f.b.anchor, f.normal));
     for (int k = 0; k < 2; ++k) {
-        r.tangent[k] = f.tangent[k];
         r.tangentImpulse[k] = warm ? warm->tangent[k] : 0.0;
-        r.armA[k] = glm::cross(f.a.anchor, f.tangent[k]);
-        r.armB[k] = glm::cross(f.b.anchor, f.tangent[k]);
+        r.armA[k] = glm::cross(f.a.anchor, r.tangent[k]);
+        r.armB[k] = glm::cross(f.b.anchor, r.tangent[k]);
         r.rollImpulse[k] = warm ? warm->roll[k] : 0.0;
     }
-    setTurns(r, f.a.invInertia, f.b.invInertia);
+    setTurns(r, inverseInertiaOf(f.a), inverseInertiaOf(f.b));
 }
 
 //-----------------------------------------------------------------------------
@@ -1654,20 +1660,17 @@ void RigidBodies::followTurns() {
         const auto [a, b] = rowRigids_[row];
         return (a >= 0 && bodies_[size_t(a)].turned) || (b >= 0 && bodies_[size_t(b)].turned);
     };
-    auto inertiaOf = [](const ContactSide& s) {
-        return s.rigid && s.invMass > 0.0 ? s.rigid->rowInertia : s.invInertia;
-    };
     for (size_t i = 0; i < rows_.size(); ++i) {
         if (!turned(i)) continue;
         const RigidContact& c = contacts_[i];
-        setTurns(rows_[i], inertiaOf(c.a), inertiaOf(c.b));
+        setTurns(rows_[i], inverseInertiaOf(c.a), inverseInertiaOf(c.b));
         batches_.setTurns(int(i), rows_[i]);
     }
     for (size_t k = 0; k < manifolds_.size(); ++k) {
         RigidManifold& m = manifolds_[k];
         if (!turned(size_t(m.begin))) continue;
         const RigidContact& c = contacts_[size_t(m.begin)];
-        setTurns(m.rows, inertiaOf(c.a), inertiaOf(c.b));
+        setTurns(m.rows, inverseInertiaOf(c.a), inverseInertiaOf(c.b));
         batches_.setTurns(int(k), m.rows);
     }
 }

@@ -117,14 +117,13 @@ struct ContactSide : AnchorPath {
     glm::dvec3* spin = nullptr;
     bool* supported = nullptr;
     double invMass = 0.0;
-    glm::dmat3 invInertia{0.0};
+    double sphereInverseInertia = 0.0;  // 1 / I, where the side is a sphere
 };
 
 struct RigidContact {
     ContactSide a, b;       // the normal points from a to b
     std::uint64_t key = 0;  // the pair and the probe, for warm starting
     glm::dvec3 normal{0.0, 1.0, 0.0};
-    glm::dvec3 tangent[2];
     double separation = 0.0;  // at the step's start; < 0 overlaps
     double height = 0.0;      // of its manifold's lowest point: solved bottom-up
     double friction = 0.0, restitution = 0.0;
@@ -276,7 +275,7 @@ private:
     std::vector<glm::dvec3> centres_;
     std::vector<double> extents_, margins_;
     // Each body's hull and then its parts, where they are this step (appendPlacedBoxes), placed
-    // the first time a pair with a group asks: body i's from boxesFirst_[i], −1 until then.
+    // the first time a pair asks: body i's from boxesFirst_[i], −1 until then.
     std::vector<OrientedBox> boxes_;
     std::vector<int> boxesFirst_;
     std::span<const OrientedBox> boxesOf(int i);
