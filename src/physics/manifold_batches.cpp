@@ -55,6 +55,73 @@ template <class V>
     p[3] = spin.x[l], p[4] = spin.y[l], p[5] = spin.z[l];
 }
 
+// Each lane's two bodies' motion since the step began, for its rows' separations.
+template <class V>
+struct PathLanes {
+    Lanes3<V> delta;
+    V x, y, z, w;          // the turn, a quaternion
+    Mask<V> moves, turns;  // a delta; a turn
+};
+
+template <class V>
+struct Paths {
+    PathLanes<V> a, b;
+};
+
+template <class V>
+[[gnu::always_inline]] inline void loadPath(PathLanes<V>& p, int l, const glm::dvec3* delta,
+                                            const glm::dquat* orient) {
+    if (delta) {
+        p.moves[l] = -1;
+        p.delta.x[l] = delta->x, p.delta.y[l] = delta->y, p.delta.z[l] = delta->z;
+    }
+    if (orient) {
+        p.turns[l] = -1;
+        p.x[l] = orient->x, p.y[l] = orient->y, p.z[l] = orient->z, p.w[l] = orient->w;
+    }
+}
+
+template <class V>
+[[gnu::always_inline]] inline Paths<V> gatherPaths(const Slice<V>& at) {
+    Paths<V> p{};
+    for (int l = 0; l < widthOf<V> && at.first + l < at.c.count; ++l) {
+        const int lane = at.first + l;
+        loadPath(p.a, l, at.c.deltaA[lane], at.c.orientA[lane]);
+        loadPath(p.b, l, at.c.deltaB[lane], at.c.orientB[lane]);
+    }
+    return p;
+}
+
+// q·v as glm turns a vector by a quaternion.
+template <class V>
+[[gnu::always_inline]] inline Lanes3<V> turn(const PathLanes<V>& q, const Lanes3<V>& v) {
+    const Lanes3<V> u{q.x, q.y, q.z};
+    const Lanes3<V> uv = cross(u, v), uuv = cross(u, uv);
+    return v + ((uv * q.w) + uuv) * splat<V>(2.0);
+}
+
+// How far a side's anchor moved since the step's start: its body's displacement and its turn.
+template <class V>
+[[gnu::always_inline]] inline Lanes3<V> anchorMove(const Slice<V>& at, const AnchorLanes& r,
+                                                   const PathLanes<V>& p) {
+    const Lanes3<V> none{};
+    const Lanes3<V> turned =
+        select(p.turns, turn(p, at(r.local)) + at(r.offset) - at(r.anchor), none);
+    return select(p.moves, p.delta + turned, none);
+}
+
+// Each row's separation now: at the step's start, and along its normal as far as its two
+// anchors have come towards each other since.
+template <class V>
+[[gnu::always_inline]] inline void separate(const Slice<V>& at, RowLanes* rows) {
+    const Paths<V> p = gatherPaths(at);
+    for (int i = 0; i < at.c.rows; ++i) {
+        RowLanes& r = rows[i];
+        const Lanes3<V> moved = anchorMove(at, r.pathB, p.b) - anchorMove(at, r.pathA, p.a);
+        at.set(r.separation, at(r.start) + dot(at(r.normal), moved));
+    }
+}
+
 // A static a reads as still, as it always did.
 template <class V>
 [[gnu::always_inline]] inline Sides<V> gather(const Slice<V>& at) {
@@ -226,6 +293,7 @@ template <class V, bool useBias>
 [[gnu::always_inline]] inline void solveSlice(const Slice<V>& at, RowLanes* rows,
                                               const ManifoldPass& p) {
     ManifoldBatch& c = at.c;
+    separate(at, rows);
     Sides<V> s = gather(at);
     const V sweeps = at(useBias ? c.solveSweeps : c.relaxSweeps), rowCount = at(c.rowCount);
     Mask<V> settled{}, pushed{};
@@ -333,7 +401,7 @@ void passAll(const Pass& pass) {
 
 }  // namespace
 
-void ManifoldBatches::load(const std::vector<NormalRow>& rows,
+void ManifoldBatches::load(const std::vector<NormalRow>& rows, const std::vector<ContactGap>& gaps,
                            const std::vector<RigidManifold>& manifolds, int bodies, int sweeps,
                            int impactSweeps) {
     const int n = int(manifolds.size());
@@ -384,8 +452,8 @@ void ManifoldBatches::load(const std::vector<NormalRow>& rows,
     rowSlot_.resize(rows.size());
     for (int m = 0; m < n; ++m) {
         const int slot = manifoldSlot_[size_t(m)];
-        place(batches_[size_t(slot / kLanes)], slot % kLanes, rows, manifolds[size_t(m)], sweeps,
-              impactSweeps);
+        place(batches_[size_t(slot / kLanes)], slot % kLanes, rows, gaps, manifolds[size_t(m)],
+              sweeps, impactSweeps);
     }
 }
 
@@ -409,13 +477,26 @@ void putTurns(ManifoldBatch& c, int l, const FrictionRows& f) {
     }
 }
 
+// A side's anchor path into lane l of a row.
+void putPath(AnchorLanes& to, int l, const AnchorPath& from) {
+    put(to.anchor, l, from.anchor);
+    put(to.local, l, from.localAnchor);
+    put(to.offset, l, from.offset);
+}
+
 void ManifoldBatches::place(ManifoldBatch& c, int l, const std::vector<NormalRow>& rows,
-                            const RigidManifold& m, int sweeps, int impactSweeps) {
+                            const std::vector<ContactGap>& gaps, const RigidManifold& m, int sweeps,
+                            int impactSweeps) {
     const FrictionRows& f = m.rows;
     c.a[l] = f.velA ? &f.velA->x : nullptr;
     c.b[l] = &f.velB->x;
     c.supportedA[l] = rows[size_t(m.begin)].supportedA;
     c.supportedB[l] = rows[size_t(m.begin)].supportedB;
+    const ContactGap& first = gaps[size_t(m.begin)];  // its rows' sides are its bodies
+    c.deltaA[l] = first.a.delta;
+    c.deltaB[l] = first.b.delta;
+    c.orientA[l] = first.a.orient;
+    c.orientB[l] = first.b.orient;
     c.rowCount[l] = m.end - m.begin;
     c.solveSweeps[l] = m.impact ? impactSweeps : 1;
     c.relaxSweeps[l] = m.impact ? impactSweeps : sweeps;
@@ -446,6 +527,9 @@ void ManifoldBatches::place(ManifoldBatch& c, int l, const std::vector<NormalRow
         r.impulse[l] = row.impulse;
         r.maxImpulse[l] = row.maxImpulse;
         r.slop[l] = row.slop;
+        r.start[l] = gaps[size_t(i)].separation;
+        putPath(r.pathA, l, gaps[size_t(i)].a);
+        putPath(r.pathB, l, gaps[size_t(i)].b);
         setTurns(i, row);
     }
 }
@@ -461,11 +545,6 @@ void ManifoldBatches::setTurns(int row, const NormalRow& r) {
 void ManifoldBatches::setTurns(int manifold, const FrictionRows& r) {
     const int slot = manifoldSlot_[size_t(manifold)];
     putTurns(batches_[size_t(slot / kLanes)], slot % kLanes, r);
-}
-
-void ManifoldBatches::setSeparation(int row, double separation) {
-    const int slot = rowSlot_[size_t(row)];
-    rows_[size_t(slot / kLanes)].separation[slot % kLanes] = separation;
 }
 
 void ManifoldBatches::warmStart(bool twoLanesOnly) {

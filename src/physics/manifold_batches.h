@@ -17,6 +17,7 @@
 #include "contact_batches.h"
 #include "rigid_rows.h"
 
+#include <glm/gtc/quaternion.hpp>
 #include <vector>
 
 namespace mb {
@@ -25,10 +26,17 @@ struct LaneVec {
     Lanes x, y, z;
 };
 
+// Where a side's point of each lane's row has gone (AnchorPath).
+struct AnchorLanes {
+    LaneVec anchor, local, offset;
+};
+
 // The normal rows of each lane's manifold that share a place in it.
 struct RowLanes {
     LaneVec normal, armA, armB, turnA, turnB;
-    Lanes mass, impulse, maxImpulse, separation, slop;
+    Lanes mass, impulse, maxImpulse, slop;
+    Lanes start, separation;  // at the step's start, and at this pass's
+    AnchorLanes pathA, pathB;
 };
 
 struct ManifoldBatch {
@@ -38,6 +46,11 @@ struct ManifoldBatch {
     double* b[kLanes];
     bool* supportedA[kLanes];
     bool* supportedB[kLanes];
+    // And their displacements and turns since the step began (AnchorPath's), null where none.
+    const glm::dvec3* deltaA[kLanes];
+    const glm::dvec3* deltaB[kLanes];
+    const glm::dquat* orientA[kLanes];
+    const glm::dquat* orientB[kLanes];
     int count = 0;     // lanes in use
     int rows = 0;      // RowLanes from firstRow: the most rows of its lanes' manifolds
     int firstRow = 0;  // in the batches' rows
@@ -62,18 +75,19 @@ struct ManifoldPass {
 
 class ManifoldBatches {
 public:
-    // Levels and batches for the manifolds in their solve order, from their rows; `bodies`: one
-    // more than the largest RigidManifold::movesA or movesB. A manifold sweeps at most
-    // `sweeps` times in the relax pass, once in the solve pass, and an impact `impactSweeps` times
-    // in both.
-    void load(const std::vector<NormalRow>& rows, const std::vector<RigidManifold>& manifolds,
-              int bodies, int sweeps, int impactSweeps);
+    // Levels and batches for the manifolds in their solve order, from their rows and the rows'
+    // gaps; `bodies`: one more than the largest RigidManifold::movesA or movesB. A manifold
+    // sweeps at most `sweeps` times in the relax pass, once in the solve pass, and an impact
+    // `impactSweeps` times in both.
+    void load(const std::vector<NormalRow>& rows, const std::vector<ContactGap>& gaps,
+              const std::vector<RigidManifold>& manifolds, int bodies, int sweeps,
+              int impactSweeps);
     // Every point's push, then every manifold's friction and rolling: the impulses so far.
     void warmStart(bool twoLanes);
-    // The solve pass (useBias) also sets the bodies' `supported` where a row pushed.
+    // Each pass finds its rows' separations from where the bodies are now; the solve pass
+    // (useBias) also sets the bodies' `supported` where a row pushed.
     void solve(const ManifoldPass& pass, bool useBias, bool twoLanes);
 
-    void setSeparation(int row, double separation);
     // A row's, or a manifold's friction rows', turns and masses, made again (followTurns).
     void setTurns(int row, const NormalRow& r);
     void setTurns(int manifold, const FrictionRows& r);
@@ -82,7 +96,8 @@ public:
 
 private:
     void place(ManifoldBatch& batch, int lane, const std::vector<NormalRow>& rows,
-               const RigidManifold& m, int sweeps, int impactSweeps);
+               const std::vector<ContactGap>& gaps, const RigidManifold& m, int sweeps,
+               int impactSweeps);
 
     std::vector<ManifoldBatch> batches_;
     std::vector<RowLanes> rows_;

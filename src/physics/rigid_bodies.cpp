@@ -403,17 +403,6 @@ NormalRow rowOf(const RigidContact& c, double slop) {
     return r;
 }
 
-// How far the anchor moved since the step's start: the body's displacement and its turn.
-dvec3 anchorMove(const AnchorPath& s) {
-    if (!s.delta) return dvec3(0.0);
-    const dvec3 turned = s.orient ? *s.orient * s.localAnchor + s.offset - s.anchor : dvec3(0.0);
-    return *s.delta + turned;
-}
-
-double separationNow(const ContactGap& c) {
-    return c.separation + glm::dot(c.normal, anchorMove(c.b) - anchorMove(c.a));
-}
-
 // Two unit tangents with the normal n, from the normal alone, so a persisting contact keeps its
 // friction impulse's frame from step to step.
 void tangentsOf(const dvec3& n, dvec3 (&tangent)[2]) {
@@ -785,7 +774,8 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
             massRatio_ = std::max({massRatio_, r.invMassA / r.invMassB, r.invMassB / r.invMassA});
     }
     const int most = std::max(1, settings_.relaxSweeps);
-    batches_.load(rows_, manifolds_, count() + int(spheres.size()), most, kImpactSweeps * most);
+    batches_.load(rows_, gaps_, manifolds_, count() + int(spheres.size()), most,
+                  kImpactSweeps * most);
 }
 
 // Each body's depth is one more than that of the deepest body it rests on, found up the
@@ -1528,8 +1518,6 @@ void RigidBodies::warmStart() { batches_.warmStart(settings_.twoLanes); }
 // relax pass's most: a box landing flat at 20 m/s was stopped by its first corner alone, turned,
 // and the ground's friction sent it 2 cm aside (39 cm at 60 m/s).
 void RigidBodies::solve(const Softness& soft, double h, bool useBias) {
-    for (size_t i = 0; i < gaps_.size(); ++i)
-        batches_.setSeparation(int(i), separationNow(gaps_[i]));
     ManifoldPass pass;
     pass.h = h;
     pass.biasRate = soft.biasRate;

@@ -97,18 +97,6 @@ struct alignas(64) RigidBody {
     glm::dvec3 origin() const;       // the shape's origin in the world (the scene's pos)
 };
 
-// Where a contact's point on one side has gone since the step began.
-struct AnchorPath {
-    const glm::dvec3* delta = nullptr;   // displacement this step; null: a static side
-    const glm::dquat* orient = nullptr;  // null where the anchor does not turn with the body
-    glm::dvec3 anchor{0.0};              // contact point − centre, world, at the step's start
-    // Where the anchor goes as the body turns: a point of the body (localAnchor, its frame) and
-    // an offset that stays put in the world. A corner turns with the body (offset 0); a round
-    // surface's contact stays below its centre, the probe's, which turns (offset −ρ·normal).
-    glm::dvec3 localAnchor{0.0};
-    glm::dvec3 offset{0.0};
-};
-
 // What a contact's impulses move on one side: a rigid body, a sphere, or nothing (static).
 struct ContactSide : AnchorPath {
     RigidBody* rigid = nullptr;  // where the side is a rigid body
@@ -129,14 +117,6 @@ struct RigidContact {
     double friction = 0.0, restitution = 0.0;
     double normalImpulse = 0.0;     // last step's, to start the row from
     double relativeVelocity = 0.0;  // normal, at the step's start, for restitution
-};
-
-// What a substep reads of a contact to find its separation now: a third of a RigidContact, so
-// that a pile of 4,000 bodies' contacts is read from the cache rather than from memory.
-struct ContactGap {
-    glm::dvec3 normal{0.0};
-    double separation = 0.0;  // at the step's start
-    AnchorPath a, b;
 };
 
 class RigidBodies {
@@ -231,7 +211,7 @@ private:
     Broadphase broadphase_;
     std::vector<RigidContact> contacts_;  // each manifold's points together, bottom-up
     std::vector<NormalRow> rows_;         // contacts_'s normal rows, in the same order
-    std::vector<ContactGap> gaps_;        // and their separations' inputs
+    std::vector<ContactGap> gaps_;        // and their separations' inputs, for batches_
     // And their sides' rigid bodies that move (-1: static, asleep or a sphere), for followTurns
     // to find the turned bodies' rows without reading every contact each substep.
     std::vector<std::array<int, 2>> rowRigids_;

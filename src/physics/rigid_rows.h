@@ -4,9 +4,30 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
 namespace mb {
+
+// Where a contact's point on one side has gone since the step began.
+struct AnchorPath {
+    const glm::dvec3* delta = nullptr;   // displacement this step; null: a static side
+    const glm::dquat* orient = nullptr;  // null where the anchor does not turn with the body
+    glm::dvec3 anchor{0.0};              // contact point − centre, world, at the step's start
+    // Where the anchor goes as the body turns: a point of the body (localAnchor, its frame) and
+    // an offset that stays put in the world. A corner turns with the body (offset 0); a round
+    // surface's contact stays below its centre, the probe's, which turns (offset −ρ·normal).
+    glm::dvec3 localAnchor{0.0};
+    glm::dvec3 offset{0.0};
+};
+
+// What a substep reads of a contact to find its separation now: the normal and the anchors'
+// paths, from which the lanes follow the bodies' motion since the step began.
+struct ContactGap {
+    glm::dvec3 normal{0.0};
+    double separation = 0.0;  // at the step's start
+    AnchorPath a, b;
+};
 
 // What a row's impulses move on each side: the velocity and spin, and the inverse mass (0 for
 // a static or sleeping side, whose pointers may be null).
