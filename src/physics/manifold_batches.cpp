@@ -57,7 +57,7 @@ template <class V>
 
 // Each lane's two bodies' motion since the step began, for its rows' separations.
 template <class V>
-struct PathLanes {
+struct BodyPath {
     Lanes3<V> delta;
     V x, y, z, w;          // the turn, a quaternion
     Mask<V> moves, turns;  // a delta; a turn
@@ -65,11 +65,11 @@ struct PathLanes {
 
 template <class V>
 struct Paths {
-    PathLanes<V> a, b;
+    BodyPath<V> a, b;
 };
 
 template <class V>
-[[gnu::always_inline]] inline void loadPath(PathLanes<V>& p, int l, const glm::dvec3* delta,
+[[gnu::always_inline]] inline void loadPath(BodyPath<V>& p, int l, const glm::dvec3* delta,
                                             const glm::dquat* orient) {
     if (delta) {
         p.moves[l] = -1;
@@ -94,7 +94,7 @@ template <class V>
 
 // q·v as glm turns a vector by a quaternion.
 template <class V>
-[[gnu::always_inline]] inline Lanes3<V> turn(const PathLanes<V>& q, const Lanes3<V>& v) {
+[[gnu::always_inline]] inline Lanes3<V> turn(const BodyPath<V>& q, const Lanes3<V>& v) {
     const Lanes3<V> u{q.x, q.y, q.z};
     const Lanes3<V> uv = cross(u, v), uuv = cross(u, uv);
     return v + ((uv * q.w) + uuv) * splat<V>(2.0);
@@ -103,7 +103,7 @@ template <class V>
 // How far a side's anchor moved since the step's start: its body's displacement and its turn.
 template <class V>
 [[gnu::always_inline]] inline Lanes3<V> anchorMove(const Slice<V>& at, const AnchorLanes& r,
-                                                   const PathLanes<V>& p) {
+                                                   const BodyPath<V>& p) {
     const Lanes3<V> none{};
     const Lanes3<V> turned =
         select(p.turns, turn(p, at(r.local)) + at(r.offset) - at(r.anchor), none);
@@ -113,12 +113,12 @@ template <class V>
 // Each row's separation now: at the step's start, and along its normal as far as its two
 // anchors have come towards each other since.
 template <class V>
-[[gnu::always_inline]] inline void separate(const Slice<V>& at, RowLanes* rows) {
+[[gnu::always_inline]] inline void separate(const Slice<V>& at, RowLanes* rows,
+                                            const PathLanes* paths) {
     const Paths<V> p = gatherPaths(at);
     for (int i = 0; i < at.c.rows; ++i) {
-        RowLanes& r = rows[i];
-        const Lanes3<V> moved = anchorMove(at, r.pathB, p.b) - anchorMove(at, r.pathA, p.a);
-        at.set(r.separation, at(r.start) + dot(at(r.normal), moved));
+        const Lanes3<V> moved = anchorMove(at, paths[i].b, p.b) - anchorMove(at, paths[i].a, p.a);
+        at.set(rows[i].separation, at(paths[i].start) + dot(at(rows[i].normal), moved));
     }
 }
 
@@ -291,9 +291,9 @@ template <class V>
 // settled (no row changed its speed by the tolerance) or spent its own sweeps.
 template <class V, bool useBias>
 [[gnu::always_inline]] inline void solveSlice(const Slice<V>& at, RowLanes* rows,
-                                              const ManifoldPass& p) {
+                                              const PathLanes* paths, const ManifoldPass& p) {
     ManifoldBatch& c = at.c;
-    separate(at, rows);
+    separate(at, rows, paths);
     Sides<V> s = gather(at);
     const V sweeps = at(useBias ? c.solveSweeps : c.relaxSweeps), rowCount = at(c.rowCount);
     Mask<V> settled{}, pushed{};
@@ -356,6 +356,7 @@ enum class Step { warmRows, warmCentres, solve, relax };
 struct Pass {
     ManifoldBatch* batches;
     RowLanes* rows;
+    const PathLanes* paths;
     int count;
     const ManifoldPass& p;
     Step step;
@@ -366,6 +367,7 @@ template <class V>
     for (int k = 0; k < pass.count; ++k) {
         ManifoldBatch& c = pass.batches[k];
         RowLanes* rows = pass.rows + c.firstRow;
+        const PathLanes* paths = pass.paths + c.firstRow;
         for (int first = 0; first < c.count; first += widthOf<V>) {
             const Slice<V> at{{c, first}};
             switch (pass.step) {
@@ -376,10 +378,10 @@ template <class V>
                     warmCentre(at);
                     break;
                 case Step::solve:
-                    solveSlice<V, true>(at, rows, pass.p);
+                    solveSlice<V, true>(at, rows, paths, pass.p);
                     break;
                 case Step::relax:
-                    solveSlice<V, false>(at, rows, pass.p);
+                    solveSlice<V, false>(at, rows, paths, pass.p);
                     break;
             }
         }
@@ -401,7 +403,8 @@ void passAll(const Pass& pass) {
 
 }  // namespace
 
-void ManifoldBatches::load(const std::vector<NormalRow>& rows, const std::vector<ContactGap>& gaps,
+void ManifoldBatches::load(const std::vector<NormalRow>& rows,
+                           const std::vector<RigidContact>& contacts,
                            const std::vector<RigidManifold>& manifolds, int bodies, int sweeps,
                            int impactSweeps) {
     const int n = int(manifolds.size());
@@ -436,24 +439,39 @@ void ManifoldBatches::load(const std::vector<NormalRow>& rows, const std::vector
         }
         begin[size_t(k) + 1] = begin[size_t(k)] + (count + kLanes - 1) / kLanes;
     }
-    batches_.assign(size_t(begin.back()), ManifoldBatch{});
+    const int batches = begin.back();
+    laneOf_.assign(size_t(batches) * kLanes, -1);
     manifoldSlot_.resize(size_t(n));
     for (int m = 0; m < n; ++m) {
         const int slot = begin[size_t(key[m] / kRowKinds)] * kLanes + next[size_t(key[m])]++;
         manifoldSlot_[size_t(m)] = slot;
-        ManifoldBatch& batch = batches_[size_t(slot / kLanes)];
-        const RigidManifold& f = manifolds[size_t(m)];
-        batch.count = std::max(batch.count, slot % kLanes + 1);
-        batch.rows = std::max(batch.rows, f.end - f.begin);
+        laneOf_[size_t(slot)] = m;
     }
+    // Each batch and its rows are cleared and filled while they are in the cache, one after
+    // another: filled in the manifolds' order, the batches of a pile of 4,000 came from memory.
+    batches_.resize(size_t(batches));
     int total = 0;
-    for (ManifoldBatch& batch : batches_) batch.firstRow = total, total += batch.rows;
-    rows_.assign(size_t(total), RowLanes{});
+    for (int k = 0; k < batches; ++k) {
+        ManifoldBatch& c = batches_[size_t(k)];
+        c = ManifoldBatch{};
+        c.firstRow = total;
+        for (int l = 0; l < kLanes && laneOf_[size_t(k * kLanes + l)] >= 0; ++l) {
+            const RigidManifold& f = manifolds[size_t(laneOf_[size_t(k * kLanes + l)])];
+            c.count = l + 1;
+            c.rows = std::max(c.rows, f.end - f.begin);
+        }
+        total += c.rows;
+    }
+    rows_.resize(size_t(total));
+    paths_.resize(size_t(total));
     rowSlot_.resize(rows.size());
-    for (int m = 0; m < n; ++m) {
-        const int slot = manifoldSlot_[size_t(m)];
-        place(batches_[size_t(slot / kLanes)], slot % kLanes, rows, gaps, manifolds[size_t(m)],
-              sweeps, impactSweeps);
+    for (int k = 0; k < batches; ++k) {
+        ManifoldBatch& c = batches_[size_t(k)];
+        std::fill_n(rows_.begin() + c.firstRow, c.rows, RowLanes{});
+        std::fill_n(paths_.begin() + c.firstRow, c.rows, PathLanes{});
+        for (int l = 0; l < c.count; ++l)
+            place(c, l, rows, contacts, manifolds[size_t(laneOf_[size_t(k * kLanes + l)])], sweeps,
+                  impactSweeps);
     }
 }
 
@@ -485,14 +503,14 @@ void putPath(AnchorLanes& to, int l, const AnchorPath& from) {
 }
 
 void ManifoldBatches::place(ManifoldBatch& c, int l, const std::vector<NormalRow>& rows,
-                            const std::vector<ContactGap>& gaps, const RigidManifold& m, int sweeps,
-                            int impactSweeps) {
+                            const std::vector<RigidContact>& contacts, const RigidManifold& m,
+                            int sweeps, int impactSweeps) {
     const FrictionRows& f = m.rows;
     c.a[l] = f.velA ? &f.velA->x : nullptr;
     c.b[l] = &f.velB->x;
     c.supportedA[l] = rows[size_t(m.begin)].supportedA;
     c.supportedB[l] = rows[size_t(m.begin)].supportedB;
-    const ContactGap& first = gaps[size_t(m.begin)];  // its rows' sides are its bodies
+    const RigidContact& first = contacts[size_t(m.begin)];  // its rows' sides are its bodies
     c.deltaA[l] = first.a.delta;
     c.deltaB[l] = first.b.delta;
     c.orientA[l] = first.a.orient;
@@ -521,15 +539,17 @@ void ManifoldBatches::place(ManifoldBatch& c, int l, const std::vector<NormalRow
         const int slot = (c.firstRow + i - m.begin) * kLanes + l;
         rowSlot_[size_t(i)] = slot;
         RowLanes& r = rows_[size_t(slot / kLanes)];
+        PathLanes& path = paths_[size_t(slot / kLanes)];
         put(r.normal, l, row.normal);
         put(r.armA, l, row.armA);
         put(r.armB, l, row.armB);
         r.impulse[l] = row.impulse;
         r.maxImpulse[l] = row.maxImpulse;
         r.slop[l] = row.slop;
-        r.start[l] = gaps[size_t(i)].separation;
-        putPath(r.pathA, l, gaps[size_t(i)].a);
-        putPath(r.pathB, l, gaps[size_t(i)].b);
+        const RigidContact& contact = contacts[size_t(i)];
+        path.start[l] = contact.separation;
+        putPath(path.a, l, contact.a);
+        putPath(path.b, l, contact.b);
         setTurns(i, row);
     }
 }
@@ -550,13 +570,18 @@ void ManifoldBatches::setTurns(int manifold, const FrictionRows& r) {
 void ManifoldBatches::warmStart(bool twoLanesOnly) {
     for (Step step : {Step::warmRows, Step::warmCentres}) {
         const ManifoldPass none;
-        const Pass pass{batches_.data(), rows_.data(), int(batches_.size()), none, step};
+        const Pass pass{batches_.data(),      rows_.data(), paths_.data(),
+                        int(batches_.size()), none,         step};
         twoLanesOnly ? twoLanes(pass) : passAll(pass);
     }
 }
 
 void ManifoldBatches::solve(const ManifoldPass& p, bool useBias, bool twoLanesOnly) {
-    const Pass pass{batches_.data(), rows_.data(), int(batches_.size()), p,
+    const Pass pass{batches_.data(),
+                    rows_.data(),
+                    paths_.data(),
+                    int(batches_.size()),
+                    p,
                     useBias ? Step::solve : Step::relax};
     twoLanesOnly ? twoLanes(pass) : passAll(pass);
 }

@@ -35,8 +35,14 @@ struct AnchorLanes {
 struct RowLanes {
     LaneVec normal, armA, armB, turnA, turnB;
     Lanes mass, impulse, maxImpulse, slop;
-    Lanes start, separation;  // at the step's start, and at this pass's
-    AnchorLanes pathA, pathB;
+    Lanes separation;  // at this pass
+};
+
+// And where their points have gone, which each pass reads once: apart from the rows, which the
+// warm start and the sweeps read again and again.
+struct PathLanes {
+    Lanes start;  // the separation at the step's start
+    AnchorLanes a, b;
 };
 
 struct ManifoldBatch {
@@ -76,10 +82,10 @@ struct ManifoldPass {
 class ManifoldBatches {
 public:
     // Levels and batches for the manifolds in their solve order, from their rows and the rows'
-    // gaps; `bodies`: one more than the largest RigidManifold::movesA or movesB. A manifold
+    // contacts; `bodies`: one more than the largest RigidManifold::movesA or movesB. A manifold
     // sweeps at most `sweeps` times in the relax pass, once in the solve pass, and an impact
     // `impactSweeps` times in both.
-    void load(const std::vector<NormalRow>& rows, const std::vector<ContactGap>& gaps,
+    void load(const std::vector<NormalRow>& rows, const std::vector<RigidContact>& contacts,
               const std::vector<RigidManifold>& manifolds, int bodies, int sweeps,
               int impactSweeps);
     // Every point's push, then every manifold's friction and rolling: the impulses so far.
@@ -96,13 +102,15 @@ public:
 
 private:
     void place(ManifoldBatch& batch, int lane, const std::vector<NormalRow>& rows,
-               const std::vector<ContactGap>& gaps, const RigidManifold& m, int sweeps,
+               const std::vector<RigidContact>& contacts, const RigidManifold& m, int sweeps,
                int impactSweeps);
 
     std::vector<ManifoldBatch> batches_;
     std::vector<RowLanes> rows_;
+    std::vector<PathLanes> paths_;   // rows_'s
     std::vector<int> rowSlot_;       // per row: its RowLanes · kLanes + lane
     std::vector<int> manifoldSlot_;  // per manifold: its batch · kLanes + lane
+    std::vector<int> laneOf_;        // and back: per slot, its manifold; −1 for a padding lane
     std::vector<int> scratch_, next_;
 };
 

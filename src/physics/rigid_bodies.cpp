@@ -761,20 +761,18 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     for (RigidManifold& m : manifolds_) prepareFriction(m);
     measureStacks(int(spheres.size()));
     rows_.clear();
-    gaps_.clear();
     rowRigids_.clear();
     const auto moving = [this](const ContactSide& s) {
         return s.rigid && s.invMass > 0.0 ? int(s.rigid - bodies_.data()) : -1;
     };
     for (const RigidContact& c : contacts_) {
-        gaps_.push_back({c.normal, c.separation, c.a, c.b});
         rowRigids_.push_back({moving(c.a), moving(c.b)});
         const NormalRow& r = rows_.emplace_back(rowOf(c, 0.1 * settings_.linearSlop));
         if (r.invMassA > 0.0 && r.invMassB > 0.0)  // a static or sleeping side is not pressed in
             massRatio_ = std::max({massRatio_, r.invMassA / r.invMassB, r.invMassB / r.invMassA});
     }
     const int most = std::max(1, settings_.relaxSweeps);
-    batches_.load(rows_, gaps_, manifolds_, count() + int(spheres.size()), most,
+    batches_.load(rows_, contacts_, manifolds_, count() + int(spheres.size()), most,
                   kImpactSweeps * most);
 }
 

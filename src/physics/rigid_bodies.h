@@ -97,28 +97,6 @@ struct alignas(64) RigidBody {
     glm::dvec3 origin() const;       // the shape's origin in the world (the scene's pos)
 };
 
-// What a contact's impulses move on one side: a rigid body, a sphere, or nothing (static).
-struct ContactSide : AnchorPath {
-    RigidBody* rigid = nullptr;  // where the side is a rigid body
-    int body = -1;               // a rigid body's index, or count() + a sphere's; −1: static
-    glm::dvec3* vel = nullptr;
-    glm::dvec3* spin = nullptr;
-    bool* supported = nullptr;
-    double invMass = 0.0;
-    double sphereInverseInertia = 0.0;  // 1 / I, where the side is a sphere
-};
-
-struct RigidContact {
-    ContactSide a, b;       // the normal points from a to b
-    std::uint64_t key = 0;  // the pair and the probe, for warm starting
-    glm::dvec3 normal{0.0, 1.0, 0.0};
-    double separation = 0.0;  // at the step's start; < 0 overlaps
-    double height = 0.0;      // of its manifold's lowest point: solved bottom-up
-    double friction = 0.0, restitution = 0.0;
-    double normalImpulse = 0.0;     // last step's, to start the row from
-    double relativeVelocity = 0.0;  // normal, at the step's start, for restitution
-};
-
 class RigidBodies {
 public:
     RigidBodies(const Scene& scene, const PhysicsSettings& settings);
@@ -211,7 +189,6 @@ private:
     Broadphase broadphase_;
     std::vector<RigidContact> contacts_;  // each manifold's points together, bottom-up
     std::vector<NormalRow> rows_;         // contacts_'s normal rows, in the same order
-    std::vector<ContactGap> gaps_;        // and their separations' inputs, for batches_
     // And their sides' rigid bodies that move (-1: static, asleep or a sphere), for followTurns
     // to find the turned bodies' rows without reading every contact each substep.
     std::vector<std::array<int, 2>> rowRigids_;

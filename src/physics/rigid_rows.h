@@ -1,6 +1,6 @@
-// rigid_rows.h — the rows of the rigid bodies' contacts as the solver sweeps them: each point's
-// normal row, and each manifold's friction and rolling rows at its centre, with everything a
-// sweep reads made once a step.
+// rigid_rows.h — the rigid bodies' contacts, and their rows as the solver sweeps them: each
+// point's normal row, and each manifold's friction and rolling rows at its centre, with
+// everything a sweep reads made once a step.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +8,8 @@
 #include <glm/vec3.hpp>
 
 namespace mb {
+
+struct RigidBody;
 
 // Where a contact's point on one side has gone since the step began.
 struct AnchorPath {
@@ -21,12 +23,26 @@ struct AnchorPath {
     glm::dvec3 offset{0.0};
 };
 
-// What a substep reads of a contact to find its separation now: the normal and the anchors'
-// paths, from which the lanes follow the bodies' motion since the step began.
-struct ContactGap {
-    glm::dvec3 normal{0.0};
-    double separation = 0.0;  // at the step's start
-    AnchorPath a, b;
+// What a contact's impulses move on one side: a rigid body, a sphere, or nothing (static).
+struct ContactSide : AnchorPath {
+    RigidBody* rigid = nullptr;  // where the side is a rigid body
+    int body = -1;               // a rigid body's index, or count() + a sphere's; −1: static
+    glm::dvec3* vel = nullptr;
+    glm::dvec3* spin = nullptr;
+    bool* supported = nullptr;
+    double invMass = 0.0;
+    double sphereInverseInertia = 0.0;  // 1 / I, where the side is a sphere
+};
+
+struct RigidContact {
+    ContactSide a, b;       // the normal points from a to b
+    std::uint64_t key = 0;  // the pair and the probe, for warm starting
+    glm::dvec3 normal{0.0, 1.0, 0.0};
+    double separation = 0.0;  // at the step's start; < 0 overlaps
+    double height = 0.0;      // of its manifold's lowest point: solved bottom-up
+    double friction = 0.0, restitution = 0.0;
+    double normalImpulse = 0.0;     // last step's, to start the row from
+    double relativeVelocity = 0.0;  // normal, at the step's start, for restitution
 };
 
 // What a row's impulses move on each side: the velocity and spin, and the inverse mass (0 for
