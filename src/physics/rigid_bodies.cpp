@@ -44,6 +44,7 @@ constexpr int kStaticKeys = 127;          // of them
 constexpr double kOwnSurface = 1e-4;      // of a body's bound: a point this near lies on it
 constexpr int kSideScan = 6;              // samples along a side against a shape not convex
 constexpr double kSideLevel = 0.1;        // of the slop: a side's stretch this level is a line
+constexpr size_t kLookAhead = 16;         // contacts whose warm start is asked for ahead
 constexpr double kSweepTolerance = 1e-3;  // m/s: a sweep that changed no row more has converged
 constexpr double kTurnTolerance = 0.1;    // of an inverse inertia, moved by a turn (followTurns)
 constexpr int kNewtonSteps = 4;           // at most, projecting a point onto a bound's surface
@@ -752,13 +753,18 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     sortBottomUp();
     manifolds_.clear();
     for (size_t i = 0; i < contacts_.size(); ++i) {
+        if (i + kLookAhead < contacts_.size()) kept_.prefetch(contacts_[i + kLookAhead].key);
         prepare(contacts_[i]);
         if (i == 0 || (contacts_[i].key ^ contacts_[i - 1].key) >> 8 != 0)
             manifolds_.push_back({.begin = int(i), .rows = {}});
         manifolds_.back().end = int(i) + 1;
         manifolds_.back().impact |= contacts_[i].relativeVelocity < -kImpactSpeed;
     }
-    for (RigidManifold& m : manifolds_) prepareFriction(m);
+    for (size_t k = 0; k < manifolds_.size(); ++k) {
+        if (k + kLookAhead < manifolds_.size())
+            kept_.prefetch(contacts_[size_t(manifolds_[k + kLookAhead].begin)].key | 0xff);
+        prepareFriction(manifolds_[k]);
+    }
     measureStacks(int(spheres.size()));
     rows_.clear();
     rowRigids_.clear();

@@ -25,6 +25,10 @@ public:
     void clear(size_t count);                                   // room for `count` keys
     void put(std::uint64_t key, const WarmImpulses& impulses);  // key ≠ 0, each once a step
     const WarmImpulses* find(std::uint64_t key) const;          // null where last step had none
+    // Asks the cache for key's slot ahead of its find: the lookups land at random in the table.
+    void prefetch(std::uint64_t key) const {
+        if (!keys_.empty()) __builtin_prefetch(&keys_[slotOf(key)]);
+    }
 
 private:
     size_t slotOf(std::uint64_t key) const;
