@@ -9,6 +9,7 @@
 #include "lane_math.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cstring>
 
 namespace mb {
@@ -18,7 +19,9 @@ namespace {
 template <class V>
 using Mask = MaskOf<V>;
 
-constexpr int kRowKinds = 8;  // manifolds are grouped by their rows, 1 to 8 (more count as 8)
+// Manifolds are grouped by their rows, 1 to 8 (more count as 8), and by the relax sweeps they
+// took last step, 1 to 4 (more count as 4).
+constexpr int kRowKinds = 8, kSweepKinds = 4, kKinds = kRowKinds * kSweepKinds;
 
 // Lanes of a batch (lane_math.h), and its fields of vectors.
 template <class V>
@@ -297,9 +300,11 @@ template <class V, bool useBias>
     Sides<V> s = gather(at);
     const V sweeps = at(useBias ? c.solveSweeps : c.relaxSweeps), rowCount = at(c.rowCount);
     Mask<V> settled{}, pushed{};
+    V swept{};  // each lane's sweeps
     for (int sweep = 0;; ++sweep) {
         const Mask<V> on = (splat<V>(sweep) < sweeps) & ~settled;
         if (!any(on)) break;
+        swept = select(on, swept + splat<V>(1.0), swept);
         V change{};
         for (int i = 0; i < c.rows; ++i) {
             const Mask<V> row = on & (splat<V>(i) < rowCount);
@@ -315,6 +320,7 @@ template <class V, bool useBias>
         settled |= on & (change < splat<V>(p.sweepTolerance));
     }
     scatter(at, s);
+    if constexpr (!useBias) at.set(c.relaxed, swept);
     if constexpr (useBias)
         for (int l = 0; l < widthOf<V> && at.first + l < c.count; ++l) {
             if (!pushed[l]) continue;
@@ -431,20 +437,22 @@ void ManifoldBatches::load(const std::vector<NormalRow>& rows,
         if (a >= 0) above[a] = k + 1;
         if (b >= 0) above[b] = k + 1;
         levels = std::max(levels, k + 1);
-        key[m] = k * kRowKinds + std::min(f.end - f.begin, kRowKinds) - 1;
+        key[m] = k * kKinds + (std::min(f.end - f.begin, kRowKinds) - 1) * kSweepKinds +
+                 std::clamp(f.sweeps, 1, kSweepKinds) - 1;
     }
     // Within a level the order is free: manifolds with as many rows go side by side, so that a
     // batch's lanes have rows in the same places (a sphere's one point beside a box's four would
-    // sweep three empty rows).
+    // sweep three empty rows), and among them those that settled as fast, so that few lanes wait
+    // on another's sweeps: a pile's manifolds take as many from step to step.
     std::vector<int>& next = next_;
-    next.assign(size_t(levels) * kRowKinds, 0);
+    next.assign(size_t(levels) * kKinds, 0);
     for (int m = 0; m < n; ++m) ++next[size_t(key[m])];
     std::vector<int> begin(size_t(levels) + 1, 0);
     for (int k = 0; k < levels; ++k) {
         int count = 0;
-        for (int r = 0; r < kRowKinds; ++r) {
-            const int kind = next[size_t(k * kRowKinds + r)];
-            next[size_t(k * kRowKinds + r)] = count;
+        for (int r = 0; r < kKinds; ++r) {
+            const int kind = next[size_t(k * kKinds + r)];
+            next[size_t(k * kKinds + r)] = count;
             count += kind;
         }
         begin[size_t(k) + 1] = begin[size_t(k)] + (count + kLanes - 1) / kLanes;
@@ -453,7 +461,7 @@ void ManifoldBatches::load(const std::vector<NormalRow>& rows,
     laneOf_.assign(size_t(batches) * kLanes, -1);
     manifoldSlot_.resize(size_t(n));
     for (int m = 0; m < n; ++m) {
-        const int slot = begin[size_t(key[m] / kRowKinds)] * kLanes + next[size_t(key[m])]++;
+        const int slot = begin[size_t(key[m] / kKinds)] * kLanes + next[size_t(key[m])]++;
         manifoldSlot_[size_t(m)] = slot;
         laneOf_[size_t(slot)] = m;
     }
@@ -516,6 +524,10 @@ void ManifoldBatches::place(ManifoldBatch& c, int l, const std::vector<NormalRow
                             const std::vector<RigidContact>& contacts, const RigidManifold& m,
                             int sweeps, int impactSweeps) {
     const FrictionRows& f = m.rows;
+    // The lanes read a body's spin as the three doubles after its velocity, as RigidBody and
+    // PhysicsBody hold them.
+    assert(!f.velA || f.spinA == f.velA + 1);
+    assert(f.spinB == f.velB + 1);
     c.a[l] = f.velA ? &f.velA->x : nullptr;
     c.b[l] = &f.velB->x;
     c.supportedA[l] = rows[size_t(m.begin)].supportedA;
@@ -613,6 +625,7 @@ void ManifoldBatches::store(std::vector<NormalRow>& rows,
             to.rollImpulse[k] = c.rollImpulse[k][l];
         }
         to.twistImpulse = c.twistImpulse[l];
+        manifolds[m].sweeps = int(c.relaxed[l]);
     }
 }
 

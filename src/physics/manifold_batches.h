@@ -61,6 +61,7 @@ struct ManifoldBatch {
     int rows = 0;      // RowLanes from firstRow: the most rows of its lanes' manifolds
     int firstRow = 0;  // in the batches' rows
     Lanes rowCount, solveSweeps, relaxSweeps;  // per lane
+    Lanes relaxed;                             // the sweeps each took in the last relax pass
     Lanes hasA, invMassA, invMassB;            // hasA: 1 where a is not static
     // The friction and rolling rows (FrictionRows), lane by lane.
     LaneVec normal, tangent[2], armA[2], armB[2], turnA[2], turnB[2];
@@ -97,7 +98,7 @@ public:
     // A row's, or a manifold's friction rows', turns and masses, made again (followTurns).
     void setTurns(int row, const NormalRow& r);
     void setTurns(int manifold, const FrictionRows& r);
-    // The impulses back into the rows.
+    // The impulses back into the rows, and the sweeps the last relax pass took.
     void store(std::vector<NormalRow>& rows, std::vector<RigidManifold>& manifolds) const;
 
 private:

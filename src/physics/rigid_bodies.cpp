@@ -1492,6 +1492,7 @@ void RigidBodies::prepareFriction(RigidManifold& m) {
         r.twistArm += glm::length(contacts_[size_t(i)].b.anchor - f.b.anchor) / count;
     const WarmImpulses* warm = kept_.find(f.key);
     r.twistImpulse = warm ? warm->twist : 0.0;
+    m.sweeps = warm ? warm->sweeps : 1;
     // The rolling radius: the centre's height over the contact plane. The distance to the
     // manifold's centre overstates it wherever that centre lies off to the side along the roll's
     // axis (a lying capsule's four points of five: it slowed 1.2 % fast).
@@ -1681,7 +1682,8 @@ void RigidBodies::finishStep() {
         kept_.put(m.key, {0.0,
                           {r.tangentImpulse[0], r.tangentImpulse[1]},
                           r.twistImpulse,
-                          {r.rollImpulse[0], r.rollImpulse[1]}});
+                          {r.rollImpulse[0], r.rollImpulse[1]},
+                          m.sweeps});
     }
     for (RigidBody& b : bodies_) b.delta = dvec3(0.0);
     updateSleep();

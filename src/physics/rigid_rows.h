@@ -101,6 +101,7 @@ struct RigidManifold {
     bool impact = false;     // a point came in faster than kImpactSpeed: swept until it settles
     // The bodies its rows move (ContactSide::body), −1 for a side they hold fixed.
     int movesA = -1, movesB = -1;
+    int sweeps = 1;     // in the relax pass: last step's, until this step's are known
     FrictionRows rows;  // the points' friction and rolling, at their centre
 };
 

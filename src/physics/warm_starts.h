@@ -18,6 +18,7 @@ namespace mb {
 struct WarmImpulses {
     double normal = 0.0, tangent[2] = {0.0, 0.0}, twist = 0.0;
     double roll[2] = {0.0, 0.0};  // about the tangents
+    int sweeps = 0;               // a manifold's relax sweeps (RigidManifold::sweeps)
 };
 
 class WarmStarts {
