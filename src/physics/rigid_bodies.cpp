@@ -301,11 +301,11 @@ dvec3 normalArm(const ContactSide& s, const dvec3& normal) {
     return arm;
 }
 
-// The speed along the normal at which the sides' points part (> 0) or close: a normal row's
-// (normalSpeed), from the contact.
-double normalVelocity(const RigidContact& c) {
-    double v = glm::dot(c.normal, *c.b.vel) + glm::dot(normalArm(c.b, c.normal), *c.b.spin);
-    if (c.a.vel) v -= glm::dot(c.normal, *c.a.vel) + glm::dot(normalArm(c.a, c.normal), *c.a.spin);
+// The speed along the normal at which the sides' points part (> 0) or close, from the contact
+// and its row's arms (normalArm): what restitution measures the approach by.
+double normalVelocity(const RigidContact& c, const NormalRow& r) {
+    double v = glm::dot(c.normal, *c.b.vel) + glm::dot(r.armB, *c.b.spin);
+    if (c.a.vel) v -= glm::dot(c.normal, *c.a.vel) + glm::dot(r.armA, *c.a.spin);
     return v;
 }
 
@@ -751,32 +751,13 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     }
     wake(spheres);
     sortBottomUp();
-    manifolds_.clear();
-    for (size_t i = 0; i < contacts_.size(); ++i) {
-        if (i + kLookAhead < contacts_.size()) kept_.prefetch(contacts_[i + kLookAhead].key);
-        prepare(contacts_[i]);
-        if (i == 0 || (contacts_[i].key ^ contacts_[i - 1].key) >> 8 != 0)
-            manifolds_.push_back({.begin = int(i), .rows = {}});
-        manifolds_.back().end = int(i) + 1;
-        manifolds_.back().impact |= contacts_[i].relativeVelocity < -kImpactSpeed;
-    }
+    makeRows();
     for (size_t k = 0; k < manifolds_.size(); ++k) {
         if (k + kLookAhead < manifolds_.size())
             kept_.prefetch(contacts_[size_t(manifolds_[k + kLookAhead].begin)].key | 0xff);
         prepareFriction(manifolds_[k]);
     }
     measureStacks(int(spheres.size()));
-    rows_.clear();
-    rowRigids_.clear();
-    const auto moving = [this](const ContactSide& s) {
-        return s.rigid && s.invMass > 0.0 ? int(s.rigid - bodies_.data()) : -1;
-    };
-    for (const RigidContact& c : contacts_) {
-        rowRigids_.push_back({moving(c.a), moving(c.b)});
-        const NormalRow& r = rows_.emplace_back(rowOf(c, 0.1 * settings_.linearSlop));
-        if (r.invMassA > 0.0 && r.invMassB > 0.0)  // a static or sleeping side is not pressed in
-            massRatio_ = std::max({massRatio_, r.invMassA / r.invMassB, r.invMassB / r.invMassA});
-    }
     const int most = std::max(1, settings_.relaxSweeps);
     batches_.load(rows_, contacts_, manifolds_, count() + int(spheres.size()), most,
                   kImpactSweeps * most);
@@ -1454,10 +1435,30 @@ void RigidBodies::wake(std::vector<PhysicsBody>& spheres) {
     }
 }
 
-// A point: its approach speed and last step's push. Its friction is its manifold's.
-void RigidBodies::prepare(RigidContact& c) {
-    c.relativeVelocity = normalVelocity(c);
-    if (const WarmImpulses* warm = kept_.find(c.key)) c.normalImpulse = warm->normal;
+// Each point's row, from last step's push, and its approach speed; and the manifolds, each
+// pair's points that face one way, in their bottom-up order. A point's friction is its
+// manifold's (prepareFriction).
+void RigidBodies::makeRows() {
+    manifolds_.clear();
+    rows_.clear();
+    rowRigids_.clear();
+    const auto moving = [this](const ContactSide& s) {
+        return s.rigid && s.invMass > 0.0 ? int(s.rigid - bodies_.data()) : -1;
+    };
+    for (size_t i = 0; i < contacts_.size(); ++i) {
+        if (i + kLookAhead < contacts_.size()) kept_.prefetch(contacts_[i + kLookAhead].key);
+        RigidContact& c = contacts_[i];
+        if (const WarmImpulses* warm = kept_.find(c.key)) c.normalImpulse = warm->normal;
+        const NormalRow& r = rows_.emplace_back(rowOf(c, 0.1 * settings_.linearSlop));
+        c.relativeVelocity = normalVelocity(c, r);
+        rowRigids_.push_back({moving(c.a), moving(c.b)});
+        if (r.invMassA > 0.0 && r.invMassB > 0.0)  // a static or sleeping side is not pressed in
+            massRatio_ = std::max({massRatio_, r.invMassA / r.invMassB, r.invMassB / r.invMassA});
+        if (i == 0 || (c.key ^ contacts_[i - 1].key) >> 8 != 0)
+            manifolds_.push_back({.begin = int(i), .rows = {}});
+        manifolds_.back().end = int(i) + 1;
+        manifolds_.back().impact |= c.relativeVelocity < -kImpactSpeed;
+    }
 }
 
 // The manifold's friction contact: its nearest point's, moved to the points' centre; and its

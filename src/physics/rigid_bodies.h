@@ -178,7 +178,7 @@ private:
     static RigidContact contactFrom(const Candidate& c, double height, std::uint64_t pair);
     // `centre`: the probe's, where b holds it; else the point itself, a point of b's surface.
     ContactSide sideOf(RigidBody& b, const glm::dvec3& point, const glm::dvec3& centre);
-    void prepare(RigidContact& c);
+    void makeRows();
     void wake(std::vector<PhysicsBody>& spheres);
     void updateSleep();
 
