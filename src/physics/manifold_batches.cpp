@@ -424,8 +424,8 @@ void ManifoldBatches::load(const std::vector<NormalRow>& rows,
                            const std::vector<RigidManifold>& manifolds, int bodies, int sweeps,
                            int impactSweeps) {
     const int n = int(manifolds.size());
-    // scratch: per body, one past the level of its last manifold so far; per manifold, its level
-    // and rows as one key; per key, the next place in its level.
+    // scratch: per body, one past the level of its last manifold so far; per manifold, its level,
+    // rows and sweeps as one key. next_: per key, the next place in its level.
     scratch_.assign(size_t(bodies) + size_t(n), 0);
     int* above = scratch_.data();
     int* key = above + bodies;
@@ -447,7 +447,8 @@ void ManifoldBatches::load(const std::vector<NormalRow>& rows,
     std::vector<int>& next = next_;
     next.assign(size_t(levels) * kKinds, 0);
     for (int m = 0; m < n; ++m) ++next[size_t(key[m])];
-    std::vector<int> begin(size_t(levels) + 1, 0);
+    std::vector<int>& begin = levelBegin_;  // level k's batches from begin[k]
+    begin.assign(size_t(levels) + 1, 0);
     for (int k = 0; k < levels; ++k) {
         int count = 0;
         for (int r = 0; r < kKinds; ++r) {

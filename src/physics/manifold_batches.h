@@ -112,7 +112,7 @@ private:
     std::vector<int> rowSlot_;       // per row: its RowLanes · kLanes + lane
     std::vector<int> manifoldSlot_;  // per manifold: its batch · kLanes + lane
     std::vector<int> laneOf_;        // and back: per slot, its manifold; −1 for a padding lane
-    std::vector<int> scratch_, next_;
+    std::vector<int> scratch_, next_, levelBegin_;  // load()'s, kept for their room
 };
 
 }  // namespace mb

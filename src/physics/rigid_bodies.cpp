@@ -1441,17 +1441,12 @@ void RigidBodies::wake(std::vector<PhysicsBody>& spheres) {
 void RigidBodies::makeRows() {
     manifolds_.clear();
     rows_.clear();
-    rowRigids_.clear();
-    const auto moving = [this](const ContactSide& s) {
-        return s.rigid && s.invMass > 0.0 ? int(s.rigid - bodies_.data()) : -1;
-    };
     for (size_t i = 0; i < contacts_.size(); ++i) {
         if (i + kLookAhead < contacts_.size()) kept_.prefetch(contacts_[i + kLookAhead].key);
         RigidContact& c = contacts_[i];
         if (const WarmImpulses* warm = kept_.find(c.key)) c.normalImpulse = warm->normal;
         const NormalRow& r = rows_.emplace_back(rowOf(c, 0.1 * settings_.linearSlop));
         c.relativeVelocity = normalVelocity(c, r);
-        rowRigids_.push_back({moving(c.a), moving(c.b)});
         if (r.invMassA > 0.0 && r.invMassB > 0.0)  // a static or sleeping side is not pressed in
             massRatio_ = std::max({massRatio_, r.invMassA / r.invMassB, r.invMassB / r.invMassA});
         if (i == 0 || (c.key ^ contacts_[i - 1].key) >> 8 != 0)
@@ -1650,19 +1645,19 @@ void RigidBodies::followTurns() {
         any = any || b.turned;
     }
     if (!any) return;
-    auto turned = [this](size_t row) {
-        const auto [a, b] = rowRigids_[row];
-        return (a >= 0 && bodies_[size_t(a)].turned) || (b >= 0 && bodies_[size_t(b)].turned);
+    // A manifold's rows and its friction move its two bodies (a sphere's index is past the
+    // rigid bodies'): they are made again where either turned.
+    auto turned = [this](int body) {
+        return body >= 0 && body < count() && bodies_[size_t(body)].turned;
     };
-    for (size_t i = 0; i < rows_.size(); ++i) {
-        if (!turned(i)) continue;
-        const RigidContact& c = contacts_[i];
-        setTurns(rows_[i], inverseInertiaOf(c.a), inverseInertiaOf(c.b));
-        batches_.setTurns(int(i), rows_[i]);
-    }
     for (size_t k = 0; k < manifolds_.size(); ++k) {
         RigidManifold& m = manifolds_[k];
-        if (!turned(size_t(m.begin))) continue;
+        if (!turned(m.movesA) && !turned(m.movesB)) continue;
+        for (int i = m.begin; i < m.end; ++i) {
+            const RigidContact& c = contacts_[size_t(i)];
+            setTurns(rows_[size_t(i)], inverseInertiaOf(c.a), inverseInertiaOf(c.b));
+            batches_.setTurns(i, rows_[size_t(i)]);
+        }
         const RigidContact& c = contacts_[size_t(m.begin)];
         setTurns(m.rows, inverseInertiaOf(c.a), inverseInertiaOf(c.b));
         batches_.setTurns(int(k), m.rows);

@@ -37,7 +37,6 @@
 #include "marchbox/physics/physics.h"
 #include "marchbox/scene/sdf.h"
 
-#include <array>
 #include <cstdint>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
@@ -189,12 +188,9 @@ private:
     Broadphase broadphase_;
     std::vector<RigidContact> contacts_;  // each manifold's points together, bottom-up
     std::vector<NormalRow> rows_;         // contacts_'s normal rows, in the same order
-    // And their sides' rigid bodies that move (-1: static, asleep or a sphere), for followTurns
-    // to find the turned bodies' rows without reading every contact each substep.
-    std::vector<std::array<int, 2>> rowRigids_;
-    double massRatio_ = 1.0;   // see massRatio()
-    int stackDepth_ = 0;       // see stackDepth()
-    std::vector<int> depths_;  // per body, then per sphere: its depth in its stack
+    double massRatio_ = 1.0;              // see massRatio()
+    int stackDepth_ = 0;                  // see stackDepth()
+    std::vector<int> depths_;             // per body, then per sphere: its depth in its stack
     void prepareFriction(RigidManifold& m);
     bool heldEarly(const RigidManifold& m, double accel) const;
     void undo(RigidManifold& m);
