@@ -17,25 +17,9 @@ using glm::vec3;
 
 float sdSphere(vec3 p, float r) { return glm::length(p) - r; }
 
-float sdBox(vec3 p, vec3 b) {
-    vec3 q = glm::abs(p) - b;
-    return glm::length(glm::max(q, vec3(0.0f))) + std::min(std::max(q.x, std::max(q.y, q.z)), 0.0f);
-}
-
 float sdTorus(vec3 p, float major, float minor) {
     vec2 q(glm::length(vec2(p.x, p.z)) - major, p.y);
     return glm::length(q) - minor;
-}
-
-float sdCapsule(vec3 p, float height, float r) {
-    float h = 0.5f * height;
-    p.y -= std::clamp(p.y, -h, h);
-    return glm::length(p) - r;
-}
-
-float sdCylinder(vec3 p, float height, float r) {
-    vec2 d = glm::abs(vec2(glm::length(vec2(p.x, p.z)), p.y)) - vec2(r, 0.5f * height);
-    return std::min(std::max(d.x, d.y), 0.0f) + glm::length(glm::max(d, vec2(0.0f)));
 }
 
 // Quilez's capped cone: the distance to the trapezoid (r1 at -h, r2 at +h) in the (radial, y)
@@ -224,7 +208,7 @@ SdfObject inset(SdfObject o, float r, float* lift) {
 
 }  // namespace
 
-float sdObjectLocal(const SdfObject& o, vec3 q) {
+float sdRoundedOrOther(const SdfObject& o, vec3 q) {
     float d;
     if (o.round > 0.0f) {
         float lift = 0.0f;  // set by inset, which must run before q is moved by it
