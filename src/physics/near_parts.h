@@ -28,10 +28,14 @@ void appendPlacedBoxes(const RigidBody& b, std::vector<OrientedBox>& out);
 
 class NearParts {
 public:
-    // The parts of both bodies where they are now (neither without parts), `reach` apart or
-    // nearer by their boxes: each body's placed hull, then its placed parts.
-    void find(std::span<const OrientedBox> proberBoxes, const RigidBody& shape,
-              std::span<const OrientedBox> shapeBoxes, double reach);
+    // The parts of bodies a and b where they are now (neither without parts), `reach` apart or
+    // nearer by their boxes (each body's placed hull, then its placed parts): each pair of parts
+    // tested once, for both ways round. The pair's probes both ways then take their lists from it.
+    void meet(std::span<const OrientedBox> boxesA, std::span<const OrientedBox> boxesB,
+              double reach);
+    // The lists for the met pair's probes one way round: a's parts against `shape`, body b, where
+    // `proberIsA`, else b's against a.
+    void find(bool proberIsA, const RigidBody& shape);
     // The shape's parts near the prober's part p, in the shape's order.
     std::span<const int> of(int p) const {
         return {parts_.data() + first_[size_t(p)], parts_.data() + first_[size_t(p) + 1]};
@@ -57,6 +61,10 @@ private:
     float distanceIn(const Frame& f, const glm::dvec3& x) const {
         return sdObjectLocal(*f.shape, glm::vec3(f.turn * x + f.shift));
     }
+    // meet's: whether a's part p and b's part q are near (near_[p·partsB_ + q], set only where
+    // one of them is near the other's hull), and whether each part is near the other's hull.
+    std::vector<char> near_, nearHullA_, nearHullB_;
+    size_t partsB_ = 0;
     std::vector<int> first_, parts_;  // part p's list is parts_[first_[p], first_[p + 1])
     std::vector<Frame> frames_;       // one per shape part, set where a list holds it
     std::vector<char> framed_;

@@ -1,6 +1,8 @@
 // oriented_box.cpp — boxes about shapes, their distances and overlaps (oriented_box.h).
 #include "oriented_box.h"
 
+#include <glm/gtc/matrix_access.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -78,6 +80,21 @@ bool boxesOverlap(const OrientedBox& a, const OrientedBox& b, double slack) {
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
             if (apart(glm::cross(a.axes[i], b.axes[j]))) return false;
+    return true;
+}
+
+bool facesOverlap(const OrientedBox& a, const OrientedBox& b, double gap) {
+    const dvec3 d = b.centre - a.centre;
+    dmat3 turn;  // turn[j][k]: a's axis k against b's axis j, found along a's axes first
+    for (int k = 0; k < 3; ++k) {
+        for (int j = 0; j < 3; ++j) turn[j][k] = glm::dot(a.axes[k], b.axes[j]);
+        const double bAcross = glm::dot(b.half, glm::abs(glm::row(turn, k)));
+        if (std::abs(glm::dot(a.axes[k], d)) >= a.half[k] + bAcross + gap) return false;
+    }
+    for (int j = 0; j < 3; ++j) {
+        const double aAcross = glm::dot(a.half, glm::abs(turn[j]));
+        if (std::abs(glm::dot(b.axes[j], d)) >= b.half[j] + aAcross + gap) return false;
+    }
     return true;
 }
 

@@ -33,5 +33,8 @@ double distanceToBox(const OrientedBox& b, const glm::dvec3& p);
 // and their edges' crosses): a positive slack lets faces that touch count as apart, a negative
 // one asks for a gap of at least |slack|, which bounds the distance between them from below.
 bool boxesOverlap(const OrientedBox& a, const OrientedBox& b, double slack);
+// False where one of the six axes of the boxes' own faces parts them by `gap` or more: the
+// face half of boxesOverlap(a, b, −gap), without the nine crosses of their edges or a root.
+bool facesOverlap(const OrientedBox& a, const OrientedBox& b, double gap);
 
 }  // namespace mb

@@ -259,6 +259,11 @@ ShapeSample surfaceNear(const RigidBody& b, const dvec3& p, double reach) {
 // surface (1e-5 of it, groupProbes): the box culls skip only what the SDF puts out of reach too.
 double boxSlack(const RigidBody& b) { return 1e-4 * b.bound; }
 
+// A group met by a body, both with parts, is probed part against part (near_parts.h).
+bool partwise(const RigidBody& a, const RigidBody& b) {
+    return (a.groupShape || b.groupShape) && !a.parts.empty() && !b.parts.empty();
+}
+
 // Whether p (world) lies at least `reach` from a group's shape by its parts' boxes, so that its
 // distance there, which would be no less, need not be found. An object's own distance costs no
 // more than a box's, and a group's is only bounded by parts where it has them.
@@ -1118,16 +1123,8 @@ bool RigidBodies::boxesApart(int i, int j) {
 // (near_parts.h); every other pair against the whole shape.
 void RigidBodies::probeShape(int proberIndex, int shapeIndex, bool flip, int offset) {
     const RigidBody &prober = bodies_[size_t(proberIndex)], &shape = bodies_[size_t(shapeIndex)];
-    const Probing q{
-        prober,
-        shape,
-        flip,
-        offset,
-        reachOf(prober, shape),
-        (prober.groupShape || shape.groupShape) && !prober.parts.empty() && !shape.parts.empty()};
-    if (q.partwise)
-        nearParts_.find(boxesOf(proberIndex), shape, boxesOf(shapeIndex),
-                        q.reach + boxSlack(prober) + boxSlack(shape));
+    const Probing q{prober, shape, flip, offset, reachOf(prober, shape), partwise(prober, shape)};
+    if (q.partwise) nearParts_.find(flip, shape);
     auto nearOf = [&](int part) {
         return q.partwise ? nearParts_.of(part) : std::span<const int>();
     };
@@ -1312,6 +1309,8 @@ void RigidBodies::collidePair(int i, int j) {
     if (cached && boxesApart(i, j)) return;  // cheaper than the cache's lookup, and sure
     if (!cached || !pairCache_.reuse(pairKey(i, j), bi, bj, reach, &candidates_)) {
         if (!collideAnalytic(bi, bj) && (cached || !boxesApart(i, j))) {
+            if (partwise(bi, bj))
+                nearParts_.meet(boxesOf(i), boxesOf(j), reach + boxSlack(bi) + boxSlack(bj));
             probeShape(j, i, false, 0);
             probeShape(i, j, true, 128);
         }

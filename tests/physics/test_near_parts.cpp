@@ -59,7 +59,8 @@ TEST(NearParts, TheNearPartsMeasureTheGroupWhereAProbeCanReach) {
         appendPlacedBoxes(a, boxesA);
         appendPlacedBoxes(b, boxesB);
         NearParts near;
-        near.find(boxesA, b, boxesB, reach);
+        near.meet(boxesA, boxesB, reach);
+        near.find(true, b);
         std::mt19937 rng(7);
         std::uniform_real_distribution<double> u(-1.0, 1.0);
         int within = 0;
@@ -91,7 +92,8 @@ TEST(NearParts, NoPartIsNearATableAMetreAway) {
     appendPlacedBoxes(bodies.body(0), boxesA);
     appendPlacedBoxes(bodies.body(1), boxesB);
     NearParts near;
-    near.find(boxesA, bodies.body(1), boxesB, 0.05);
+    near.meet(boxesA, boxesB, 0.05);
+    near.find(true, bodies.body(1));
     for (int p = 0; p < 5; ++p) EXPECT_TRUE(near.of(p).empty()) << "part " << p;
 }
 

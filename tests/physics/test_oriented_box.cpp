@@ -76,6 +76,26 @@ TEST(OrientedBox, OverlapWithNegativeSlackAsksForAGap) {
     EXPECT_TRUE(boxesOverlap(a, placed(a, dquat(1, 0, 0, 0), dvec3(0.9, 0, 0)), 0.0));
 }
 
+// The same two cubes are parted along a's x axis, a face's normal, so facesOverlap sees the gap
+// as boxesOverlap does, from either box. A cube turned 45° about x has an edge along x on top;
+// one turned 45° about z, 1 cm over it, an edge along z below: the edges cross, and only their
+// cross (y) parts the cubes, which facesOverlap leaves out.
+TEST(OrientedBox, FacesOverlapSeesTheGapAlongAFaceNormal) {
+    const OrientedBox a{dvec3(0.0), glm::dmat3(1.0), dvec3(0.5)};
+    const OrientedBox b = placed(a, glm::angleAxis(M_PI / 4.0, dvec3(0, 0, 1)), dvec3(1.5, 0, 0));
+    const double gap = 1.0 - std::sqrt(0.5);
+    for (const bool flip : {false, true}) {
+        const OrientedBox &first = flip ? b : a, &second = flip ? a : b;
+        EXPECT_FALSE(facesOverlap(first, second, gap - 1e-9));
+        EXPECT_TRUE(facesOverlap(first, second, gap + 1e-9));
+    }
+    const OrientedBox under = placed(a, glm::angleAxis(M_PI / 4.0, dvec3(1, 0, 0)), dvec3(0.0));
+    const OrientedBox over = placed(a, glm::angleAxis(M_PI / 4.0, dvec3(0, 0, 1)),
+                                    dvec3(0.0, std::sqrt(2.0) + 0.01, 0.0));
+    EXPECT_FALSE(boxesOverlap(under, over, 0.0));
+    EXPECT_TRUE(facesOverlap(under, over, 0.0));
+}
+
 // A cone that widens upwards is as wide as its top: radius 0.2, top 0.5, height 1.
 TEST(OrientedBox, WideningConeIsBoundByItsTop) {
     Object cone;
