@@ -178,8 +178,8 @@ template <class V, bool useBias>
     V bias = select(apart, sep / splat<V>(p.h), V{});
     V massScale = splat<V>(1.0), impulseScale{};
     if constexpr (useBias) {
-        const V push =
-            maxOf(splat<V>(p.biasRate) * minOf(V{}, sep + at(r.slop)), splat<V>(-p.maxPushSpeed));
+        const V push = maxOf(splat<V>(p.biasRate) * minOf(V{}, sep + splat<V>(p.slop)),
+                             splat<V>(-p.maxPushSpeed));
         bias = select(apart, bias, push);
         massScale = select(apart, massScale, splat<V>(p.massScale));
         impulseScale = select(apart, impulseScale, splat<V>(p.impulseScale));
@@ -568,7 +568,6 @@ void ManifoldBatches::place(ManifoldBatch& c, int l, const std::vector<NormalRow
         put(r.armB, l, row.armB);
         r.impulse[l] = row.impulse;
         r.maxImpulse[l] = row.maxImpulse;
-        r.slop[l] = row.slop;
         const RigidContact& contact = contacts[size_t(i)];
         path.start[l] = contact.separation;
         putPath(path.a, l, contact.a);

@@ -34,7 +34,7 @@ struct AnchorLanes {
 // The normal rows of each lane's manifold that share a place in it.
 struct RowLanes {
     LaneVec normal, armA, armB, turnA, turnB;
-    Lanes mass, impulse, maxImpulse, slop;
+    Lanes mass, impulse, maxImpulse;
     Lanes separation;  // at this pass
 };
 
@@ -76,6 +76,7 @@ struct ManifoldPass {
     double h = 0.0;  // the substep, s
     double biasRate = 0.0, massScale = 1.0, impulseScale = 0.0;
     double maxPushSpeed = 0.0;    // m/s
+    double slop = 0.0;            // m: the overlap that the solve pass leaves unpushed
     double sweepTolerance = 0.0;  // m/s: a sweep that changed no row more has settled
     bool rolling = false;         // rolling resistance is on
 };

@@ -395,7 +395,7 @@ dmat3 inverseInertiaOf(const ContactSide& s) {
     return s.rigid ? s.rigid->rowInertia : dmat3(s.sphereInverseInertia);
 }
 
-NormalRow rowOf(const RigidContact& c, double slop) {
+NormalRow rowOf(const RigidContact& c) {
     NormalRow r;
     static_cast<RowBodies&>(r) = bodiesOf(c);
     r.supportedA = c.a.supported;
@@ -405,7 +405,6 @@ NormalRow rowOf(const RigidContact& c, double slop) {
     r.armB = normalArm(c.b, c.normal);
     setTurns(r, inverseInertiaOf(c.a), inverseInertiaOf(c.b));
     r.impulse = c.normalImpulse;
-    r.slop = slop;
     return r;
 }
 
@@ -1444,7 +1443,7 @@ void RigidBodies::makeRows() {
         if (i + kLookAhead < contacts_.size()) kept_.prefetch(contacts_[i + kLookAhead].key);
         RigidContact& c = contacts_[i];
         if (const WarmImpulses* warm = kept_.find(c.key)) c.normalImpulse = warm->normal;
-        const NormalRow& r = rows_.emplace_back(rowOf(c, 0.1 * settings_.linearSlop));
+        const NormalRow& r = rows_.emplace_back(rowOf(c));
         c.relativeVelocity = normalVelocity(c, r);
         if (r.invMassA > 0.0 && r.invMassB > 0.0)  // a static or sleeping side is not pressed in
             massRatio_ = std::max({massRatio_, r.invMassA / r.invMassB, r.invMassB / r.invMassA});
@@ -1524,6 +1523,7 @@ void RigidBodies::solve(const Softness& soft, double h, bool useBias) {
     pass.massScale = soft.massScale;
     pass.impulseScale = soft.impulseScale;
     pass.maxPushSpeed = settings_.maxPushSpeed;
+    pass.slop = 0.1 * settings_.linearSlop;
     pass.sweepTolerance = kSweepTolerance;
     pass.rolling = rolling_ > 0.0;
     batches_.solve(pass, useBias, settings_.twoLanes);

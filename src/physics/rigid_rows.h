@@ -61,7 +61,6 @@ struct NormalRow : RowBodies {
     glm::dvec3 turnA{0.0}, turnB{0.0};  // I⁻¹·arm: the spin a unit impulse gives
     double mass = 0.0;                  // 1 / K along the normal
     double impulse = 0.0, maxImpulse = 0.0;
-    double slop = 0.0;
 };
 
 // Two rows solved as one: K⁻¹ for their 2×2 effective mass K, where K's off-diagonal is what
