@@ -1104,11 +1104,12 @@ std::span<const OrientedBox> RigidBodies::boxesOf(int i) {
 // before the probes, most of which it spares: first each hull against the sphere about the other
 // body, then the hulls' separating axes. The broad phase's spheres overlap far more often than
 // the hulls do: of the mixed pile of 1000's pairs that are probed, 47 % find no point, and this
-// sees 81 % of those (a cylinder's hull is its own box; a bound's shape has none).
-bool RigidBodies::boxesApart(int i, int j) {
+// sees 81 % of those (a cylinder's hull is its own box; a bound's shape has none). `pairReach`:
+// reachOf(a, b), which the caller has.
+bool RigidBodies::boxesApart(int i, int j, double pairReach) {
     const RigidBody &a = bodies_[size_t(i)], &b = bodies_[size_t(j)];
     if (a.parts.empty() || b.parts.empty()) return false;
-    const double reach = reachOf(a, b) + boxSlack(a) + boxSlack(b);
+    const double reach = pairReach + boxSlack(a) + boxSlack(b);
     const OrientedBox &hullA = boxesOf(i)[0], &hullB = boxesOf(j)[0];
     if (distanceToBox(hullA, b.pos) >= b.bound + reach ||
         distanceToBox(hullB, a.pos) >= a.bound + reach)
@@ -1305,9 +1306,9 @@ void RigidBodies::collidePair(int i, int j) {
     const RigidBody &bi = bodies_[size_t(i)], &bj = bodies_[size_t(j)];
     const double reach = reachOf(bi, bj);
     const bool cached = bi.groupShape || bj.groupShape;
-    if (cached && boxesApart(i, j)) return;  // cheaper than the cache's lookup, and sure
+    if (cached && boxesApart(i, j, reach)) return;  // cheaper than the cache's lookup, and sure
     if (!cached || !pairCache_.reuse(pairKey(i, j), bi, bj, reach, &candidates_)) {
-        if (!collideAnalytic(bi, bj) && (cached || !boxesApart(i, j))) {
+        if (!collideAnalytic(bi, bj) && (cached || !boxesApart(i, j, reach))) {
             if (partwise(bi, bj))
                 nearParts_.meet(boxesOf(i), boxesOf(j), reach + boxSlack(bi) + boxSlack(bj));
             probeShape(j, i, false, 0);

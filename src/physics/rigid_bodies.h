@@ -171,7 +171,7 @@ private:
     bool collideAnalytic(const RigidBody& a, const RigidBody& b);
     void dropUnreachable(const RigidBody& a, const RigidBody& b);
     double reachOf(const RigidBody& a, const RigidBody& b) const;
-    bool boxesApart(int i, int j);
+    bool boxesApart(int i, int j, double pairReach);
     void sortBottomUp();
     void measureStacks(int spheres);
     static RigidContact contactFrom(const Candidate& c, double height, std::uint64_t pair);
