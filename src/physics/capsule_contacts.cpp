@@ -123,6 +123,14 @@ bool faceLine(const Segment& s, double radius, const dvec3& half, int k, double 
     return true;
 }
 
+// A lower bound on the distance from the segment to the box: the gap between the box and the
+// segment's own box. Half the capsules and boxes that the broad phase pairs in a mixed pile
+// meet nothing, and this is a twentieth of the cost of the twelve edges that tell them so.
+double boxesGap(const Segment& s, const dvec3& half) {
+    const dvec3 gap = glm::max(glm::abs(s.centre) - s.half * glm::abs(s.axis) - half, 0.0);
+    return glm::length(gap);
+}
+
 // The segment (outside the box) against the box: its closest point is an end's, or lies on one
 // of the twelve edges (on a face's inside only where the segment runs parallel to the face, at
 // the same distance as on an edge or at an end).
@@ -203,6 +211,7 @@ std::vector<PairContact> collideCapsules(const CapsulePose& pa, const CapsulePos
 std::vector<PairContact> collideCapsuleBox(const CapsulePose& a, const BoxPose& b, double reach) {
     const glm::dquat toBox = glm::conjugate(b.orient);
     const Segment s{toBox * (a.centre - b.centre), toBox * (a.orient * dvec3(0, 1, 0)), a.half};
+    if (boxesGap(s, b.half) >= a.radius + reach) return {};
     double lo, hi;
     std::vector<PairContact> out = clipToSlabs(s, b.half, -1, lo, hi)
                                        ? segmentInside(s, a.radius, b.half, reach)
