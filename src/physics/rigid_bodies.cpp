@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_access.hpp>
@@ -790,17 +791,33 @@ void RigidBodies::measureStacks(int spheres) {
     }
 }
 
-// Manifolds bottom-up, each one's points together. The contacts are large: their order is
-// sorted, then they move once.
+// Manifolds bottom-up, each one's points together, in the order of their keys. Each manifold's
+// points are found together, so the manifolds are sorted, about half as many as the points (a
+// pile of 1000's sort of every point was 5 % of its step), and then each one's few points. The
+// contacts are large: their order is sorted, then they move once.
 void RigidBodies::sortBottomUp() {
     order_.clear();
-    for (size_t i = 0; i < contacts_.size(); ++i)
-        order_.push_back({contacts_[i].height, contacts_[i].key, i});
+    for (size_t begin = 0, end = 0; begin < contacts_.size(); begin = end) {
+        const RigidContact& first = contacts_[begin];
+        while (end < contacts_.size() && contacts_[end].height == first.height &&
+               contacts_[end].key >> 8 == first.key >> 8)
+            ++end;
+        order_.push_back({first.height, first.key >> 8, begin, end});
+    }
     std::sort(order_.begin(), order_.end(), [](const Place& x, const Place& y) {
-        return x.height < y.height || (x.height == y.height && x.key < y.key);
+        return x.height < y.height || (x.height == y.height && x.manifold < y.manifold);
     });
+    // Each manifold is one run: two runs of one manifold would take their points in turn.
+    assert(std::ranges::adjacent_find(order_, [](const Place& x, const Place& y) {
+               return x.height == y.height && x.manifold == y.manifold;
+           }) == order_.end());
     sorted_.clear();
-    for (const Place& p : order_) sorted_.push_back(contacts_[p.index]);
+    for (const Place& p : order_) {
+        const auto from = sorted_.insert(sorted_.end(), contacts_.begin() + ptrdiff_t(p.begin),
+                                         contacts_.begin() + ptrdiff_t(p.end));
+        std::sort(from, sorted_.end(),
+                  [](const RigidContact& x, const RigidContact& y) { return x.key < y.key; });
+    }
     contacts_.swap(sorted_);
 }
 
@@ -1309,8 +1326,7 @@ void RigidBodies::collidePair(int i, int j) {
     if (cached && boxesApart(i, j, reach)) return;  // cheaper than the cache's lookup, and sure
     if (!cached || !pairCache_.reuse(pairKey(i, j), bi, bj, reach, &candidates_)) {
         if (!collideAnalytic(bi, bj) && (cached || !boxesApart(i, j, reach))) {
-            if (partwise(bi, bj))
-                nearParts_.meet(boxesOf(i), boxesOf(j), reach + boxSlack(bi) + boxSlack(bj));
+            if (partwise(bi, bj)) nearParts_.meet(boxesOf(i), boxesOf(j), reach + boxSlack(bi) + boxSlack(bj));
             probeShape(j, i, false, 0);
             probeShape(i, j, true, 128);
         }

@@ -218,10 +218,10 @@ private:
         glm::dquat stateOrient;
     };
     std::vector<Loaded> loaded_;
-    struct Place {  // a contact's sort key and where it is
+    struct Place {  // a manifold's sort key and where its points are
         double height;
-        std::uint64_t key;
-        size_t index;
+        std::uint64_t manifold;  // the points' key >> 8
+        size_t begin, end;
     };
     std::vector<Place> order_;
     std::vector<RigidContact> sorted_;
