@@ -34,7 +34,6 @@ void appendPlacedBoxes(const RigidBody& b, std::vector<OrientedBox>& out) {
 void NearParts::meet(std::span<const OrientedBox> boxesA, std::span<const OrientedBox> boxesB,
                      double reach) {
     const std::span<const OrientedBox> partsA = boxesA.subspan(1), partsB = boxesB.subspan(1);
-    partsB_ = partsB.size();
     nearHullA_.resize(partsA.size());  // a's parts near b's hull
     nearHullB_.resize(partsB.size());
     for (size_t p = 0; p < partsA.size(); ++p) nearHullA_[p] = near(partsA[p], boxesB[0], reach);
@@ -43,19 +42,19 @@ void NearParts::meet(std::span<const OrientedBox> boxesA, std::span<const Orient
     for (size_t p = 0; p < partsA.size(); ++p)
         for (size_t q = 0; q < partsB.size(); ++q)
             if (nearHullA_[p] || nearHullB_[q])
-                near_[p * partsB_ + q] = near(partsA[p], partsB[q], reach);
+                near_[pairOf(p, q)] = near(partsA[p], partsB[q], reach);
 }
 
 void NearParts::find(bool proberIsA, const RigidBody& shape) {
     const std::vector<char>& proberNearHull = proberIsA ? nearHullA_ : nearHullB_;
-    const size_t shapeParts = proberIsA ? partsB_ : nearHullA_.size();
+    const size_t shapeParts = proberIsA ? nearHullB_.size() : nearHullA_.size();
     first_.assign(1, 0);
     parts_.clear();
     framed_.assign(shapeParts, 0);
     for (size_t p = 0; p < proberNearHull.size(); ++p) {
         if (proberNearHull[p])
             for (size_t q = 0; q < shapeParts; ++q)
-                if (near_[proberIsA ? p * partsB_ + q : q * partsB_ + p])
+                if (near_[proberIsA ? pairOf(p, q) : pairOf(q, p)])
                     parts_.push_back(int(q)), framed_[q] = 1;
         first_.push_back(int(parts_.size()));
     }

@@ -1,10 +1,9 @@
 // oriented_box.cpp — boxes about shapes, their distances and overlaps (oriented_box.h).
 #include "oriented_box.h"
 
-#include <glm/gtc/matrix_access.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/matrix_access.hpp>
 #include <glm/geometric.hpp>
 
 namespace mb {

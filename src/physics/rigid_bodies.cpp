@@ -260,6 +260,11 @@ ShapeSample surfaceNear(const RigidBody& b, const dvec3& p, double reach) {
 // surface (1e-5 of it, groupProbes): the box culls skip only what the SDF puts out of reach too.
 double boxSlack(const RigidBody& b) { return 1e-4 * b.bound; }
 
+// The pair's reach between two bodies' boxes: its reach and both boxes' slack.
+double boxReach(const RigidBody& a, const RigidBody& b, double reach) {
+    return reach + boxSlack(a) + boxSlack(b);
+}
+
 // A group met by a body, both with parts, is probed part against part (near_parts.h).
 bool partwise(const RigidBody& a, const RigidBody& b) {
     return (a.groupShape || b.groupShape) && !a.parts.empty() && !b.parts.empty();
@@ -1126,7 +1131,7 @@ std::span<const OrientedBox> RigidBodies::boxesOf(int i) {
 bool RigidBodies::boxesApart(int i, int j, double pairReach) {
     const RigidBody &a = bodies_[size_t(i)], &b = bodies_[size_t(j)];
     if (a.parts.empty() || b.parts.empty()) return false;
-    const double reach = pairReach + boxSlack(a) + boxSlack(b);
+    const double reach = boxReach(a, b, pairReach);
     const OrientedBox &hullA = boxesOf(i)[0], &hullB = boxesOf(j)[0];
     if (distanceToBox(hullA, b.pos) >= b.bound + reach ||
         distanceToBox(hullB, a.pos) >= a.bound + reach)
@@ -1326,7 +1331,7 @@ void RigidBodies::collidePair(int i, int j) {
     if (cached && boxesApart(i, j, reach)) return;  // cheaper than the cache's lookup, and sure
     if (!cached || !pairCache_.reuse(pairKey(i, j), bi, bj, reach, &candidates_)) {
         if (!collideAnalytic(bi, bj) && (cached || !boxesApart(i, j, reach))) {
-            if (partwise(bi, bj)) nearParts_.meet(boxesOf(i), boxesOf(j), reach + boxSlack(bi) + boxSlack(bj));
+            if (partwise(bi, bj)) nearParts_.meet(boxesOf(i), boxesOf(j), boxReach(bi, bj, reach));
             probeShape(j, i, false, 0);
             probeShape(i, j, true, 128);
         }
