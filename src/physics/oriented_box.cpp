@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/gtc/matrix_access.hpp>
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_access.hpp>
 
 namespace mb {
 
@@ -62,23 +62,25 @@ double distanceToBox(const OrientedBox& b, const dvec3& p) {
 }
 
 bool boxesOverlap(const OrientedBox& a, const OrientedBox& b, double slack) {
+    if (!facesOverlap(a, b, -slack)) return false;
+    // The nine crosses of their edges, left as long as they are: each reach and the gap are in
+    // the cross's units, so no axis needs a quotient. Each reach is its axes projected on the
+    // cross, as for a face. A float turn leaves a part's axes a little out of square, and the
+    // turn between the boxes, which would give the reaches without those products, is then off
+    // by that error over the sine between the edges: boxes that overlapped came out apart.
     const dvec3 d = b.centre - a.centre;
-    auto apart = [&](dvec3 axis) {
-        const double len = glm::length(axis);
-        if (len < 1e-9) return false;
-        axis /= len;
-        double ra = 0.0, rb = 0.0;
-        for (int k = 0; k < 3; ++k) {
-            ra += a.half[k] * std::abs(glm::dot(a.axes[k], axis));
-            rb += b.half[k] * std::abs(glm::dot(b.axes[k], axis));
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const dvec3 axis = glm::cross(a.axes[i], b.axes[j]);
+            const double length = glm::length(axis);
+            if (length < 1e-9) continue;  // parallel edges: the faces' axes have tested theirs
+            double ra = 0.0, rb = 0.0;
+            for (int k = 0; k < 3; ++k) {
+                ra += a.half[k] * std::abs(glm::dot(a.axes[k], axis));
+                rb += b.half[k] * std::abs(glm::dot(b.axes[k], axis));
+            }
+            if (std::abs(glm::dot(d, axis)) >= ra + rb - slack * length) return false;
         }
-        return std::abs(glm::dot(d, axis)) >= ra + rb - slack;
-    };
-    for (int i = 0; i < 3; ++i)
-        if (apart(a.axes[i]) || apart(b.axes[i])) return false;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            if (apart(glm::cross(a.axes[i], b.axes[j]))) return false;
     return true;
 }
 
