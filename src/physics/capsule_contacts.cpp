@@ -211,7 +211,8 @@ std::vector<PairContact> collideCapsules(const CapsulePose& pa, const CapsulePos
 std::vector<PairContact> collideCapsuleBox(const CapsulePose& a, const BoxPose& b, double reach) {
     const glm::dquat toBox = glm::conjugate(b.orient);
     const Segment s{toBox * (a.centre - b.centre), toBox * (a.orient * dvec3(0, 1, 0)), a.half};
-    if (boxesGap(s, b.half) >= a.radius + reach) return {};
+    // A hair over the reach: rounding cannot drop a point the edges would find at its limit.
+    if (boxesGap(s, b.half) >= (a.radius + reach) * (1.0 + 1e-9)) return {};
     double lo, hi;
     std::vector<PairContact> out = clipToSlabs(s, b.half, -1, lo, hi)
                                        ? segmentInside(s, a.radius, b.half, reach)

@@ -13,6 +13,7 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <cstddef>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_access.hpp>
 #include <limits>
@@ -802,12 +803,14 @@ void RigidBodies::measureStacks(int spheres) {
 // contacts are large: their order is sorted, then they move once.
 void RigidBodies::sortBottomUp() {
     order_.clear();
-    for (size_t begin = 0, end = 0; begin < contacts_.size(); begin = end) {
+    for (size_t begin = 0; begin < contacts_.size();) {
         const RigidContact& first = contacts_[begin];
+        size_t end = begin + 1;  // so a NaN height, equal to none, is a run of its own
         while (end < contacts_.size() && contacts_[end].height == first.height &&
                contacts_[end].key >> 8 == first.key >> 8)
             ++end;
         order_.push_back({first.height, first.key >> 8, begin, end});
+        begin = end;
     }
     std::sort(order_.begin(), order_.end(), [](const Place& x, const Place& y) {
         return x.height < y.height || (x.height == y.height && x.manifold < y.manifold);
@@ -818,8 +821,8 @@ void RigidBodies::sortBottomUp() {
            }) == order_.end());
     sorted_.clear();
     for (const Place& p : order_) {
-        const auto from = sorted_.insert(sorted_.end(), contacts_.begin() + ptrdiff_t(p.begin),
-                                         contacts_.begin() + ptrdiff_t(p.end));
+        const auto from = sorted_.insert(sorted_.end(), contacts_.begin() + std::ptrdiff_t(p.begin),
+                                         contacts_.begin() + std::ptrdiff_t(p.end));
         std::sort(from, sorted_.end(),
                   [](const RigidContact& x, const RigidContact& y) { return x.key < y.key; });
     }
