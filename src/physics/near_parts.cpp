@@ -42,7 +42,7 @@ void NearParts::meet(std::span<const OrientedBox> boxesA, std::span<const Orient
     for (size_t p = 0; p < partsA.size(); ++p)
         for (size_t q = 0; q < partsB.size(); ++q)
             if (nearHullA_[p] || nearHullB_[q])
-                near_[pairOf(p, q)] = near(partsA[p], partsB[q], reach);
+                near_[nearIndex(p, q)] = near(partsA[p], partsB[q], reach);
 }
 
 void NearParts::find(bool proberIsA, const RigidBody& shape) {
@@ -54,7 +54,7 @@ void NearParts::find(bool proberIsA, const RigidBody& shape) {
     for (size_t p = 0; p < proberNearHull.size(); ++p) {
         if (proberNearHull[p])
             for (size_t q = 0; q < shapeParts; ++q)
-                if (near_[proberIsA ? pairOf(p, q) : pairOf(q, p)])
+                if (near_[proberIsA ? nearIndex(p, q) : nearIndex(q, p)])
                     parts_.push_back(int(q)), framed_[q] = 1;
         first_.push_back(int(parts_.size()));
     }
