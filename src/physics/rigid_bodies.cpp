@@ -479,13 +479,28 @@ Side worldSide(const RigidBody& b, int k) {
     return s;
 }
 
+// A contact's key: its first body + 1 in the top 24 bits, its second + 1 in the next 24, its
+// manifold in the byte above its probe's. A static surface has no second body, and its feature
+// is its manifold's byte. A scene of many static objects has more than 255 surfaces: from 256
+// on, the feature would spill into the second body's bits (surface 256 named body 0, and joined
+// its body to body 0's island), so it takes those bits, under kStaticSurface, which no body's
+// index reaches (kMaxObjects is 4096). The first 255 keep their byte, and so the order their
+// manifolds are solved in, and every result of the scenes that have them.
+constexpr std::uint64_t kStaticSurface = std::uint64_t(1) << 39;
+
 std::uint64_t pairKey(int a, int b) {
     return std::uint64_t(a + 1) << 40 | std::uint64_t(b + 1) << 16;
 }
 
-// The two bodies pairKey named (−1: the static scene).
+std::uint64_t staticKey(int a, int feature) {
+    if (feature < 256) return pairKey(a, -1) | std::uint64_t(feature) << 8;
+    return std::uint64_t(a + 1) << 40 | kStaticSurface | std::uint64_t(feature) << 16;
+}
+
+// The two bodies a key names (−1: the static scene).
 std::pair<int, int> pairOf(std::uint64_t key) {
-    return {int(key >> 40) - 1, int(key >> 16 & 0xffffff) - 1};
+    const int second = key & kStaticSurface ? -1 : int(key >> 16 & 0xffffff) - 1;
+    return {int(key >> 40) - 1, second};
 }
 
 void setSurface(RigidContact& k, const Surface& pair) {
@@ -853,7 +868,7 @@ void RigidBodies::collideStatics(int i) {
         reduceManifold(candidates_, b.groupShape ? kGroupManifold : kMaxManifold);
         const double low = lowest(candidates_);
         for (const Candidate& c : candidates_) {
-            RigidContact k = contactFrom(c, low, pairKey(i, -1) | std::uint64_t(f) << 8);
+            RigidContact k = contactFrom(c, low, staticKey(i, int(f)));
             k.a = fixed;
             k.b = sideOf(b, c.point, c.centreB);
             setSurface(k, combine(b.surface, statics_.surface(int(f))));
@@ -1431,9 +1446,8 @@ void RigidBodies::collideSphere(int i, PhysicsBody& sphere, int sphereIndex) {
 void RigidBodies::wake(std::vector<PhysicsBody>& spheres) {
     std::vector<int> islands;
     for (const RigidContact& c : contacts_) {
-        const int second = int(c.key >> 16 & 0xffffff) - 1;
+        const auto [first, second] = pairOf(c.key);
         if (second < count()) continue;
-        const int first = int(c.key >> 40) - 1;
         PhysicsBody& sphere = spheres[size_t(second - count())];
         if (!sphere.awake && (touching_[size_t(first)] & 2)) islands.push_back(sphere.island);
     }
@@ -1723,7 +1737,7 @@ void RigidBodies::updateSleep() {
         return i;
     };
     for (const RigidContact& c : contacts_) {
-        const int first = int(c.key >> 40) - 1, second = int(c.key >> 16 & 0xffffff) - 1;
+        const auto [first, second] = pairOf(c.key);
         if (first >= 0 && second >= 0 && second < n) root[size_t(find(first))] = find(second);
     }
     std::vector<char> ready(size_t(n), 1);

@@ -139,3 +139,21 @@ TEST(RigidWakeAndWarm, ARowOfSleepingBoxesHitAtOneEndMovesAsOne) {
     EXPECT_NEAR(slept, awake, 5e-3) << "the sleeping row did not move as the awake one";
     EXPECT_NEAR(sliderSlept, sliderAwake, 5e-3) << "the slider stopped at the sleeping row";
 }
+
+// A box dropped onto the 256th of 300 static boxes sleeps within 2 s while another, 20 m away,
+// is still falling from 100 m (for 4.5 s): the two share no island. A static surface's manifold
+// key held its feature in the byte above the probe's, so from feature 256 on it spilled into the
+// second body's bits and named body 0: the resting box joined the falling one's island, and
+// stayed awake as long as it fell.
+TEST(RigidWakeAndWarm, ABoxOnTheManyHundredthStaticBoxSleepsAlone) {
+    Scene s = physicsWorld(9.81f, 0.0f, 0.6f, true);
+    s.objects.push_back(dynamicBox({-20.0f, 100.0f, 0}, glm::vec3(0.2f)));
+    for (int k = 0; k < 300; ++k)
+        s.objects.push_back(staticBox({float(k), 0.4f, 0}, glm::vec3(0.4f)));
+    s.objects.push_back(dynamicBox({255.0f, 1.0f, 0}, glm::vec3(0.2f)));
+    PhysicsWorld w(s);
+    run(w, 2.0);
+    ASSERT_TRUE(w.rigid(0).awake) << "the far box should still be falling";
+    EXPECT_NEAR(w.rigid(1).pos.y, 1.0, 0.01) << "the box should rest on the 256th static box";
+    EXPECT_FALSE(w.rigid(1).awake) << "the box at rest should sleep on its own";
+}
