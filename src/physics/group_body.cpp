@@ -433,18 +433,27 @@ GroupProbes groupProbes(const GroupShape& shape) {
             }
     std::stable_sort(found.begin(), found.end(),
                      [](const Candidate& a, const Candidate& b) { return a.weight > b.weight; });
+    // The contact keys (kRimIds a rim, kSideIds a side) keep kGroupPointIds for points: the
+    // members' corners and the lattice's are the body's own surface, which rims and sides only
+    // follow more closely. Six wheels' rims took every key, and a cart's chassis, with no point
+    // left, sank upside down onto its wheels; sixty rungs' sides left nothing either, and the
+    // spacing below grew for ever. A rim that does not fit is kept as its points, as a rim the
+    // surface cuts is; a side that does not fit is left out, as before.
+    const int forLines = kMaxGroupProbeIds - kGroupPointIds;
+    for (size_t r = size_t(forLines / kRimIds); r < rims.size(); ++r)
+        for (const dvec3& p : rimPoints(rims[r]))
+            third.push_back({p, rims[r].tube, 0, rims[r].part});
+    rims.resize(std::min(rims.size(), size_t(forLines / kRimIds)));
+    const int left = forLines - kRimIds * int(rims.size());
+    sides.resize(std::min(sides.size(), size_t(left / kSideIds)));
+    const int room = kMaxGroupProbeIds - kRimIds * int(rims.size()) - kSideIds * int(sides.size());
     std::vector<Candidate> all = first;
     for (const auto* list : {&second, &third, &found})
         all.insert(all.end(), list->begin(), list->end());
-    // The closest spacing whose probes fit the contact keys (kRimIds a rim).
-    if (int(rims.size()) * kRimIds > kMaxGroupProbeIds)
-        rims.resize(size_t(kMaxGroupProbeIds / kRimIds));
-    const int left = kMaxGroupProbeIds - kRimIds * int(rims.size());
-    if (int(sides.size()) * kSideIds > left) sides.resize(size_t(left / kSideIds));
-    const int room = left - kSideIds * int(sides.size());
-    // The members' corners and held spheres, where they fit, are kept however near each other
-    // (a thin top's upper corners lie a thickness from its lower ones): the body's own shape.
-    // The spacing thins every other point, and only ever-closer copies of one corner.
+    // The closest spacing whose probes fit the keys left. The members' corners and held spheres,
+    // where they fit, are kept however near each other (a thin top's upper corners lie a
+    // thickness from its lower ones): the body's own shape. The spacing thins every other point,
+    // and only ever-closer copies of one corner.
     const bool keepFirst = int(first.size()) <= room;
     for (double spacing = shape.bound / 6.0;; spacing *= 1.15) {
         std::vector<Probe> kept;

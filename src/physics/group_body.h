@@ -56,6 +56,7 @@ std::vector<OrientedBox> unionParts(const GroupShape& shape);
 // kMaxGroupProbeIds contact keys: a probe takes one, a rim kRimIds (rimSupport's four, and its
 // sixteen fixed points, which probe a group's shape), a side kSideIds.
 constexpr int kMaxGroupProbeIds = 120;
+constexpr int kGroupPointIds = 32;  // of them kept for points; a table's four legs leave 32
 struct GroupProbes {
     std::vector<Probe> probes;
     std::vector<Rim> rims;
