@@ -1071,9 +1071,8 @@ dvec3 RigidBodies::normalBesideStaticProbe(const RigidBody& b, const StaticProbe
 // after the probes.
 void RigidBodies::probeStaticProbes(const RigidBody& b, double reach,
                                     std::vector<std::vector<Candidate>>& byFeature) {
-    const std::vector<StaticProbe>& probes = statics_.probes();
     for (const StaticProbe& p : statics_.near(b.pos, b.bound, reach))
-        meetStaticProbe(b, p, int(&p - probes.data()), reach, byFeature);
+        meetStaticProbe(b, p, p.key, reach, byFeature);
     auto distance = [&](const dvec3& p) { return distanceTo(b, p); };
     const std::vector<StaticSide>& sides = statics_.sides();
     for (size_t k = 0; k < sides.size(); ++k) {
@@ -1086,25 +1085,23 @@ void RigidBodies::probeStaticProbes(const RigidBody& b, double reach,
         for (int e = 0; e < touch.count; ++e) {
             const StaticProbe sphere{glm::mix(side.from, side.to, touch.t[e]),
                                      sideRadius(side, touch.t[e]), sides[k].feature};
-            meetStaticProbe(b, sphere, int(probes.size() + kSideIds * k) + e, reach, byFeature);
+            meetStaticProbe(b, sphere, sides[k].key + e, reach, byFeature);
         }
     }
     const std::vector<StaticRing>& rings = statics_.rings();
-    const int ringKeys = int(probes.size() + kSideIds * sides.size());
     for (size_t k = 0; k < rings.size(); ++k) {
         const Rim& core = rings[k].core;
         if (glm::length(b.pos - core.centre) >= core.radius + core.tube + b.bound + reach) continue;
         leastAlongRim(core, dvec3(0.0), dquat(1.0, 0.0, 0.0, 0.0), distance, reach,
                       [&](const dvec3& at, int e) {
                           const StaticProbe sphere{at, core.tube, rings[k].feature};
-                          meetStaticProbe(b, sphere, ringKeys + kRimPoints * int(k) + e, reach,
-                                          byFeature);
+                          meetStaticProbe(b, sphere, rings[k].key + e, reach, byFeature);
                       });
     }
 }
 
-// A static object's sphere (a probe's, its side's or its core's), the `index`th, against the
-// body's shape.
+// A static object's sphere (a probe's, its side's or its core's), its feature's `index`th
+// (StaticProbe::key), against the body's shape.
 void RigidBodies::meetStaticProbe(const RigidBody& b, const StaticProbe& p, int index, double reach,
                                   std::vector<std::vector<Candidate>>& byFeature) {
     const std::optional<ShapeSample> near = sampleNear(b, p.centre, p.radius, reach);

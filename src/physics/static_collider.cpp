@@ -135,6 +135,18 @@ void StaticCollider::findProbes() {
     }
     std::sort(probes_.begin(), probes_.end(),
               [](const StaticProbe& a, const StaticProbe& b) { return a.centre.x < b.centre.x; });
+    // Each feature's contacts are one manifold, keyed apart: numbered through the whole scene,
+    // two probes of one floor of tiles (ten to each x, sorted by x) came 127 keys apart, which
+    // the probe byte wraps, and shared a warm start.
+    std::vector<int> next(surfaces_.size(), 0);
+    auto take = [&next](int feature, int keys) {
+        const int first = next[size_t(feature)];
+        next[size_t(feature)] += keys;
+        return first;
+    };
+    for (StaticProbe& p : probes_) p.key = take(p.feature, 1);
+    for (StaticSide& s : sides_) s.key = take(s.feature, kSideIds);
+    for (StaticRing& r : rings_) r.key = take(r.feature, kRimPoints);
 }
 
 std::span<const StaticProbe> StaticCollider::near(const glm::dvec3& centre, double radius,

@@ -40,6 +40,7 @@ struct StaticProbe {
     glm::dvec3 centre;  // world
     double radius;      // of the sphere about it that the static surface holds
     int feature;        // StaticHit::feature of the group it lies on
+    int key = 0;        // its contact's among its feature's: probes, then sides, then rings
 };
 
 // A static cylinder's or cone's side (rigid_probes.h's Side, in the world) that its group's drawn
@@ -47,6 +48,7 @@ struct StaticProbe {
 struct StaticSide {
     Side side;
     int feature;  // StaticHit::feature of the group it lies on
+    int key = 0;  // its first contact's (kSideIds of them) among its feature's
 };
 
 // A static torus's core (rigid_probes.h's Rim, in the world) that its group's drawn surface holds
@@ -54,6 +56,7 @@ struct StaticSide {
 struct StaticRing {
     Rim core;
     int feature;
+    int key = 0;  // its first contact's (kRimPoints of them) among its feature's
 };
 
 struct StaticHit {

@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+#include <set>
+
 using namespace mb;
 using glm::dvec3;
 
@@ -201,4 +204,27 @@ TEST(PhysicsStatic, CastStopsBeforeAThinPlate) {
     const double t = c.cast(dvec3(0, 0, -3), dvec3(0, 0, 1), 10.0, 0.05);
     EXPECT_GT(t, 3.0 - 0.01 - 0.05 - 1e-4);
     EXPECT_LE(t, 3.0 - 0.01 - 0.05 + 1e-6);  // the plate's 0.01 is a float
+}
+
+// A floor of 10 × 10 static tiles: each tile's surface is a manifold of its own, whose points
+// (its corners and edges' midpoints) need keys apart within the 127 the probe byte holds, or
+// two share a warm start. Planted: each probe keyed by its place among the whole floor's,
+// sorted by x with ten tiles to each column: 123 of the 2,000 share a key with another of
+// their tile's.
+TEST(PhysicsStatic, EachStaticSurfacesProbesHaveKeysApart) {
+    Scene s = physicsWorld(9.81f, 0.0f, 0.5f, true);
+    for (int i = 0; i < 10; ++i)
+        for (int k = 0; k < 10; ++k)
+            s.objects.push_back(staticBox({float(i), 0.1f, float(k)}, {0.5f, 0.1f, 0.5f}));
+    const StaticCollider statics(s);
+    std::map<int, std::set<int>> keys;  // per feature, its probes' keys as the byte holds them
+    int probes = 0;
+    for (const StaticProbe& p : statics.probes()) {
+        keys[p.feature].insert(p.key % 127);
+        ++probes;
+    }
+    int held = 0;
+    for (const auto& [feature, own] : keys) held += int(own.size());
+    EXPECT_GT(probes, 100);
+    EXPECT_EQ(held, probes) << "two probes of one surface share a key";
 }
