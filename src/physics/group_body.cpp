@@ -455,7 +455,13 @@ GroupProbes groupProbes(const GroupShape& shape) {
     // thickness from its lower ones): the body's own shape. The spacing thins every other point,
     // and only ever-closer copies of one corner.
     const bool keepFirst = int(first.size()) <= room;
-    for (double spacing = shape.bound / 6.0;; spacing *= 1.15) {
+    // From a sixth of the group's size, which counts its unions alone: a group of subtractions
+    // has none, and at a spacing of 0 its points never came nearer. Then from the points' own
+    // reach, or a metre where they all lie at the origin, growing until they fit.
+    double size = shape.bound;
+    if (!(size > 0.0))
+        for (const Candidate& c : all) size = std::max(size, glm::length(c.point));
+    for (double spacing = (size > 0.0 ? size : 1.0) / 6.0;; spacing *= 1.15) {
         std::vector<Probe> kept;
         for (size_t k = 0; k < all.size(); ++k) {
             const Candidate& c = all[k];

@@ -628,12 +628,14 @@ bool groupBody(const Scene& scene, int g, std::map<std::string, GroupFound>& fou
     if (shape->empty()) return false;
     const std::string key = shapeKey(*shape);
     auto it = found.find(key);
-    if (it == found.end())
+    if (it == found.end()) {
+        const Moments moments =
+            rememberedMoments(key, [&] { return groupMoments(*shape).moments; });
         it = found
-                 .emplace(key, GroupFound{rememberedMoments(
-                                              key, [&] { return groupMoments(*shape).moments; }),
-                                          groupProbes(*shape)})
+                 .emplace(key, GroupFound{moments, moments.volume > 0.0 ? groupProbes(*shape)
+                                                                        : GroupProbes{}})
                  .first;
+    }
     if (it->second.moments.volume <= 0.0) return false;
     const MassProperties mp = massFromMoments(it->second.moments, double(group.mass));
     RigidBody& b = *out;

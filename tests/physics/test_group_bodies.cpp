@@ -498,3 +498,19 @@ TEST(GroupBodies, ALadderOfSixtyRungsIsBuiltWithPoints) {
     run(w, 1.0);
     EXPECT_NEAR(w.rigid(0).pos.y, 0.03, 0.01);
 }
+
+// A group of subtractions alone, 121 spheres carved out of nothing, has no solid and no body.
+// Its size counts its unions alone, 0, and the spacing that thins its probes started at 0 and
+// never grew: the world was never built. Now it is, without the group, whose probes are not
+// looked for, and they are found if asked for.
+TEST(GroupBodies, AGroupOfSubtractionsAloneIsNoBodyAndTheWorldIsBuilt) {
+    const Scene s = sceneFromText(
+        "scene version:3\nworld ground:1\n"
+        "group name:g pos:0,2,0 mass:1\n"
+        "group name:h in:g op:subtract repeat:11,11,1\n"
+        "object in:h type:sphere pos:0,0,0 radius:0.2\n");
+    const GroupProbes probes = groupProbes(groupShapeOf(s, 0));
+    EXPECT_LE(int(probes.probes.size()), kMaxGroupProbeIds);
+    PhysicsWorld w(s);
+    EXPECT_EQ(w.rigidCount(), 0);
+}
