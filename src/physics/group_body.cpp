@@ -440,10 +440,11 @@ GroupProbes groupProbes(const GroupShape& shape) {
     // spacing below grew for ever. A rim that does not fit is kept as its points, as a rim the
     // surface cuts is; a side that does not fit is left out, as before.
     const int forLines = kMaxGroupProbeIds - kGroupPointIds;
-    for (size_t r = size_t(forLines / kRimIds); r < rims.size(); ++r)
+    const size_t rimsFit = size_t(forLines / kRimIds);
+    for (size_t r = rimsFit; r < rims.size(); ++r)
         for (const dvec3& p : rimPoints(rims[r]))
             third.push_back({p, rims[r].tube, 0, rims[r].part});
-    rims.resize(std::min(rims.size(), size_t(forLines / kRimIds)));
+    rims.resize(std::min(rims.size(), rimsFit));
     const int left = forLines - kRimIds * int(rims.size());
     sides.resize(std::min(sides.size(), size_t(left / kSideIds)));
     const int room = kMaxGroupProbeIds - kRimIds * int(rims.size()) - kSideIds * int(sides.size());
