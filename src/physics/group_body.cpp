@@ -148,6 +148,12 @@ struct Sampler {
     }
 };
 
+// Two rims, in one frame, that are one circle within `tol`.
+bool sameCircle(const Rim& a, const Rim& b, double tol) {
+    return glm::length(a.centre - b.centre) <= tol && std::abs(a.radius - b.radius) <= tol &&
+           a.tube == b.tube && std::abs(glm::dot(a.axis, b.axis)) >= 1.0 - 1e-9;
+}
+
 // A side of revolution between flat caps: a cylinder's or a cone's.
 bool revolved(const SdfObject& o) { return shapeRow(o.type).revolved && shapeRow(o.type).edges; }
 
@@ -309,6 +315,7 @@ GroupProbes groupProbes(const GroupShape& shape) {
     std::vector<Rim> rims;
     std::vector<Side> sides;
     std::vector<Cover> cover(sdf.objects.size());
+    std::vector<Rim> circles;  // the rims' and coaxial circles', before their images
     // A rim is kept whole where all of its circle lies on the surface, on a convex edge (or a
     // rounded one's sphere); a concave edge (a cup's inner floor) can touch nothing first. Where
     // the surface cuts it, the points that lie on an edge of it are kept as points.
@@ -363,11 +370,13 @@ GroupProbes groupProbes(const GroupShape& shape) {
                     if (std::abs(s.f(f.point)) <= s.tol)
                         second.push_back({f.point, 0.0, 0, int(i)});
             }
-        for (const Rim& r : rimsOf(o))
+        for (const Rim& r : rimsOf(o)) {
+            circles.push_back({dvec3(o.pos) + turn * r.centre, r.radius, turn * r.axis, r.tube});
             for (const Feature& f :
                  imagesOf(sdf, o, {dvec3(o.pos) + turn * r.centre, turn * r.axis}))
                 considerRim({f.point, r.radius, glm::normalize(f.axis), r.tube, 0, r.core}, int(i),
                             &cover[i]);
+        }
         if (const std::optional<Side> side = sideOf(o); side && o.op == CsgOp::Union)
             for (const Feature& f : imagesOf(
                      sdf, o, {dvec3(o.pos) + turn * side->from, turn * (side->to - side->from)})) {
@@ -384,7 +393,9 @@ GroupProbes groupProbes(const GroupShape& shape) {
             }
     }
     // The circles where a cylinder's or cone's side meets a coaxial one's cap: a cup's inner
-    // rim, where the carved cylinder leaves the top; a tube's inner edges.
+    // rim, where the carved cylinder leaves the top; a tube's inner edges. Each circle once: in
+    // a stack of forty coins, every cap lies inside twenty coins, each naming it again, and the
+    // twenty went through all of the group's copies (forty coins repeated 512 times: minutes).
     for (size_t ia = 0; ia < sdf.objects.size(); ++ia)
         for (const SdfObject& b : sdf.objects) {
             const SdfObject& a = sdf.objects[ia];
@@ -401,6 +412,11 @@ GroupProbes groupProbes(const GroupShape& shape) {
                 if (std::abs(t) >= h - 1e-6 * shape.bound) continue;
                 const double top = a.type == ShapeType::Cone ? double(a.top) : double(a.radius);
                 const double radius = a.radius + (top - double(a.radius)) * (t + h) / (2.0 * h);
+                const Rim circle{dvec3(a.pos) + t * axis, radius, axis};
+                if (std::any_of(circles.begin(), circles.end(),
+                                [&](const Rim& c) { return sameCircle(c, circle, s.tol); }))
+                    continue;
+                circles.push_back(circle);
                 for (const Feature& f : imagesOf(sdf, a, {dvec3(a.pos) + t * axis, axis}))
                     considerRim({f.point, radius, glm::normalize(f.axis), 0.0}, int(ia), nullptr);
             }

@@ -499,6 +499,26 @@ TEST(GroupBodies, ALadderOfSixtyRungsIsBuiltWithPoints) {
     EXPECT_NEAR(w.rigid(0).pos.y, 0.03, 0.01);
 }
 
+// Two overlapping coaxial cylinders cut level by a wider one: the edge left is where each
+// cylinder's side meets the cutter's cap. Each named it, and it was kept twice, two of the
+// group's few rims on one circle; in a stack of forty coins, each cap named by twenty coins
+// was looked for twenty times over in every copy of the group. One circle, one rim.
+TEST(GroupBodies, AnEdgeThatTwoMembersMakeIsOneRim) {
+    const Scene s = sceneFromText(
+        "scene version:3\nworld ground:1\n"
+        "group name:g pos:0,2,0 mass:1\n"
+        "object in:g type:cylinder pos:0,0,0 radius:0.3 height:1\n"
+        "object in:g type:cylinder pos:0,0.2,0 radius:0.3 height:0.8\n"
+        "object in:g type:cylinder pos:0,0.8,0 radius:0.5 height:1 op:subtract\n");
+    const GroupProbes probes = groupProbes(groupShapeOf(s, 0));
+    int atCut = 0;
+    for (const Rim& r : probes.rims)
+        if (glm::length(r.centre - glm::dvec3(0.0, 0.3, 0.0)) < 1e-6 &&
+            std::abs(r.radius - 0.3) < 1e-6)
+            ++atCut;
+    EXPECT_EQ(atCut, 1);
+}
+
 // A group of subtractions alone, 121 spheres carved out of nothing, has no solid and no body.
 // Its size counts its unions alone, 0, and the spacing that thins its probes started at 0 and
 // never grew: the world was never built. Now it is, without the group, whose probes are not
