@@ -1653,6 +1653,7 @@ void RigidBodies::integrateVelocities(double h, double gravity) {
 // The turn is the free body's (rotateFree): the contacts' torques came in as spin already.
 void RigidBodies::integratePositions(double h, double gravity) {
     const bool exact = settings_.integrator == Integrator::ExactGravity;
+    turns_.clear();
     for (RigidBody& b : bodies_) {
         if (!b.awake) continue;
         dvec3 dx = b.vel * h;
@@ -1660,7 +1661,11 @@ void RigidBodies::integratePositions(double h, double gravity) {
             dx.y += 0.5 * gravity * h * h;  // v·h after v -= g·h, plus ½·g·h²
         b.pos += dx;
         b.delta += dx;
-        rotateFree(b.orient, b.spin, b.inertia, h);
+        turns_.push_back({&b.orient, &b.spin, &b.inertia});
+    }
+    rotateFree(turns_, h);
+    for (RigidBody& b : bodies_) {
+        if (!b.awake) continue;
         if (b.revolved) b.untwisted = untwist(b.orient, b.startOrient);
         b.invInertia = worldInverseInertia(b.orient, b.inertia);
         b.supported = false;

@@ -29,6 +29,7 @@
 #include "near_parts.h"
 #include "oriented_box.h"
 #include "pair_cache.h"
+#include "rigid_body.h"
 #include "rigid_probes.h"
 #include "rigid_rows.h"
 #include "static_collider.h"
@@ -197,6 +198,7 @@ private:
     std::vector<RigidManifold> manifolds_;
     ManifoldBatches batches_;  // rows_ and manifolds_ as the substeps solve them
     std::vector<Candidate> candidates_;
+    std::vector<FreeTurn> turns_;  // integratePositions' awake bodies, turned together
     // Scratch kept from call to call for its room: collideStatics' candidates by static surface,
     // collidePair's candidates before and their bins while they are split by their normals'
     // ways, probeStatics' surfaces near a probe, a rim or an ellipsoid while each is probed.

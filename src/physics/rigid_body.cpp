@@ -135,21 +135,34 @@ void flowAboutAxis(dquat& q, dvec3& bodyMomentum, const dvec3& rate, int k, doub
     else flowAbout<2>(q, bodyMomentum, rate.z, t);
 }
 
+// One body's free turn in the making: its orientation, its angular momentum in its own frame,
+// its moments' inverses, and the order of its axes' flows (axisOrder).
+struct Turning {
+    dquat* q;
+    dvec3 bodyMomentum, rate;
+    std::array<int, 3> order;
+};
+
 // The triple jump's three Strang steps, outer(w·h/2) middle(w·h/2) inner(w·h) middle(w·h/2)
 // outer(w·h/2) for weights w1, w0, w1, with the two pairs of outer flows that meet between
 // them made one each (a flow about one axis twice is one flow for the sum): 13 flows, not 15.
-void tripleJump(dquat& q, dvec3& bodyMomentum, const dvec3& rate, const std::array<int, 3>& order,
-                double h) {
+// Each flow waits on the one before, a hundred instructions in a chain, so the bodies go
+// through them side by side: one body's flow runs while another's waits. Each body's own
+// operations are the same as alone.
+void tripleJump(std::span<Turning> bodies, double h) {
     static const double w1 = 1.0 / (2.0 - std::cbrt(2.0)), w0 = 1.0 - 2.0 * w1;
-    const auto [outer, middle, inner] = order;
+    constexpr int outer = 0, middle = 1, inner = 2;
     const double weights[3] = {w1, w0, w1};
-    flowAboutAxis(q, bodyMomentum, rate, outer, 0.5 * w1 * h);
+    auto flow = [&](int axis, double t) {
+        for (Turning& b : bodies) flowAboutAxis(*b.q, b.bodyMomentum, b.rate, b.order[axis], t);
+    };
+    flow(outer, 0.5 * w1 * h);
     for (int step = 0; step < 3; ++step) {
         const double w = weights[step] * h, next = step < 2 ? weights[step + 1] * h : 0.0;
-        flowAboutAxis(q, bodyMomentum, rate, middle, 0.5 * w);
-        flowAboutAxis(q, bodyMomentum, rate, inner, w);
-        flowAboutAxis(q, bodyMomentum, rate, middle, 0.5 * w);
-        flowAboutAxis(q, bodyMomentum, rate, outer, 0.5 * (w + next));
+        flow(middle, 0.5 * w);
+        flow(inner, w);
+        flow(middle, 0.5 * w);
+        flow(outer, 0.5 * (w + next));
     }
 }
 
@@ -238,12 +251,36 @@ MassProperties massProperties(const Object& o) {
 
 // Yoshida's triple jump: Strang steps of w1·h, w0·h, w1·h with w1 = 1/(2 − ∛2), w0 = 1 − 2·w1
 // cancel the third-order error of the symmetric step, leaving a fourth-order one.
+void rotateFree(std::span<const FreeTurn> turns, double h) {
+    constexpr size_t kSideBySide = 4;
+    std::array<Turning, kSideBySide> jumping;
+    std::array<const FreeTurn*, kSideBySide> of;
+    size_t count = 0;
+    auto finish = [](const FreeTurn& t, const dvec3& bodyMomentum) {
+        *t.q = glm::normalize(*t.q);
+        *t.spin = *t.q * (bodyMomentum / *t.inertia);
+    };
+    auto jump = [&] {
+        tripleJump({jumping.data(), count}, h);
+        for (size_t k = 0; k < count; ++k) finish(*of[k], jumping[k].bodyMomentum);
+        count = 0;
+    };
+    for (const FreeTurn& t : turns) {
+        dvec3 bodyMomentum = *t.inertia * (glm::conjugate(*t.q) * *t.spin);
+        if (rotateSymmetric(*t.q, bodyMomentum, *t.inertia, h)) {
+            finish(t, bodyMomentum);
+            continue;
+        }
+        of[count] = &t;
+        jumping[count++] = {t.q, bodyMomentum, 1.0 / *t.inertia, axisOrder(*t.inertia)};
+        if (count == kSideBySide) jump();
+    }
+    if (count > 0) jump();
+}
+
 void rotateFree(dquat& q, dvec3& spin, const dvec3& inertia, double h) {
-    dvec3 bodyMomentum = inertia * (glm::conjugate(q) * spin);
-    if (!rotateSymmetric(q, bodyMomentum, inertia, h))
-        tripleJump(q, bodyMomentum, 1.0 / inertia, axisOrder(inertia), h);
-    q = glm::normalize(q);
-    spin = q * (bodyMomentum / inertia);
+    const FreeTurn turn{&q, &spin, &inertia};
+    rotateFree({&turn, 1}, h);
 }
 
 dquat untwist(const dquat& q, const dquat& from) {

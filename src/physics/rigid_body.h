@@ -13,6 +13,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
+#include <span>
 
 namespace mb {
 
@@ -27,6 +28,13 @@ MassProperties massProperties(const Object& o);
 // are equal (the symmetric top's exact flow) or else to a tiny bound (a symmetric fourth-order
 // splitting; rigid_body.cpp has both methods and the measured errors). q leaves normalised.
 void rotateFree(glm::dquat& q, glm::dvec3& spin, const glm::dvec3& inertia, double h);
+// The same for many bodies at once, each as alone.
+struct FreeTurn {
+    glm::dquat* q;
+    glm::dvec3* spin;
+    const glm::dvec3* inertia;
+};
+void rotateFree(std::span<const FreeTurn> turns, double h);
 
 // The orientation that turns `from`'s y axis to q's by the least turn: q less its twist about
 // its own y axis since `from` (the swing of a swing-twist split); q itself where the axis
