@@ -315,7 +315,9 @@ GroupProbes groupProbes(const GroupShape& shape) {
     std::vector<Rim> rims;
     std::vector<Side> sides;
     std::vector<Cover> cover(sdf.objects.size());
-    std::vector<Rim> circles;  // the rims' and coaxial circles', before their images
+    // The rims' and coaxial circles' before their images, each with the group whose mirrors and
+    // copies make those: one circle is the same edge only where it goes through the same ones.
+    std::vector<std::pair<Rim, int>> circles;
     // A rim is kept whole where all of its circle lies on the surface, on a convex edge (or a
     // rounded one's sphere); a concave edge (a cup's inner floor) can touch nothing first. Where
     // the surface cuts it, the points that lie on an edge of it are kept as points.
@@ -371,7 +373,8 @@ GroupProbes groupProbes(const GroupShape& shape) {
                         second.push_back({f.point, 0.0, 0, int(i)});
             }
         for (const Rim& r : rimsOf(o)) {
-            circles.push_back({dvec3(o.pos) + turn * r.centre, r.radius, turn * r.axis, r.tube});
+            circles.push_back(
+                {{dvec3(o.pos) + turn * r.centre, r.radius, turn * r.axis, r.tube}, o.group});
             for (const Feature& f :
                  imagesOf(sdf, o, {dvec3(o.pos) + turn * r.centre, turn * r.axis}))
                 considerRim({f.point, r.radius, glm::normalize(f.axis), r.tube, 0, r.core}, int(i),
@@ -413,10 +416,11 @@ GroupProbes groupProbes(const GroupShape& shape) {
                 const double top = a.type == ShapeType::Cone ? double(a.top) : double(a.radius);
                 const double radius = a.radius + (top - double(a.radius)) * (t + h) / (2.0 * h);
                 const Rim circle{dvec3(a.pos) + t * axis, radius, axis};
-                if (std::any_of(circles.begin(), circles.end(),
-                                [&](const Rim& c) { return sameCircle(c, circle, s.tol); }))
+                if (std::any_of(circles.begin(), circles.end(), [&](const auto& c) {
+                        return c.second == a.group && sameCircle(c.first, circle, s.tol);
+                    }))
                     continue;
-                circles.push_back(circle);
+                circles.push_back({circle, a.group});
                 for (const Feature& f : imagesOf(sdf, a, {dvec3(a.pos) + t * axis, axis}))
                     considerRim({f.point, radius, glm::normalize(f.axis), 0.0}, int(ia), nullptr);
             }

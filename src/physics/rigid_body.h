@@ -28,7 +28,7 @@ MassProperties massProperties(const Object& o);
 // are equal (the symmetric top's exact flow) or else to a tiny bound (a symmetric fourth-order
 // splitting; rigid_body.cpp has both methods and the measured errors). q leaves normalised.
 void rotateFree(glm::dquat& q, glm::dvec3& spin, const glm::dvec3& inertia, double h);
-// The same for many bodies at once, each as alone.
+// The same for many bodies at once, each as alone; each turn a different body's.
 struct FreeTurn {
     glm::dquat* q;
     glm::dvec3* spin;

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -517,6 +518,24 @@ TEST(GroupBodies, AnEdgeThatTwoMembersMakeIsOneRim) {
             std::abs(r.radius - 0.3) < 1e-6)
             ++atCut;
     EXPECT_EQ(atCut, 1);
+}
+
+// The same circle before the images is another edge where a member's mirrors and copies make
+// it elsewhere: a cone's base rim in a pair of copies 3 m apart lies, before them, on the cut
+// edge of the cylinder between them. That edge is kept.
+TEST(GroupBodies, AnEdgeIsKeptBesideTheSameCircleInCopiesElsewhere) {
+    const Scene s = sceneFromText(
+        "scene version:3\nworld ground:1\n"
+        "group name:g pos:0,2,0 mass:1\n"
+        "object in:g type:cylinder pos:0,0.5,0 radius:0.3 height:2\n"
+        "object in:g type:cylinder pos:0,1.5,0 radius:0.5 height:2 op:subtract\n"
+        "group name:s in:g repeat:2,1,1 spacing:3,1,1\n"
+        "object in:s type:cone pos:0,1,0 radius:0.3 height:1\n");
+    const GroupProbes probes = groupProbes(groupShapeOf(s, 0));
+    EXPECT_TRUE(std::any_of(probes.rims.begin(), probes.rims.end(), [](const Rim& r) {
+        return glm::length(r.centre - glm::dvec3(0.0, 0.5, 0.0)) < 1e-6 &&
+               std::abs(r.radius - 0.3) < 1e-6;
+    }));
 }
 
 // A group of subtractions alone, 121 spheres carved out of nothing, has no solid and no body.
