@@ -38,10 +38,12 @@ void NearParts::meet(std::span<const OrientedBox> boxesA, std::span<const Orient
     nearHullB_.resize(partsB.size());
     for (size_t p = 0; p < partsA.size(); ++p) nearHullA_[p] = near(partsA[p], boxesB[0], reach);
     for (size_t q = 0; q < partsB.size(); ++q) nearHullB_[q] = near(partsB[q], boxesA[0], reach);
+    // A part beyond reach of the other body's hull is beyond reach of every part the hull holds:
+    // only pairs whose parts each reach the other's hull are tested.
     near_.assign(partsA.size() * partsB.size(), 0);
     for (size_t p = 0; p < partsA.size(); ++p)
         for (size_t q = 0; q < partsB.size(); ++q)
-            if (nearHullA_[p] || nearHullB_[q])
+            if (nearHullA_[p] && nearHullB_[q])
                 near_[nearIndex(p, q)] = near(partsA[p], partsB[q], reach);
 }
 

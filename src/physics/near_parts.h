@@ -64,7 +64,7 @@ private:
     // Where near_ holds a's part p against b's part q.
     size_t nearIndex(size_t p, size_t q) const { return p * nearHullB_.size() + q; }
     // meet's: whether a's part p and b's part q are near (near_[nearIndex(p, q)], set only where
-    // one of them is near the other's hull), and whether each part is near the other's hull.
+    // each is near the other's hull), and whether each part is near the other's hull.
     std::vector<char> near_, nearHullA_, nearHullB_;
     std::vector<int> first_, parts_;  // part p's list is parts_[first_[p], first_[p + 1])
     std::vector<Frame> frames_;       // one per shape part, set where a list holds it
