@@ -15,7 +15,8 @@ namespace {
 using glm::dquat;
 using glm::dvec3;
 
-dvec3 toFrame(const RigidBody& body, const dvec3& world) {
+template <class Body>
+dvec3 toFrame(const Body& body, const dvec3& world) {
     return glm::conjugate(body.orient) * (world - body.pos);
 }
 
@@ -44,10 +45,13 @@ bool PairCache::reuse(std::uint64_t pair, const RigidBody& a, const RigidBody& b
             : shift > kMovedMost || turned > glm::radians(kTurnedMost) || came > 0.5 * e.reach)
         return false;
     out->clear();
-    for (const Point& p : e.points) {
-        const dvec3 onA = toWorld(a, p.onA), onB = toWorld(b, p.onB), n = a.orient * p.normal;
-        out->push_back({0.5 * (onA + onB), n, glm::dot(onB - onA, n), p.probe,
-                        toWorld(a, p.centreA), toWorld(b, p.centreB)});
+    for (const PairCandidate& c : e.points) {
+        const dvec3 half = 0.5 * c.separation * c.normal;
+        const dvec3 onA = toWorld(a, toFrame(e.a, c.point - half));
+        const dvec3 onB = toWorld(b, toFrame(e.b, c.point + half));
+        const dvec3 n = a.orient * (glm::conjugate(e.a.orient) * c.normal);
+        out->push_back({0.5 * (onA + onB), n, glm::dot(onB - onA, n), c.probe,
+                        toWorld(a, toFrame(e.a, c.centreA)), toWorld(b, toFrame(e.b, c.centreB))});
     }
     now_.insert(last_.extract(found));
     return true;
@@ -62,13 +66,9 @@ void PairCache::keep(std::uint64_t pair, const RigidBody& a, const RigidBody& b,
     e.offset = toFrame(a, b.pos);
     e.turn = glm::conjugate(a.orient) * b.orient;
     e.reach = reach;
-    e.points.clear();
-    for (const PairCandidate& c : found) {
-        const dvec3 half = 0.5 * c.separation * c.normal;
-        e.points.push_back({toFrame(a, c.point - half), toFrame(a, c.centreA),
-                            toFrame(b, c.point + half), toFrame(b, c.centreB),
-                            glm::conjugate(a.orient) * c.normal, c.probe});
-    }
+    e.a = {a.pos, a.orient};
+    e.b = {b.pos, b.orient};
+    e.points = found;
     if (node) now_.insert(std::move(node));
 }
 

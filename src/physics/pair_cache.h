@@ -43,17 +43,19 @@ public:
               const std::vector<PairCandidate>& found);
 
 private:
-    struct Point {
-        glm::dvec3 onA, centreA;  // a's frame
-        glm::dvec3 onB, centreB;  // b's frame
-        glm::dvec3 normal;        // a's frame
-        int probe;
+    struct Pose {
+        glm::dvec3 pos;
+        glm::dquat orient;
     };
+    // The points as found, and where both bodies stood: most pairs move on before they are
+    // reused (a pile of tables reused one in six), so a point is taken into its bodies' frames
+    // only when it is.
     struct Entry {
         glm::dvec3 offset;  // b's origin in a's frame, when found
         glm::dquat turn;    // b's orientation in a's frame, when found
         double reach;       // searched to
-        std::vector<Point> points;
+        Pose a, b;
+        std::vector<PairCandidate> points;
     };
     std::unordered_map<std::uint64_t, Entry> last_, now_;
 };
