@@ -603,8 +603,11 @@ int stepsFor(double seconds, const PhysicsSettings& settings) {
 
 int simulate(Scene& scene, double seconds, const PhysicsSettings& settings,
              SimulateProgress progress) {
-    PhysicsWorld world(scene, settings);
+    // No step moves nothing: the world, whose building takes seconds for a large group, is not
+    // built, and the scene stays as it was (writing back an unstepped world changed nothing).
     const int steps = stepsFor(seconds, settings);
+    if (steps == 0) return 0;
+    PhysicsWorld world(scene, settings);
     for (long long i = 1; i <= steps; ++i) {
         world.step();
         if (progress && i * 100 / steps != (i - 1) * 100 / steps) progress(double(i) / steps);

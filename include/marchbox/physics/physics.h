@@ -89,9 +89,9 @@ struct PhysicsBody {
     double radius = 0.5;
     double sleepTime = 0.0;  // s spent slow
     bool awake = true;
-    bool supported = false;  // a contact pushed it this substep (solve pass)
-    int island = -1;         // sleeping island, for waking it whole
-    int object = -1;         // index in Scene::objects; -1 for the static body
+    bool supported = false;                    // a contact pushed it this substep (solve pass)
+    int island = -1;                           // sleeping island, for waking it whole
+    int object = -1;                           // index in Scene::objects; -1 for the static body
     double friction = 0.0, restitution = 0.0;  // its own, or the world's
 };
 
@@ -173,8 +173,9 @@ using SimulateProgress = void (*)(double done);
 // reach the same state.
 int stepsFor(double seconds, const PhysicsSettings& settings);
 
-// Exactly stepsFor(seconds) steps, then writes the state back. Deterministic: the same scene
-// and settings give the same bytes. Returns the number of steps taken.
+// Exactly stepsFor(seconds) steps, then writes the state back; no step leaves the scene as it
+// was. Deterministic: the same scene and settings give the same bytes. Returns the number of
+// steps taken.
 int simulate(Scene& scene, double seconds, const PhysicsSettings& settings = {},
              SimulateProgress progress = nullptr);
 
