@@ -373,10 +373,9 @@ GroupProbes groupProbes(const GroupShape& shape) {
                         second.push_back({f.point, 0.0, 0, int(i)});
             }
         for (const Rim& r : rimsOf(o)) {
-            circles.push_back(
-                {{dvec3(o.pos) + turn * r.centre, r.radius, turn * r.axis, r.tube}, o.group});
-            for (const Feature& f :
-                 imagesOf(sdf, o, {dvec3(o.pos) + turn * r.centre, turn * r.axis}))
+            const Feature own{dvec3(o.pos) + turn * r.centre, turn * r.axis};
+            circles.push_back({{own.point, r.radius, own.axis, r.tube}, o.group});
+            for (const Feature& f : imagesOf(sdf, o, own))
                 considerRim({f.point, r.radius, glm::normalize(f.axis), r.tube, 0, r.core}, int(i),
                             &cover[i]);
         }
@@ -421,7 +420,7 @@ GroupProbes groupProbes(const GroupShape& shape) {
                     }))
                     continue;
                 circles.push_back({circle, a.group});
-                for (const Feature& f : imagesOf(sdf, a, {dvec3(a.pos) + t * axis, axis}))
+                for (const Feature& f : imagesOf(sdf, a, {circle.centre, axis}))
                     considerRim({f.point, radius, glm::normalize(f.axis), 0.0}, int(ia), nullptr);
             }
         }

@@ -34,10 +34,12 @@ bool PairCache::reuse(std::uint64_t pair, const RigidBody& a, const RigidBody& b
     const auto found = last_.find(pair);
     if (found == last_.end()) return false;
     const Entry& e = found->second;
-    const double shift = glm::length(toFrame(a, b.pos) - e.offset);
+    // b's origin and turn in a's frame now and when the points were found.
+    const double shift = glm::length(toFrame(a, b.pos) - toFrame(e.a, e.b.pos));
     // The angle between the two turns is 2·acos|q·q'|.
-    const double cosHalf =
-        std::min(std::abs(glm::dot(glm::conjugate(a.orient) * b.orient, e.turn)), 1.0);
+    const double cosHalf = std::min(std::abs(glm::dot(glm::conjugate(a.orient) * b.orient,
+                                                      glm::conjugate(e.a.orient) * e.b.orient)),
+                                    1.0);
     const double turned = 2.0 * std::acos(cosHalf);
     const double came = shift + turned * b.bound;  // the most any point of b came towards a
     if (e.points.empty()
@@ -63,8 +65,6 @@ void PairCache::keep(std::uint64_t pair, const RigidBody& a, const RigidBody& b,
     // its points' room are used again rather than freed and made anew.
     auto node = last_.extract(pair);
     Entry& e = node ? node.mapped() : now_[pair];
-    e.offset = toFrame(a, b.pos);
-    e.turn = glm::conjugate(a.orient) * b.orient;
     e.reach = reach;
     e.a = {a.pos, a.orient};
     e.b = {b.pos, b.orient};

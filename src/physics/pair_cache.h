@@ -51,10 +51,8 @@ private:
     // reused (a pile of tables reused one in six), so a point is taken into its bodies' frames
     // only when it is.
     struct Entry {
-        glm::dvec3 offset;  // b's origin in a's frame, when found
-        glm::dquat turn;    // b's orientation in a's frame, when found
-        double reach;       // searched to
         Pose a, b;
+        double reach;  // searched to
         std::vector<PairCandidate> points;
     };
     std::unordered_map<std::uint64_t, Entry> last_, now_;

@@ -135,10 +135,10 @@ void flowAboutAxis(dquat& q, dvec3& bodyMomentum, const dvec3& rate, int k, doub
     else flowAbout<2>(q, bodyMomentum, rate.z, t);
 }
 
-// One body's free turn in the making: its orientation, its angular momentum in its own frame,
-// its moments' inverses, and the order of its axes' flows (axisOrder).
+// One body's free turn in the making: the body, its angular momentum in its own frame, its
+// moments' inverses, and the order of its axes' flows (axisOrder).
 struct Turning {
-    dquat* q;
+    const FreeTurn* body;
     dvec3 bodyMomentum, rate;
     std::array<int, 3> order;
 };
@@ -154,7 +154,8 @@ void tripleJump(std::span<Turning> bodies, double h) {
     constexpr int outer = 0, middle = 1, inner = 2;
     const double weights[3] = {w1, w0, w1};
     auto flow = [&](int axis, double t) {
-        for (Turning& b : bodies) flowAboutAxis(*b.q, b.bodyMomentum, b.rate, b.order[axis], t);
+        for (Turning& b : bodies)
+            flowAboutAxis(*b.body->q, b.bodyMomentum, b.rate, b.order[axis], t);
     };
     flow(outer, 0.5 * w1 * h);
     for (int step = 0; step < 3; ++step) {
@@ -254,7 +255,6 @@ MassProperties massProperties(const Object& o) {
 void rotateFree(std::span<const FreeTurn> turns, double h) {
     constexpr size_t kSideBySide = 4;
     std::array<Turning, kSideBySide> jumping;
-    std::array<const FreeTurn*, kSideBySide> of;
     size_t count = 0;
     auto finish = [](const FreeTurn& t, const dvec3& bodyMomentum) {
         *t.q = glm::normalize(*t.q);
@@ -262,7 +262,7 @@ void rotateFree(std::span<const FreeTurn> turns, double h) {
     };
     auto jump = [&] {
         tripleJump({jumping.data(), count}, h);
-        for (size_t k = 0; k < count; ++k) finish(*of[k], jumping[k].bodyMomentum);
+        for (size_t k = 0; k < count; ++k) finish(*jumping[k].body, jumping[k].bodyMomentum);
         count = 0;
     };
     for (const FreeTurn& t : turns) {
@@ -271,8 +271,7 @@ void rotateFree(std::span<const FreeTurn> turns, double h) {
             finish(t, bodyMomentum);
             continue;
         }
-        of[count] = &t;
-        jumping[count++] = {t.q, bodyMomentum, 1.0 / *t.inertia, axisOrder(*t.inertia)};
+        jumping[count++] = {&t, bodyMomentum, 1.0 / *t.inertia, axisOrder(*t.inertia)};
         if (count == kSideBySide) jump();
     }
     if (count > 0) jump();
