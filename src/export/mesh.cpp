@@ -200,13 +200,16 @@ std::string tooLarge(double voxel, double bytes, size_t budget) {
            gib(double(budget)) + " is the limit (half the memory)";
 }
 
-// volumeToMesh's quads, each split along its shorter diagonal, and its triangles.
+// volumeToMesh's quads, each split along its shorter diagonal, and its triangles; its points
+// are in voxels from voxel (0,0,0)'s centre, `origin`.
 void collectTriangles(const std::vector<openvdb::Vec3s>& points,
                       const std::vector<openvdb::Vec3I>& tris,
-                      const std::vector<openvdb::Vec4I>& quads, TriangleMesh* out) {
+                      const std::vector<openvdb::Vec4I>& quads, const glm::dvec3& origin,
+                      double voxel, TriangleMesh* out) {
     out->points.resize(points.size());
     for (size_t i = 0; i < points.size(); ++i)
-        out->points[i] = glm::vec3(points[i].x(), points[i].y(), points[i].z());
+        out->points[i] =
+            glm::vec3(origin + voxel * glm::dvec3(points[i].x(), points[i].y(), points[i].z()));
     out->triangles.reserve(tris.size() + 2 * quads.size());
     // OpenVDB winds its polygons clockwise seen from outside; the mesh's are counter-clockwise.
     for (const openvdb::Vec3I& t : tris) out->triangles.emplace_back(t[0], t[2], t[1]);
@@ -321,11 +324,10 @@ MeshStatus meshSdf(const SceneSdf& sdf, const MeshSettings& settings, TriangleMe
         if (settings.progress) settings.progress(double(s + 1) / kSlices);
     }
 
+    // The grid's own transform is the identity: OpenVDB refuses a scale under about 1e-5 (a
+    // 2 mm bead's default voxel threw, uncaught), so its points come back in voxels and are
+    // placed in the world here.
     openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(band.width);
-    openvdb::math::Transform::Ptr transform =
-        openvdb::math::Transform::createLinearTransform(voxel);
-    transform->postTranslate(openvdb::Vec3d(lo.x, lo.y, lo.z));
-    grid->setTransform(transform);
     grid->setGridClass(openvdb::GRID_LEVEL_SET);
     for (std::unique_ptr<FloatLeaf>& leaf : leaves)
         if (leaf) grid->tree().addLeaf(leaf.release());
@@ -339,7 +341,7 @@ MeshStatus meshSdf(const SceneSdf& sdf, const MeshSettings& settings, TriangleMe
     if (settings.stop && settings.stop()) return MeshStatus::Stopped;  // the mesher cannot stop
     openvdb::tools::volumeToMesh(*grid, points, tris, quads, 0.0, 0.0);
     grid.reset();
-    collectTriangles(points, tris, quads, out);
+    collectTriangles(points, tris, quads, lo, voxel, out);
     pullNearSurface(sdf, voxel, out);
     weldCoincidentPoints(out);
     return MeshStatus::Ok;

@@ -139,6 +139,24 @@ TEST(Mesh, SphereIsClosedOutwardNearItsRadiusAndHoldsItsVolume) {
     EXPECT_NEAR(volume, exact, 3.0 * 9.0 * voxel * voxel / 8.0 * exact);
 }
 
+// A bead of 1 mm radius at its default voxel, 7.8 µm: OpenVDB refuses a grid scaled under about
+// 1e-5, and the export ended in an uncaught exception (an abort, no file). Planted: the grid
+// scaled by the voxel again.
+TEST(Mesh, ABeadOfAMillimetreIsMeshedAtItsDefaultVoxel) {
+    const vec3 centre(0.3f, 1.2f, -0.7f);
+    Object bead = shape(ShapeType::Sphere, centre);
+    bead.radius = 1e-3f;
+    const Scene scene = sceneOf({bead});
+    const double voxel = defaultVoxel(makeSceneSdf(scene));
+    ASSERT_LT(voxel, 1e-5);
+    const TriangleMesh m = meshOf(scene, 0.0);
+    ASSERT_GT(m.triangles.size(), 1000u);
+    EXPECT_TRUE(closedAndOriented(m));
+    auto sdf = [&](vec3 p) { return sdSphere(p - centre, 1e-3f); };
+    EXPECT_LE(largestVertexError(m, sdf), voxel / 2);
+    EXPECT_EQ(inwardTriangles(m, sdf), 0u);
+}
+
 TEST(Mesh, TurnedBoxIsClosedOutwardNearItsFacesAndHoldsItsVolume) {
     Object box = shape(ShapeType::Box, vec3(-1.1f, 0.4f, 2.3f));
     box.size = vec3(0.5f, 0.3f, 0.4f);
