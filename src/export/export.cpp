@@ -98,11 +98,12 @@ ExportResult meshPart(const Scene& scene, double voxel, const ExportSettings& s,
     return r;
 }
 
-// The bytes written last, once the work is done and not stopped.
-ExportResult writeFile(const std::string& path, const std::string& bytes, double voxel,
-                       size_t triangles) {
-    const std::string why = replaceFile(path, bytes);
-    if (!why.empty()) return failed(cannotWrite(path, why));
+// The bytes written last, once the work is done and not stopped: files that go together (an
+// OBJ and its MTL) all or none.
+ExportResult writeFiles(const std::vector<FileBytes>& files, double voxel, size_t triangles) {
+    size_t bad = 0;
+    const std::string why = replaceFiles(files, &bad);
+    if (!why.empty()) return failed(cannotWrite(files[bad].path, why));
     ExportResult r;
     r.status = ExportResult::Written;
     r.voxel = voxel;
@@ -146,20 +147,19 @@ ExportResult exportScene(const Scene& scene, const std::string& path, const Expo
 
     switch (format) {
         case MeshFormat::Stl:
-            return writeFile(path, stlBytes(mesh), voxel, mesh.triangles.size());
+            return writeFiles({{path, stlBytes(mesh)}}, voxel, mesh.triangles.size());
         case MeshFormat::Ply: {
             std::vector<glm::vec3> colours;
             for (int m : pointMaterials(shown, sdf, mesh))
                 colours.push_back(materialColour(shown, m));
-            return writeFile(path, plyBytes(mesh, colours), voxel, mesh.triangles.size());
+            return writeFiles({{path, plyBytes(mesh, colours)}}, voxel, mesh.triangles.size());
         }
         case MeshFormat::Obj: {
             const std::string mtl = mtlPathFor(path);
-            ExportResult r = writeFile(mtl, mtlBytes(shown), voxel, 0);
-            if (r.status != ExportResult::Written) return r;
             const std::string name = std::filesystem::path(mtl).filename().string();
-            return writeFile(path, objBytes(mesh, materials, shown, name), voxel,
-                             mesh.triangles.size());
+            return writeFiles(
+                {{mtl, mtlBytes(shown)}, {path, objBytes(mesh, materials, shown, name)}}, voxel,
+                mesh.triangles.size());
         }
         case MeshFormat::Glb: {
             GltfDocument doc;
@@ -168,7 +168,7 @@ ExportResult exportScene(const Scene& scene, const std::string& path, const Expo
             doc.cameras.push_back(cameraAt(shown.keyframes, shown.camera, s.seconds));
             const size_t triangles = mesh.triangles.size();
             doc.parts.push_back({"solids", std::move(mesh), std::move(materials), {}});
-            return writeFile(path, glbBytes(doc), voxel, triangles);
+            return writeFiles({{path, glbBytes(doc)}}, voxel, triangles);
         }
     }
     return failed("unknown format");
@@ -255,7 +255,7 @@ ExportResult exportAnimation(const Scene& scene, const std::string& path,
     // Without keyframes the camera stands still: one view, not a channel of equal keys.
     if (scene.keyframes.empty()) doc.cameras.resize(1);
     if (stopped(s)) return stoppedRun();
-    return writeFile(path, glbBytes(doc), voxel, triangles);
+    return writeFiles({{path, glbBytes(doc)}}, voxel, triangles);
 }
 
 }  // namespace mb

@@ -147,18 +147,32 @@ private:
 // The directory is not fsynced after the rename: after a crash the rename may be lost, but
 // the file left behind is then the old one, whole, which is the promise.
 std::string replaceFile(const std::string& path, std::string_view bytes) {
+    size_t failed = 0;
+    return replaceFiles({{path, bytes}}, &failed);
+}
+
+std::string replaceFiles(const std::vector<FileBytes>& files, size_t* failed) {
     TerminationHeld held;
-    std::string target, tmp;
-    std::optional<mode_t> mode;
-    std::string why = saveTarget(path, &target, &mode);
-    if (why.empty()) {
-        int err = writeTemp(target, bytes, mode, &tmp);
-        if (err == 0 && fileOps().rename(tmp.c_str(), target.c_str()) != 0) err = errno;
-        if (err == 0) return "";
-        why = std::strerror(err);
+    std::vector<std::string> targets(files.size()), temps(files.size());
+    auto fail = [&](size_t k, std::string why) {
+        for (const std::string& tmp : temps)
+            if (!tmp.empty()) fileOps().unlink(tmp.c_str());
+        *failed = k;
+        return why;
+    };
+    for (size_t k = 0; k < files.size(); ++k) {
+        std::optional<mode_t> mode;
+        if (std::string why = saveTarget(files[k].path, &targets[k], &mode); !why.empty())
+            return fail(k, why);
+        if (int err = writeTemp(targets[k], files[k].bytes, mode, &temps[k]))
+            return fail(k, std::strerror(err));
     }
-    if (!tmp.empty()) fileOps().unlink(tmp.c_str());
-    return why;
+    for (size_t k = 0; k < files.size(); ++k) {
+        if (fileOps().rename(temps[k].c_str(), targets[k].c_str()) != 0)
+            return fail(k, std::strerror(errno));
+        temps[k].clear();
+    }
+    return "";
 }
 
 std::string checkReplaceFile(const std::string& path) {

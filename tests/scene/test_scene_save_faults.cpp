@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <string_view>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -180,6 +181,39 @@ TEST_F(SaveFaults, InterruptedWriteIsRetriedAndTheSaveSucceeds) {
     EXPECT_EQ(oldBytes(), formatScene(scene_));
     EXPECT_EQ(fileCount(), 1u);
     EXPECT_EQ(g.opened, g.closed);
+}
+
+// An OBJ and the MTL it names go together: the second file's write fails (a full disk), and the
+// first, already written beside its own, is not renamed over it either; with no fault both are
+// replaced. Planted: each file renamed as soon as it was written (the MTL was replaced and the
+// OBJ not, a pair that did not match).
+TEST_F(SaveFaults, FilesThatGoTogetherAreReplacedTogetherOrNotAtAll) {
+    const std::string mtl = (dir_ / "solids.mtl").string();
+    std::ofstream(mtl, std::ios::binary) << "old mtl\n";
+    auto read = [](const std::string& path) {
+        std::ifstream in(path, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    FileOps ops = posixOps();
+    ops.open = [](const char* path, int flags, mode_t mode) {
+        return std::string_view(path).find("scene.txt") != std::string_view::npos
+                   ? failWith(ENOSPC)
+                   : posixOps().open(path, flags, mode);
+    };
+    size_t failed = 0;
+    {
+        ScopedFileOps full(ops);
+        EXPECT_EQ(replaceFiles({{mtl, "new mtl\n"}, {target(), "new obj\n"}}, &failed),
+                  std::strerror(ENOSPC));
+    }
+    EXPECT_EQ(failed, 1u);
+    EXPECT_EQ(read(mtl), "old mtl\n");
+    EXPECT_EQ(oldBytes(), kOld);
+    EXPECT_EQ(fileCount(), 2u) << "a temporary was left beside a file";
+    EXPECT_EQ(replaceFiles({{mtl, "new mtl\n"}, {target(), "new obj\n"}}, &failed), "");
+    EXPECT_EQ(read(mtl), "new mtl\n");
+    EXPECT_EQ(oldBytes(), "new obj\n");
+    EXPECT_EQ(fileCount(), 2u);
 }
 
 TEST_F(SaveFaults, TableIsRestoredAfterEachTest) {

@@ -4,6 +4,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace mb {
 
@@ -12,6 +13,17 @@ namespace mb {
 // and the file it points to replaced; a device, pipe or folder is refused. The replaced file's
 // permission bits carry over to the new one.
 std::string replaceFile(const std::string& path, std::string_view bytes);
+
+// Files that go together (an OBJ and the MTL it names), replaced together: each is written
+// beside its path first, and only once every one is written are they renamed over theirs, so a
+// write that fails (a full disk) leaves every old file whole. Returns "" or why the first that
+// failed did, its index in *failed. A rename that fails after another's succeeded (rare: the
+// temporaries lie beside their files) leaves the earlier ones replaced.
+struct FileBytes {
+    std::string path;
+    std::string_view bytes;
+};
+std::string replaceFiles(const std::vector<FileBytes>& files, size_t* failed);
 
 // Whether replaceFile(path, ...) would get as far as writing: "" or why not, in its words. It
 // tries, making the temporary and removing it, so a missing or read-only folder shows before
