@@ -66,7 +66,7 @@ int glFailure(const char* doing, const std::string& error) {
     return kExitNoGl;
 }
 
-static int flushStdout() {
+int flushStdout() {
     if (std::cout.flush()) return kExitOk;
     std::cerr << "marchbox: cannot write to standard output\n";
     return kExitBadInput;
@@ -318,9 +318,10 @@ int runBench(const Args& a) {
                 .count();
         if (i > 0) std::printf("frame %d: %.3f ms\n", i, elapsed), ms.push_back(elapsed);
     }
-    std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
-    std::printf("median_ms: %.3f\n", ms[ms.size() / 2]);
-    return kExitOk;
+    std::sort(ms.begin(), ms.end());  // an even count's median: the mean of the middle two
+    const size_t half = ms.size() / 2;
+    std::printf("median_ms: %.3f\n", ms.size() % 2 ? ms[half] : 0.5 * (ms[half - 1] + ms[half]));
+    return flushStdout();
 }
 
 }  // namespace mb

@@ -29,5 +29,6 @@ bool renderOptions(const Args& a, RenderOptions* o);          // --mode, --post,
 bool qualityPreset(const Args& a, QualityPreset* out);        // --quality
 PhysicsSettings physicsSettings(const Args& a);               // --threads
 int glFailure(const char* doing, const std::string& error);   // one line on stderr, exit 3
+int flushStdout();  // 0, or one line on stderr and exit 1 where standard output took no more
 
 }  // namespace mb

@@ -26,6 +26,8 @@ std::string framesError(const Args& a, FramePattern* pattern) {
         error = "--skip-existing takes a PATTERN of files, not a video";
     else if (isVideo(a.output) && (a.width % 2 || a.height % 2))
         error = "an H.264 video needs an even width and height (--size)";
+    else if (!isVideo(a.output) && !hasExtension(a.output, ".png"))
+        error = "frames are PNG files: PATTERN must end in .png (or write OUT.mp4)";
     else if (!isVideo(a.output)) parseFramePattern(a.output, pattern, &error);
     return error;
 }

@@ -42,11 +42,11 @@ int main(int argc, char** argv) {
     using namespace mb;
     if (argc > 1 && (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h"))) {
         std::cout << kUsage;
-        return kExitOk;
+        return flushStdout();
     }
     if (argc > 1 && !std::strcmp(argv[1], "--version")) {
         std::cout << "marchbox " << MARCHBOX_VERSION << '\n';
-        return kExitOk;
+        return flushStdout();
     }
     struct Command {
         const char* name;

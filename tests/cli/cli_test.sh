@@ -122,6 +122,8 @@ files_cases() {
   if [[ -w /dev/full ]]; then
     expect 1 sh -c '"$0" simulate "$1" --seconds 0 >/dev/full' "$mb" "$scene"
     expect 1 sh -c '"$0" shader "$1" >/dev/full' "$mb" "$scene"
+    expect 1 sh -c '"$0" --help >/dev/full' "$mb"
+    expect 1 sh -c '"$0" --version >/dev/full' "$mb"
   fi
 }
 
@@ -129,6 +131,11 @@ gl_cases() {
   local r=("$mb" render "$scene" -o "$tmp/x.png" --size 8x8)
   MB_ENV=MARCHBOX_SHADERS=/nonexistent expect_says "/nonexistent" 3 "${r[@]}"
   MB_ENV=MARCHBOX_SHADERS=/nonexistent expect 3 "$mb" bench "$scene" --frames 1 --size 8x8
+  if [[ -w /dev/full ]]; then expect 1 sh -c '"$0" bench "$1" --frames 1 --size 8x8 >/dev/full' "$mb" "$scene"; fi
+  # Of an even count of frames the median is the mean of the middle two, not the upper one.
+  "$mb" bench "$scene" --frames 2 --size 8x8 >"$tmp/bench" 2>/dev/null
+  awk '/^frame/ {sum += $3} /^median_ms/ {got = $2} END {exit !(got != "" && (got - sum / 2) ^ 2 < 4e-6)}' \
+    "$tmp/bench" || { echo "FAIL: bench's median of 2 frames: $(cat "$tmp/bench")" >&2; failures=$((failures + 1)); }
   MB_ENV=MARCHBOX_SHADERS=/nonexistent expect 3 "$mb" shader "$scene"
   # A syntax error in an included file, then in the vertex shader: the driver's first error
   # line, naming the file and line that hold it. sdf.glsl has #if blocks that the shader drops

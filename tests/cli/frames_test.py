@@ -142,6 +142,7 @@ def errors(mb, scene, tmp):
     expect(2, frames(at("f_%d_%d.png")), "two frame-number fields", tmp=tmp)
     expect(2, frames(at("f_%s.png")), "not %d, %05d or %%", tmp=tmp)
     expect(2, frames(at("f_%5d.png")), "not %d, %05d or %%", tmp=tmp)
+    expect(2, frames(at("f_%05d.jpg")), "PATTERN must end in .png", tmp=tmp)  # PNG bytes in .jpg
     expect(2, frames(at("f_%05d.png"), "5-3"), "the last frame comes before the first", tmp=tmp)
     expect(2, frames(at("f_%05d.png"), "5"), "render --frames takes a range A-B", tmp=tmp)
     expect(2, frames(at("f_%05d.png"), "0-2", "--fps", "0"), "--fps", tmp=tmp)
