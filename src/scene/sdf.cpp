@@ -289,16 +289,91 @@ void shiftSceneSdf(SceneSdf& sdf, vec3 origin) {
     for (SdfGroup& g : sdf.groups) g.pos -= origin;
 }
 
+namespace {
+
+void add(Box& b, const Box& other) {
+    b.lo = glm::min(b.lo, other.lo);
+    b.hi = glm::max(b.hi, other.hi);
+}
+
+Box around(vec3 centre, float reach) { return {centre - reach, centre + reach}; }
+
+// A sphere that holds part of a group's solid, in the world.
+struct Ball {
+    vec3 centre;
+    float radius;
+};
+
+// More balls than this are replaced by the eight corners of their box: repeats nested eight deep
+// would otherwise multiply them by 64 at each level.
+constexpr size_t kMostBalls = 64;
+
+void keepFew(std::vector<Ball>& balls) {
+    if (balls.size() <= kMostBalls) return;
+    Box b;
+    for (const Ball& ball : balls) add(b, around(ball.centre, ball.radius));
+    balls.clear();
+    for (int c = 0; c < 8; ++c)
+        balls.push_back(
+            {vec3((c & 1) ? b.hi.x : b.lo.x, (c & 2) ? b.hi.y : b.lo.y, (c & 4) ? b.hi.z : b.lo.z),
+             0.0f});
+}
+
+// The balls' images in group g: each mirror's reflection, and the copies at the corners of its
+// lattice, which hold every copy between them in their box. Turning a ball leaves it a ball, so
+// the box about them is as tight turned as not.
+void addImages(const SdfGroup& g, std::vector<Ball>& balls) {
+    const glm::mat3 toWorld = glm::transpose(g.toLocal);
+    const vec3 spread = middleCopy(g) * g.spacing;
+    std::vector<Ball> images;
+    for (const Ball& ball : balls) {
+        const vec3 q = g.toLocal * (ball.centre - g.pos);
+        for (int m = 0; m < 8; ++m)
+            for (int c = 0; c < 8; ++c) {
+                vec3 image = q;
+                bool used = true;
+                for (int a = 0; a < 3; ++a) {
+                    used &= (!(m >> a & 1) || g.mirror[a]) && (!(c >> a & 1) || spread[a] > 0.0f);
+                    if (m >> a & 1) image[a] = -image[a];
+                    image[a] += (c >> a & 1) ? spread[a] : -spread[a];
+                }
+                if (used) images.push_back({g.pos + toWorld * image, ball.radius + g.blend});
+            }
+    }
+    balls = std::move(images);
+    keepFew(balls);
+}
+
+// The balls that hold each group's solid, in the world: its union members' bounding spheres and
+// its member groups' balls, in its mirrors and copies. The sphere about the group's origin
+// (bound) held a member 10 m off it in a box 21 m wide, which gave an export 21 times too coarse
+// a voxel.
+std::vector<std::vector<Ball>> groupBalls(const SceneSdf& sdf) {
+    std::vector<std::vector<Ball>> balls(sdf.groups.size());
+    for (const SdfObject& o : sdf.objects)
+        if (o.group >= 0 && o.op == CsgOp::Union)
+            balls[size_t(o.group)].push_back({o.pos, objectReach(o)});
+    for (size_t i = sdf.groups.size(); i-- > 0;) {  // children come after their parents
+        const SdfGroup& g = sdf.groups[i];
+        keepFew(balls[i]);
+        addImages(g, balls[i]);
+        if (g.parent < 0 || g.op != CsgOp::Union) continue;
+        std::vector<Ball>& parent = balls[size_t(g.parent)];
+        parent.insert(parent.end(), balls[i].begin(), balls[i].end());
+    }
+    return balls;
+}
+
+}  // namespace
+
 Box objectBounds(const SceneSdf& sdf) {
     Box b;
-    auto add = [&](vec3 centre, float reach) {
-        b.lo = glm::min(b.lo, centre - reach);
-        b.hi = glm::max(b.hi, centre + reach);
-    };
     for (const SdfObject& o : sdf.objects)
-        if (o.group < 0) add(o.pos, objectReach(o));
-    for (const SdfGroup& g : sdf.groups)
-        if (g.parent < 0 && g.last > g.first) add(g.pos, g.bound + g.blend);
+        if (o.group < 0) add(b, around(o.pos, objectReach(o)));
+    const std::vector<std::vector<Ball>> balls = groupBalls(sdf);
+    for (size_t i = 0; i < sdf.groups.size(); ++i)
+        if (sdf.groups[i].parent < 0)
+            for (const Ball& ball : balls[i]) add(b, around(ball.centre, ball.radius));
     return b;
 }
 

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <glm/gtc/quaternion.hpp>
+#define GLM_ENABLE_EXPERIMENTAL
+#include <glm/gtx/string_cast.hpp>
 
 using namespace mb;
 using glm::vec3;
@@ -208,6 +210,50 @@ TEST(SceneGroups, ARepeatedGroupIsTheUnionOfEveryCopy) {
         ASSERT_NEAR(mapGroup(sdf, 0, p).d, everyCopy(p), 1e-6f)
             << "at " << p.x << "," << p.y << "," << p.z;
     }
+}
+
+// The solids' box (objectBounds: the shader's bounds, the export's default voxel) holds every
+// copy of every member and no more than they reach. A sphere 10 m off its group's origin: its
+// own box, not one about the origin 21 m wide. Then a turned, mirrored, repeated group holding
+// a group off its origin: every point inside a solid lies in the box, and the box reaches no
+// further than a member's reach past the points found inside. Planted: the box of the sphere
+// about each group's origin (the old one; 21 m wide), and the copies' spread left out (a copy
+// outside the box).
+TEST(SceneGroups, TheSolidsBoxHoldsEveryCopyAndNoMore) {
+    const Box one = objectBounds(makeSceneSdf(parseOk(kHead + "group name:g pos:0,2,0 static:1\n"
+                                                              "object in:g type:sphere pos:10,0,0 "
+                                                              "radius:0.5\n")));
+    EXPECT_LT(glm::length(one.lo - vec3(9.5f, 1.5f, -0.5f)), 1e-5f);
+    EXPECT_LT(glm::length(one.hi - vec3(10.5f, 2.5f, 0.5f)), 1e-5f);
+
+    const SceneSdf sdf =
+        makeSceneSdf(parseOk(kHead + "group name:r pos:1,2,3 rot:10,20,30 mirror:x "
+                                     "repeat:4,3,2 spacing:0.6,0.5,0.7 static:1\n"
+                                     "object in:r type:box pos:0.4,0,0 "
+                                     "size:0.25,0.1,0.3\n"
+                                     "group name:n in:r pos:2,0.5,0 rot:0,45,0\n"
+                                     "object in:n type:sphere pos:0,0.3,0 "
+                                     "radius:0.15\n"));
+    const Box box = objectBounds(sdf);
+    Box inside;
+    std::uint32_t seed = 777;
+    auto next = [&] { return float((seed = seed * 1664525u + 1013904223u) >> 8) / 16777216.0f; };
+    for (int n = 0; n < 200000; ++n) {
+        const vec3 p = vec3(1, 2, 3) + (vec3(next(), next(), next()) - 0.5f) * 12.0f;
+        if (mapObjects(sdf, p).d >= 0.0f) continue;
+        inside.lo = glm::min(inside.lo, p);
+        inside.hi = glm::max(inside.hi, p);
+    }
+    ASSERT_FALSE(inside.empty());
+    EXPECT_TRUE(glm::all(glm::lessThanEqual(box.lo, inside.lo)) &&
+                glm::all(glm::greaterThanEqual(box.hi, inside.hi)))
+        << "a solid outside the box";
+    const float reach = glm::length(vec3(0.25f, 0.1f, 0.3f));  // the widest member's
+    EXPECT_TRUE(glm::all(glm::greaterThan(box.lo, inside.lo - 2.0f * reach)) &&
+                glm::all(glm::lessThan(box.hi, inside.hi + 2.0f * reach)))
+        << "the box " << glm::to_string(box.lo) << ".." << glm::to_string(box.hi)
+        << " against the solids' " << glm::to_string(inside.lo) << ".."
+        << glm::to_string(inside.hi);
 }
 
 TEST(SceneGroups, RoundAndShellKeepTheirFacesInPlace) {

@@ -167,7 +167,7 @@ struct Box {
 };
 
 // Every object's reach: outside it the scene is the ground alone, so rays need no marching.
-// A mirrored or repeated group's members reach as far as its bound.
+// A group's members reach as far as their bounding spheres in each of its mirrors and copies.
 Box objectBounds(const SceneSdf& sdf);
 SceneSample mapScene(const SceneSdf& sdf, glm::vec3 p);
 SceneSample mapObjects(const SceneSdf& sdf, glm::vec3 p);  // without the ground plane
