@@ -149,7 +149,8 @@ Expect readValue(std::string_view s, std::optional<T>& v) {
 // "a, b or c".
 std::string listed(const std::vector<std::string>& names) {
     std::string s = names.front();
-    for (size_t i = 1; i < names.size(); ++i) s += (i + 1 < names.size() ? ", " : " or ") + names[i];
+    for (size_t i = 1; i < names.size(); ++i)
+        s += (i + 1 < names.size() ? ", " : " or ") + names[i];
     return s;
 }
 
@@ -295,7 +296,7 @@ private:
     std::map<std::string, int> groupNames_;   // each group's index, by name
     // Objects and groups in file order: (true, group index) or (false, object index).
     std::vector<std::pair<bool, int>> tree_;
-    std::string comment_;                     // comment and blank lines since the last record
+    std::string comment_;  // comment and blank lines since the last record
     bool stopped_ = false;
 };
 
@@ -422,17 +423,23 @@ void Parser::object(Fields& fields, std::string comment) {
     Object& o = scene.objects.back();
     o.group = parent;
     if (version_ < shapeRow(o.type).since)
-        error(quote(shapeTypeName(o.type)) + " needs scene version:" +
-              std::to_string(shapeRow(o.type).since));
+        error(quote(shapeTypeName(o.type)) +
+              " needs scene version:" + std::to_string(shapeRow(o.type).since));
     checkShape(o);
     tree_.push_back({false, int(scene.objects.size()) - 1});
+}
+
+// "a sphere", "an ellipsoid".
+static std::string withArticle(std::string_view noun) {
+    const bool vowel =
+        !noun.empty() && std::string_view("aeiou").find(noun[0]) != std::string_view::npos;
+    return (vowel ? "an " : "a ") + std::string(noun);
 }
 
 void Parser::checkShape(const Object& o) {
     const bool edged = hasEdges(o.type);
     if (o.round > 0.0f && !edged)
-        error("'round' is for a " + edgedShapes() + ", not a " +
-              std::string(shapeTypeName(o.type)));
+        error("'round' is for a " + edgedShapes() + ", not " + withArticle(shapeTypeName(o.type)));
     else if (o.round > 0.0f && o.round >= halfThinnest(o))
         error("'round' must be less than " + formatFloat(halfThinnest(o)) +
               ", half the shape's smallest extent");
@@ -575,7 +582,8 @@ void Parser::finishTree() {
     if (scene.groups.empty()) return;
     std::vector<std::vector<std::pair<bool, int>>> members(scene.groups.size() + 1);
     for (auto [isGroup, i] : tree_) {
-        const int parent = isGroup ? scene.groups[size_t(i)].parent : scene.objects[size_t(i)].group;
+        const int parent =
+            isGroup ? scene.groups[size_t(i)].parent : scene.objects[size_t(i)].group;
         members[size_t(parent + 1)].push_back({isGroup, i});
     }
     Scene& s = scene;

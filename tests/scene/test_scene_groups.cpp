@@ -300,6 +300,8 @@ TEST(SceneGroups, EachVersion3ErrorWithItsLine) {
     expectError(deep, 11, "groups nested more than 8 deep");
     expectError(kHead + "object type:sphere pos:0,0,0 round:0.1", 3,
                 "'round' is for a box, cylinder or cone, not a sphere");
+    expectError(kHead + "object type:ellipsoid pos:0,0,0 round:0.1", 3,
+                "'round' is for a box, cylinder or cone, not an ellipsoid");
     expectError(kHead + "object type:box pos:0,0,0 size:1,0.2,1 round:0.2", 3,
                 "'round' must be less than 0.2, half the shape's smallest extent");
     expectError(kHead + "object type:cylinder pos:0,0,0 radius:1 height:1 shell:0.5", 3,
