@@ -74,6 +74,13 @@ dmat3 worldInverseInertia(const dquat& q, const dvec3& inertia) {
            glm::transpose(r);
 }
 
+// Body b's kinetic energy moving at `vel`, spinning at `spin` (world), turned by `orient`.
+double kineticEnergyOf(const RigidBody& b, const dvec3& vel, const dvec3& spin,
+                       const dquat& orient) {
+    const dvec3 local = glm::conjugate(orient) * spin;
+    return 0.5 * glm::dot(vel, vel) / b.invMass + 0.5 * glm::dot(local * b.inertia, local);
+}
+
 // Where a step's arithmetic overflowed for a body (a cone 10¹⁰ m tall and 10⁻¹⁰ m wide, pushed
 // out of the ground it stands 5·10⁹ m deep in), NaN would go on into every later step, into the
 // bodies it touches and into the scene saved, which would then not load; so would a value past
@@ -738,6 +745,8 @@ void RigidBodies::collide(std::vector<PhysicsBody>& spheres, double gravity) {
     for (RigidBody& b : bodies_) {
         b.rowInertia = b.invInertia;  // as the contacts take it
         b.startPos = b.pos;
+        b.startVel = b.vel;
+        b.startSpin = b.spin;
         b.startOrient = b.untwisted = b.orient;
     }
     const int n = count(), m = int(spheres.size()) - 1;  // spheres end with the static body
@@ -1590,6 +1599,7 @@ void RigidBodies::restitute(double threshold, double gravity) {
         };
         const std::ranges::iota_view points(m.begin, m.end);
         if (std::ranges::none_of(points, bounces)) continue;
+        const Bounced before = bouncing(m);
         double rise = 1e300;
         for (int sweep = 0; sweep < settings_.bounceSweeps; ++sweep)
             for (int i = m.begin; i < m.end; ++i) {
@@ -1605,6 +1615,56 @@ void RigidBodies::restitute(double threshold, double gravity) {
             }
         const RigidContact& c = contacts_[size_t(m.begin)];
         if (rise > 0.0 && rise < 1e300 && !c.a.vel && c.b.rigid) c.b.rigid->pos += rise * c.normal;
+        keepEnergy(m, before, gravity);
+    }
+}
+
+// The manifold's moving bodies (rigid ones; none where a sphere moves) and its points' pushes,
+// as they are before its bounce.
+RigidBodies::Bounced RigidBodies::bouncing(const RigidManifold& m) const {
+    Bounced was;
+    for (const int side : {m.movesA, m.movesB}) {
+        if (side >= count()) return {};
+        const RigidBody* b = side >= 0 ? &bodies_[size_t(side)] : nullptr;
+        if (b) was.bodies.push_back({side, b->vel, b->spin});
+    }
+    for (int i = m.begin; i < m.end; ++i) was.impulses.push_back(rows_[size_t(i)].impulse);
+    return was;
+}
+
+// A bounce at several points at once, each set to leave at e times the speed it came in at, can
+// give the bodies more energy than they fell with: a slab tilted 3° falling flat at e = 1 left
+// with 29 % more, spinning. The bounce moved its bodies' velocities by Δ; at s·Δ their kinetic
+// energy is K + s·a + s²·b, a quadratic. Where s = 1 would leave them more energy, kinetic and
+// m·g·y, than they had when the step began, s is the largest that does not.
+void RigidBodies::keepEnergy(const RigidManifold& m, const Bounced& was, double gravity) {
+    if (was.bodies.empty()) return;
+    double k = 0.0, a = 0.0, b = 0.0, budget = 0.0;
+    for (const Bounced::Body& w : was.bodies) {
+        const RigidBody& body = bodies_[size_t(w.index)];
+        const dvec3 dv = body.vel - w.vel, dw = body.spin - w.spin;
+        const dvec3 spin = glm::conjugate(body.orient) * w.spin,
+                    turn = glm::conjugate(body.orient) * dw;
+        k += kineticEnergyOf(body, w.vel, w.spin, body.orient);
+        a += glm::dot(w.vel, dv) / body.invMass + glm::dot(spin * body.inertia, turn);
+        b += kineticEnergyOf(body, dv, dw, body.orient);
+        budget += kineticEnergyOf(body, body.startVel, body.startSpin, body.startOrient) +
+                  gravity * (body.startPos.y - body.pos.y) / body.invMass;
+    }
+    if (k + a + b <= budget) return;
+    // The larger root of b·s² + a·s + (k − budget) = 0; none (s = 0) where k is over already.
+    const double c = k - budget;
+    const double s = c >= 0.0 || b <= 0.0
+                         ? 0.0
+                         : std::clamp((-a + std::sqrt(a * a - 4.0 * b * c)) / (2.0 * b), 0.0, 1.0);
+    for (const Bounced::Body& w : was.bodies) {
+        RigidBody& body = bodies_[size_t(w.index)];
+        body.vel = w.vel + s * (body.vel - w.vel);
+        body.spin = w.spin + s * (body.spin - w.spin);
+    }
+    for (int i = m.begin; i < m.end; ++i) {
+        const double old = was.impulses[size_t(i - m.begin)];
+        rows_[size_t(i)].impulse = old + s * (rows_[size_t(i)].impulse - old);
     }
 }
 
@@ -1788,10 +1848,7 @@ void RigidBodies::writeBack(Scene& scene) const {
 
 double RigidBodies::kineticEnergy() const {
     double e = 0.0;
-    for (const RigidBody& b : bodies_) {
-        const dvec3 local = glm::conjugate(b.orient) * b.spin;
-        e += 0.5 * glm::dot(b.vel, b.vel) / b.invMass + 0.5 * glm::dot(local * b.inertia, local);
-    }
+    for (const RigidBody& b : bodies_) e += kineticEnergyOf(b, b.vel, b.spin, b.orient);
     return e;
 }
 

@@ -54,11 +54,12 @@ struct alignas(64) RigidBody {
     glm::dvec3 vel{0.0}, spin{0.0};  // m/s, rad/s (world)
     bool supported = false;          // a contact pushed it this substep
     bool awake = true;
-    bool turned = false;                    // rowInertia was made again this substep
-    glm::dvec3 pos{0.0};                    // m (world)
-    glm::dquat orient{1.0, 0.0, 0.0, 0.0};  // body to world
-    glm::dvec3 delta{0.0};                  // displacement during the current step
-    glm::dvec3 startPos{0.0};               // where the step began, for holdIfOverflowed
+    bool turned = false;                       // rowInertia was made again this substep
+    glm::dvec3 pos{0.0};                       // m (world)
+    glm::dquat orient{1.0, 0.0, 0.0, 0.0};     // body to world
+    glm::dvec3 delta{0.0};                     // displacement during the current step
+    glm::dvec3 startPos{0.0};                  // where the step began, for holdIfOverflowed
+    glm::dvec3 startVel{0.0}, startSpin{0.0};  // and how it moved then, for keepEnergy
     glm::dquat startOrient{1.0, 0.0, 0.0, 0.0};
     double invMass = 0.0;
     glm::dvec3 inertia{0.0};     // principal moments about the local axes
@@ -194,6 +195,16 @@ private:
     std::vector<int> depths_;             // per body, then per sphere: its depth in its stack
     void prepareFriction(RigidManifold& m);
     bool heldEarly(const RigidManifold& m, double accel) const;
+    struct Bounced {  // a manifold's moving bodies and its points' pushes before its bounce
+        struct Body {
+            int index;
+            glm::dvec3 vel, spin;
+        };
+        std::vector<Body> bodies;
+        std::vector<double> impulses;
+    };
+    Bounced bouncing(const RigidManifold& m) const;
+    void keepEnergy(const RigidManifold& m, const Bounced& was, double gravity);
     void undo(RigidManifold& m);
     std::vector<RigidManifold> manifolds_;
     ManifoldBatches batches_;  // rows_ and manifolds_ as the substeps solve them
