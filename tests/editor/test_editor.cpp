@@ -47,7 +47,7 @@ TEST(Editor, LeavingUnsavedWorkWaitsForAnAnswer) {
     EXPECT_TRUE(f.quitRequested());
 }
 
-// Issue 13, item 8: Open asked whether to save before finding out the file could not open.
+// Open asked whether to save before finding out the file could not open.
 TEST(Editor, OpenReadsTheFileBeforeAskingAboutUnsavedWork) {
     Editor e = openEditor(writeFile("asker.txt", kScene));
     e.kick();
@@ -189,7 +189,7 @@ TEST(Editor, ResetBackToTheFileLeavesNothingUnsaved) {
     EXPECT_TRUE(f.document().dirty());
 }
 
-// Issue 13, item 10: the camera is saved with the file but never marks the scene unsaved,
+// The camera is saved with the file but never marks the scene unsaved,
 // whether it moved in the view or was typed into the View panel.
 TEST(Editor, TheCameraIsSavedButNeverMarksTheSceneUnsaved) {
     std::string path = writeFile("camera.txt", kScene);

@@ -50,7 +50,7 @@ TEST(Fields, NonFiniteIsRefusedEverywhere) {
     EXPECT_EQ(why, "radius must be a number");
 }
 
-// Issue 13, item 5: 1e40 said "must be a finite number" and 1e9 passed without a word. Every
+// 1e40 said "must be a finite number" and 1e9 passed without a word. Every
 // field now has a finite range inside the format's, and a refusal names the value kept.
 TEST(Fields, EveryFieldHasAFiniteRangeInsideTheFormats) {
     std::string why;

@@ -28,7 +28,7 @@ TEST(Files, WatchNoticesRewrites) {
     EXPECT_TRUE(watch.changed());
 }
 
-// Issue 13, item 9: a new scene's Save As proposed "scenes/untitled.txt", relative to the working
+// A new scene's Save As proposed "scenes/untitled.txt", relative to the working
 // folder, which fails outside the source tree.
 TEST(Files, SaveAsProposesAWholePathBesideTheLastFile) {
     fs::path dir = freshDir("propose");
