@@ -1,6 +1,8 @@
 // imgui_input.cpp — Dear ImGui 1.86's IO set from the window's InputState.
 #include "imgui_input.h"
 
+#include "widgets.h"
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -34,7 +36,7 @@ void feedImGui(const InputState& s, double pollSeconds) {
     io.KeyShift = eitherDown(s, GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT);
     io.KeyAlt = eitherDown(s, GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT);
     io.KeySuper = eitherDown(s, GLFW_KEY_LEFT_SUPER, GLFW_KEY_RIGHT_SUPER);
-    for (unsigned c : s.text) io.AddInputCharacter(c);
+    for (unsigned c : s.text) io.AddInputCharacter(c == ',' && !typingText() ? '.' : c);
     // ImGui times clicks on its own clock, which here follows the events' stamps. A stamp is
     // the poll after the event, up to one poll late: a double-click may look that much slower.
     io.DeltaTime = float(std::max(s.seconds, kLeastDeltaSeconds));

@@ -133,6 +133,13 @@ void finishFloats(const char* label, Field f, bool edited, float* value, float* 
 
 }  // namespace
 
+// A drag's or a slider's typed value is a temporary input over it: every other text field is
+// one for text.
+bool typingText() {
+    const ImGuiID active = ImGui::GetActiveID();
+    return ImGui::GetInputTextState(active) && !ImGui::TempInputIsActive(active);
+}
+
 void fieldFloat(const char* label, Field f, float* v, FieldEdit& e) {
     float value = *v;
     bool edited = drawFloats(label, f, &value, 1);

@@ -34,6 +34,12 @@ void fieldFlag(const char* label, bool* v, FieldEdit& e, const char* tooltip);
 void fieldCombo(const char* label, int* v, const char* const names[], int count, FieldEdit& e,
                 const char* tooltip);
 
+// Whether a field for text (a name, a path) has the keyboard. Anywhere else a typed ',' is the
+// decimal point, as where the user writes numbers so: "0,5" (ImGui's number filter dropped the
+// comma, and 0.5 became 5). A click and the keys after it can come in one frame, before the
+// number field they go to has the keyboard: so not "a number field has it".
+bool typingText();
+
 // The tooltip of the last item while the mouse rests on it; told to the event log as
 // "tooltip NAME" when it shows.
 void itemTooltip(const std::string& name, const std::string& text);

@@ -938,6 +938,12 @@ def case_field_refusal(app, scene):
     check(scene_values(scene, 'object', 'radius')[0] == [1.25], 'the typed radius was not taken')
     edits = [l for l in app.events() if l.startswith('edit ')]
     check(edits == ['edit Edit object'], 'typing made more than one edit: %s' % edits)
+    # A decimal comma is the decimal point: "0,5" is 0.5, not 5 (ImGui's filter dropped it).
+    app.type_into('Objects/radius', '0,5', fresh=False)
+    app.wait('edit Edit object')
+    app.save()
+    check(scene_values(scene, 'object', 'radius')[0] == [0.5],
+          '0,5 typed as %s' % scene_values(scene, 'object', 'radius')[0])
     check_typed_parts(app, scene)
     app.key('ctrl+q')
     check(app.finish() == 0, 'exit status not 0')
