@@ -65,6 +65,14 @@ const BakedFrame* FrameCache::at(double t) const {
     return after == frames_.begin() ? nullptr : &*(after - 1);
 }
 
+bool FrameCache::holds(double t) const {
+    constexpr double kApart = 0.25;  // s: more than frames lie apart at a slow frame rate
+    if (frames_.empty() || t > end() + 1e-9) return false;
+    const double apart = std::max(gap_, kApart);
+    const BakedFrame* f = at(t);
+    return f ? t - f->t <= apart : frames_.front().t <= apart;  // before it all, the start
+}
+
 double FrameCache::end() const { return frames_.empty() ? 0.0 : frames_.back().t; }
 
 template <class R>

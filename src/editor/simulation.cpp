@@ -59,11 +59,11 @@ int Simulation::advance(Document& doc, double frameSeconds) {
     head_ = playHead(head_, steps * settings_.dt, loopAt);
     // Frame times are sums of steps: one a rounding error past the head is still at it.
     const double baked = cache_.end();
-    if (head_ <= baked + 1e-9) {
+    if (cache_.holds(head_ + 1e-9)) {
         doc.show(cache_.at(head_ + 1e-9));
         return steps;
     }
-    if (worldAtBakeEnd() && doc.time() < baked) {  // on from the last baked frame's world
+    if (head_ > baked && worldAtBakeEnd() && doc.time() < baked) {  // on from the bake's end
         doc.show(cache_.last());
         simulate(doc, int(std::llround((head_ - baked) / settings_.dt)));
     } else {

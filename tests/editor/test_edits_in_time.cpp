@@ -121,6 +121,27 @@ TEST(EditsInTime, AMoveAtALaterTimeStillCutsTheRun) {
     EXPECT_TRUE(e.document().runEdits());
 }
 
+// A run undone and redone: the undo took its frames, and the redo brings back its last pose
+// alone, a frame at 1 s with none before it. Scrubbed back to the start and played, time goes
+// on from there, simulated anew, as it does after any edit. Planted: the frames before the
+// cache's end taken as baked: the start was shown, still, until the play head passed 1 s.
+TEST(EditsInTime, PlayAfterARunUndoneAndRedoneMovesTimeOn) {
+    Editor e = openEditor(writeFile("redo.txt", kScene));
+    run(e, 60);
+    ASSERT_TRUE(e.undo());
+    ASSERT_TRUE(e.redo());
+    EXPECT_NEAR(e.document().time(), 1.0, 1e-9);
+    ASSERT_TRUE(e.seek(0));
+    e.togglePlay();
+    double last = e.document().time();
+    for (int i = 0; i < 30; ++i) {
+        e.frame(1.0 / 60);
+        EXPECT_GT(e.document().time(), last) << "frame " << i;
+        last = e.document().time();
+    }
+    e.togglePlay();
+}
+
 // Baked at 60 frames a second and played at 120 or 144: each frame shows the baked frame at
 // the play head, never the one before it, though the head's time is a sum of steps that rounds
 // differently from the bake's. The bake holds every second step (dt = 1/120 s).

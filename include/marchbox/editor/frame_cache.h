@@ -58,6 +58,10 @@ public:
 
     // The last frame at or before t; null where none is (t = 0 is the start itself).
     const BakedFrame* at(double t) const;
+    // Whether t is in the bake: the frame at or before it is no further behind than frames lie
+    // apart. A run undone and redone keeps its last pose alone, past a hole where its frames
+    // were; there, as past the end, the run is simulated anew.
+    bool holds(double t) const;
     const BakedFrame* last() const { return frames_.empty() ? nullptr : &frames_.back(); }
     double end() const;  // the last frame's t, or 0
     bool empty() const { return frames_.empty(); }
