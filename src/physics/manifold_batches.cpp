@@ -216,10 +216,7 @@ template <class V>
 }
 
 // A manifold's friction, at its centre: Coulomb's disc |λ_t| ≤ μ·Σλ_n, and the twist about the
-// normal, |λ_w| ≤ max(μ·r, rolling·ρ)·Σλ_n with r the points' mean distance from the centre
-// and ρ the rolling radius. The second is rolling resistance against a spin about the normal, as
-// the spheres' own contacts resist it: a ball spun on the spot on a moving box or group (one
-// point, r = 0) kept its 5 rad/s for ever, where on the ground it stopped. Row by row at each
+// normal, |λ_w| ≤ μ·r·Σλ_n with r the points' mean distance from the centre. Row by row at each
 // point, the first point's friction would turn a face that lands flat about its normal; at the
 // centre, nothing but a twist can. The twist goes first and the tangents meet the spin it left,
 // as one pair (PairMass).
@@ -231,7 +228,7 @@ template <class V>
     const V oldTwist = at(c.twistImpulse);
     const V twist = dot(at(c.normal), s.spinB - s.spinA);
     V w = oldTwist - at(c.twistMass) * twist;
-    const V twistLimit = maxOf(at(c.friction) * at(c.twistArm), at(c.rollLimit)) * normalImpulse;
+    const V twistLimit = at(c.friction) * at(c.twistArm) * normalImpulse;
     w = select(w < -twistLimit, -twistLimit, select(twistLimit < w, twistLimit, w));
     const V dw = w - oldTwist;
     at.set(c.twistImpulse, select(on, w, oldTwist));
@@ -263,9 +260,9 @@ template <class V>
     s.spinB = select(onB, s.spinB + (dt[0] * at(c.turnB[0]) + dt[1] * at(c.turnB[1])), s.spinB);
 }
 
-// Rolling resistance: an angular impulse against the relative spin across the normal (about the
-// normal it bounds the twist, solveFriction), about each tangent as the friction's rows, within the
-// disc |τ| ≤ rolling · r · Σλ_n with r the body's rolling radius. The rows' masses are made once a
+// Rolling resistance: an angular impulse against the relative spin across the normal (twist
+// about the normal is not rolling), about each tangent as the friction's rows, within the disc
+// |τ| ≤ rolling · r · Σλ_n with r the body's rolling radius. The rows' masses are made once a
 // step: one along the spin's own axis costs two square roots, two divisions and four products
 // with I⁻¹ every sweep, and took 9 % of a mixed pile's step.
 template <class V>

@@ -1538,6 +1538,14 @@ void RigidBodies::prepareFriction(RigidManifold& m) {
     // manifold's centre overstates it wherever that centre lies off to the side along the roll's
     // axis (a lying capsule's four points of five: it slowed 1.2 % fast).
     r.rollLimit = rolling_ * std::abs(glm::dot(f.b.anchor, f.normal));
+    // A ball spun on the spot on a body: its one point has no spread for the twist's friction,
+    // and it kept its spin for ever where on the ground it stops. Rolling resistance holds it,
+    // as the spheres' own contacts hold a spin about the normal: a lever of rolling·ρ/μ. Only a
+    // sphere's: a thin body's twist, made with its inverse inertia of the step's start, gave a
+    // bin of thin fast bodies 16 % more energy with it.
+    const int bodies = this->count();  // spheres come after them
+    if ((f.a.body >= bodies || f.b.body >= bodies) && r.friction > 0.0)
+        r.twistArm = std::max(r.twistArm, r.rollLimit / r.friction);
     for (int k = 0; k < 2; ++k) {
         r.tangentImpulse[k] = warm ? warm->tangent[k] : 0.0;
         r.armA[k] = glm::cross(f.a.anchor, r.tangent[k]);
