@@ -14,17 +14,20 @@ const std::shared_ptr<const RunPiece>& pieceAt(const std::shared_ptr<const RunPi
     return *p;
 }
 
-void FrameCache::record(const std::shared_ptr<const RunPiece>& run, double t, const Scene& scene) {
+void FrameCache::record(const std::shared_ptr<const RunPiece>& run, double t, const Scene& scene,
+                        bool afterHole) {
     // A run going on from an earlier time (after a scrub or an undo) replaces what followed.
     while (!frames_.empty() && frames_.back().t >= t) frames_.pop_back();
     if (!run) return;
-    BakedFrame f{t, pieceAt(run, t), {}};
+    BakedFrame f{t, pieceAt(run, t), {}, afterHole};
     // A thinned cache keeps frames a gap apart, the newest standing in until the next is a gap
     // on; the first after an edit always stays, to show the edit.
     const size_t n = frames_.size();
     if (n >= 2 && frames_[n - 1].piece == f.piece && frames_[n - 2].piece == f.piece &&
-        t - frames_[n - 2].t < gap_)
+        t - frames_[n - 2].t < gap_) {
+        f.afterHole = f.afterHole || frames_.back().afterHole;  // the hole stays before it
         frames_.pop_back();
+    }
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
         if (o.dynamic()) f.bodies.push_back({int(i), o.pos, o.vel, o.spin, o.orient});
@@ -33,6 +36,7 @@ void FrameCache::record(const std::shared_ptr<const RunPiece>& run, double t, co
         const Group& b = scene.groups[g];
         if (b.dynamic()) f.bodies.push_back({int(g), b.pos, b.vel, b.spin, b.orient, true});
     }
+    if (!afterHole && !frames_.empty()) widest_ = std::max(widest_, t - frames_.back().t);
     frames_.push_back(std::move(f));
     if (bytes() > budget_) thin();
 }
@@ -45,11 +49,15 @@ size_t FrameCache::bytes() const {
 
 void FrameCache::thin() {
     std::vector<BakedFrame> kept;
-    for (size_t i = (frames_.size() - 1) % 2; i < frames_.size(); i += 2)
+    for (size_t i = (frames_.size() - 1) % 2; i < frames_.size(); i += 2) {
         kept.push_back(std::move(frames_[i]));
+        if (i > 0 && frames_[i - 1].afterHole) kept.back().afterHole = true;  // a frame it drops
+    }
     frames_ = std::move(kept);
     if (frames_.size() > 1)
         gap_ = (frames_.back().t - frames_.front().t) / double(frames_.size() - 1);
+    for (size_t i = 1; i < frames_.size(); ++i)
+        if (!frames_[i].afterHole) widest_ = std::max(widest_, frames_[i].t - frames_[i - 1].t);
 }
 
 void FrameCache::follow(const std::shared_ptr<const RunPiece>& run) {
@@ -57,6 +65,7 @@ void FrameCache::follow(const std::shared_ptr<const RunPiece>& run) {
         return !run || f.piece != pieceAt(run, f.t);
     });
     frames_.erase(stray, frames_.end());
+    if (frames_.empty()) widest_ = 0;  // a first frame past t = 0 follows a hole
 }
 
 const BakedFrame* FrameCache::at(double t) const {
@@ -66,11 +75,12 @@ const BakedFrame* FrameCache::at(double t) const {
 }
 
 bool FrameCache::holds(double t) const {
-    constexpr double kApart = 0.25;  // s: more than frames lie apart at a slow frame rate
-    if (frames_.empty() || t > end() + 1e-9) return false;
-    const double apart = std::max(gap_, kApart);
-    const BakedFrame* f = at(t);
-    return f ? t - f->t <= apart : frames_.front().t <= apart;  // before it all, the start
+    constexpr double kSame = 1e-9;  // s: a play head a rounding past a frame is at it
+    if (frames_.empty() || t > end() + kSame) return false;
+    const auto next = std::upper_bound(frames_.begin(), frames_.end(), t + kSame,
+                                       [](double v, const BakedFrame& f) { return v < f.t; });
+    const bool atFrame = next != frames_.begin() && t - std::prev(next)->t <= kSame;
+    return atFrame || next == frames_.end() || !next->afterHole;
 }
 
 double FrameCache::end() const { return frames_.empty() ? 0.0 : frames_.back().t; }

@@ -33,7 +33,9 @@ void Simulation::sceneChanged(Document& doc) {
     cache_.follow(doc.run());
     // An edit at t (or an undo to a time the cache lost) shows a frame of the run: the first
     // of what follows.
-    if (doc.time() > cache_.end()) cache_.record(doc.run(), doc.time(), doc.scene());
+    if (doc.time() > cache_.end())
+        cache_.record(doc.run(), doc.time(), doc.scene(),
+                      doc.time() - cache_.end() > cache_.widest() + 1e-9);
     if (!worldAtBakeEnd()) world_.reset();
     if (playing_) runStart_ = doc.scene();
     head_ = doc.time();
@@ -59,7 +61,7 @@ int Simulation::advance(Document& doc, double frameSeconds) {
     head_ = playHead(head_, steps * settings_.dt, loopAt);
     // Frame times are sums of steps: one a rounding error past the head is still at it.
     const double baked = cache_.end();
-    if (cache_.holds(head_ + 1e-9)) {
+    if (cache_.holds(head_)) {
         doc.show(cache_.at(head_ + 1e-9));
         return steps;
     }

@@ -124,3 +124,23 @@ TEST(FrameCache, PastItsBudgetTheCacheKeepsEveryOtherFrame) {
     EXPECT_EQ(cache.at(1.0015)->bodies[0].pos.y, -1.0f);
     EXPECT_EQ(cache.at(1.002)->bodies[0].pos.y, -2.0f);
 }
+
+// A bake thinned again and again lies unevenly (frames before the last thinning twice as far
+// apart as those after), and every time up to its end is in it; a frame recorded after a hole
+// (a run undone and redone keeps its last pose alone) leaves the time before it out, back to the
+// frame before. Planted: a hole guessed from the spacing (wider than the frames' average or a
+// quarter second): 33 s of frames in a budget of 41 had times left out.
+TEST(FrameCache, EveryTimeOfAThinnedBakeIsHeldAndAHoleIsNot) {
+    Piece root = piece(0, nullptr);
+    FrameCache probe;
+    probe.record(root, 0.01, sphereAt(1));
+    FrameCache cache(41 * probe.bytes());
+    for (int k = 1; k <= 2000; ++k) cache.record(root, (k + k / 7) / 60.0, sphereAt(float(k)));
+    for (double t = 0.0; t <= cache.end(); t += 0.01) EXPECT_TRUE(cache.holds(t)) << "t = " << t;
+    const double end = cache.end();
+    cache.record(root, end + 10.0, sphereAt(0), true);
+    EXPECT_TRUE(cache.holds(end));
+    EXPECT_FALSE(cache.holds(end + 5.0));
+    EXPECT_TRUE(cache.holds(end + 10.0));
+    EXPECT_FALSE(cache.holds(end + 10.5));  // past the end
+}

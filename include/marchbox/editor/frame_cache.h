@@ -43,6 +43,7 @@ struct BakedFrame {
     double t = 0;                           // s since the start
     std::shared_ptr<const RunPiece> piece;  // the piece it was simulated in
     std::vector<BodyState> bodies;
+    bool afterHole = false;  // the frames before it, back to the one before, are lost
 };
 
 class FrameCache {
@@ -52,16 +53,21 @@ public:
     explicit FrameCache(size_t budget = kDefaultBudget) : budget_(budget) {}
 
     // The scene's dynamic bodies at time t of `run` (its last piece), after the frames before t.
-    void record(const std::shared_ptr<const RunPiece>& run, double t, const Scene& scene);
+    // `afterHole`: the frames between the last one and t are lost (a run undone and redone
+    // brings back its last pose alone).
+    void record(const std::shared_ptr<const RunPiece>& run, double t, const Scene& scene,
+                bool afterHole = false);
     // Keeps the frames up to the first that is not of `run` (all of them go for a null run).
     void follow(const std::shared_ptr<const RunPiece>& run);
 
     // The last frame at or before t; null where none is (t = 0 is the start itself).
     const BakedFrame* at(double t) const;
-    // Whether t is in the bake: the frame at or before it is no further behind than frames lie
-    // apart. A run undone and redone keeps its last pose alone, past a hole where its frames
-    // were; there, as past the end, the run is simulated anew.
+    // Whether t is in the bake: at or before its end and not in a hole. In a hole, as past the
+    // end, the run is simulated anew.
     bool holds(double t) const;
+    // The widest time between two frames that follow each other with no hole between: a frame
+    // further on from the last than this comes after a hole.
+    double widest() const { return widest_; }
     const BakedFrame* last() const { return frames_.empty() ? nullptr : &frames_.back(); }
     double end() const;  // the last frame's t, or 0
     bool empty() const { return frames_.empty(); }
@@ -73,6 +79,7 @@ private:
 
     size_t budget_;
     double gap_ = 0;                  // s: the least time between frames kept, 0 at first
+    double widest_ = 0;               // s: see widest()
     std::vector<BakedFrame> frames_;  // in order of t
 };
 
