@@ -77,10 +77,10 @@ const BakedFrame* FrameCache::at(double t) const {
 bool FrameCache::holds(double t) const {
     constexpr double kSame = 1e-9;  // s: a play head a rounding past a frame is at it
     if (frames_.empty() || t > end() + kSame) return false;
-    const auto next = std::upper_bound(frames_.begin(), frames_.end(), t + kSame,
-                                       [](double v, const BakedFrame& f) { return v < f.t; });
-    const bool atFrame = next != frames_.begin() && t - std::prev(next)->t <= kSame;
-    return atFrame || next == frames_.end() || !next->afterHole;
+    const BakedFrame* before = at(t + kSame);
+    if (before && t - before->t <= kSame) return true;  // at a frame
+    const BakedFrame* next = before ? before + 1 : frames_.data();
+    return next == frames_.data() + frames_.size() || !next->afterHole;
 }
 
 double FrameCache::end() const { return frames_.empty() ? 0.0 : frames_.back().t; }
